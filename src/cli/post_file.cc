@@ -1,0 +1,85 @@
+#include "cli/post_file.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "reader/cl_reader.h"
+#include "support/output_file.h"
+#include "writer/nc_program.h"
+
+namespace clpost {
+
+namespace {
+class NullSink : public Sink {
+ public:
+  void write(std::string_view text) override { bytes += text.size(); }
+  size_t bytes = 0;
+};
+}  // namespace
+
+std::string display_name(const std::string& input) { return input == "-" ? "<stdin>" : input; }
+
+PostOutcome post_file(const PostRequest& req) {
+  PostOutcome out;
+  Diagnostics diags(display_name(req.input));
+  std::FILE* in = req.input == "-" ? stdin : std::fopen(req.input.c_str(), "rb");
+  if (in == nullptr) {
+    diags.error({}, {}, fmt::format("cannot open: {}", std::strerror(errno)));
+    out.errors = 1;
+    out.diagnostics = diags.render_all();
+    return out;
+  }
+  OutputFile file;
+  NullSink null_sink;
+  Sink* sink = &null_sink;
+  bool writing = !req.output.empty();
+  if (writing) {
+    std::string err;
+    if (!file.open(req.output, err)) {
+      diags.error({}, {}, err);
+      if (in != stdin) std::fclose(in);
+      out.errors = diags.error_count();
+      out.diagnostics = diags.render_all();
+      return out;
+    }
+    sink = &file;
+  }
+  {
+    NcProgram prog(*req.machine, *sink);
+    Interpreter interp(*req.machine, prog, diags, req.options);
+    if (req.on_thread) interp.on_thread(req.on_thread);
+    ClReader reader(in, diags);
+    Statement st;
+    while (reader.next(st)) interp.statement(st);
+    if (interp.stats().statements == 0 && !diags.has_errors()) {
+      diags.error({}, {}, "no CL statements in the file");
+    } else {
+      interp.end_of_input(reader.line());
+    }
+    out.stats = interp.stats();
+    out.units = interp.units();
+    out.bytes_in = reader.bytes_read();
+  }
+  if (in != stdin) std::fclose(in);
+  if (writing) {
+    if (diags.has_errors()) {
+      file.abort();
+    } else {
+      std::string err;
+      out.bytes_out = file.bytes();
+      if (!file.commit(err)) diags.error({}, {}, err);
+    }
+  } else {
+    out.bytes_out = null_sink.bytes;
+  }
+  out.errors = diags.error_count();
+  out.warnings = diags.warning_count();
+  out.ok = !diags.has_errors();
+  out.diagnostics = diags.render_all();
+  return out;
+}
+
+}  // namespace clpost

@@ -1,0 +1,36 @@
+#pragma once
+// Posting one CL file: read, interpret, write the NC program atomically (nothing is written when
+// the file has an error). Used by the CLI's post, check and plan commands and by the batch.
+#include <functional>
+#include <string>
+
+#include "interpreter/interpreter.h"
+#include "machine/machine.h"
+
+namespace clpost {
+
+struct PostRequest {
+  std::string input;         // path, or "-" for standard input
+  std::string output;        // path, "-" for standard output, empty: write nothing (check, plan)
+  const Machine* machine = nullptr;
+  PostOptions options;
+  std::function<void(const ThreadPlan&)> on_thread;  // every thread plan
+};
+
+struct PostOutcome {
+  bool ok = false;           // no errors (output written when one was asked for)
+  size_t errors = 0;
+  size_t warnings = 0;
+  std::string diagnostics;   // rendered, ready for stderr
+  PostStats stats;
+  LengthUnit units = LengthUnit::kMm;
+  size_t bytes_in = 0;
+  size_t bytes_out = 0;
+};
+
+PostOutcome post_file(const PostRequest& req);
+
+// The name a file is shown by in diagnostics ("<stdin>" for "-").
+std::string display_name(const std::string& input);
+
+}  // namespace clpost

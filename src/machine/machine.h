@@ -1,0 +1,78 @@
+#pragma once
+// A machine definition: plain data loaded from posts/<dialect>.yaml and machines/<name>.yaml
+// (see machine_loader.h and docs/machines.md). Nothing about a machine is compiled in.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace clpost {
+
+// How one address's numbers are written.
+struct NumberFormat {
+  int decimals = 3;             // digits after the point (rounding)
+  bool trailing_zeros = false;  // "1.500" rather than "1.5"
+  bool decimal_point = true;    // "12." rather than "12" for whole numbers (ignored when
+                                // decimals == 0: whole numbers only, no point)
+  bool leading_zero = true;     // "0.5" rather than ".5"
+  double scale = 1;             // value multiplied before writing (e.g. 1000 for micrometres)
+};
+
+enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
+enum class ThreadFallback : uint8_t { kLoop, kEmulate, kError };
+enum class ClAxis : uint8_t { kX, kY, kZ };
+
+struct Machine {
+  std::string name;         // machine file stem, e.g. "generic-lathe"
+  std::string post;         // the post (dialect) it extends, e.g. "iso-lathe"
+  std::string description;  // one line, for `clpost machines`
+  std::string source;       // machine file path (diagnostics)
+
+  // CL frame
+  std::string default_units = "mm";  // when the CL file has no UNITS statement: mm | in
+  ClAxis cl_radial = ClAxis::kX;     // CL axis holding the lathe's radial coordinate
+  ClAxis cl_axial = ClAxis::kZ;      // CL axis holding the spindle axis
+  bool cl_x_is_diameter = false;     // CL radial values are diameters already
+  bool diameter_output = true;       // write X as a diameter
+
+  // Limits (0 = none)
+  double max_rpm = 0;
+  double max_feed = 0;  // per minute, output units
+
+  // Threading
+  ThreadStrategy thread_strategy = ThreadStrategy::kEmulate;
+  ThreadFallback thread_fallback = ThreadFallback::kEmulate;
+  int default_option = 0;
+  double default_tool_angle = 60;
+  bool start_angle_word = false;  // the control's thread block has a start-angle word
+  bool variable_lead = false;     // G34/G35 style variable lead
+  std::string thread_lead_address = "F";   // G33 lead word (F, K, ...)
+  std::string start_angle_address = "Q";   // when start_angle_word
+
+  // Output
+  std::string extension = ".nc";
+  std::string line_ending = "\n";
+  std::string comment_open = "(";
+  std::string comment_close = ")";
+  bool comment_upper = false;          // upper-case comment text
+  std::string comment_forbidden = "()";  // characters removed from comment text
+  bool block_numbers = false;
+  std::string block_address = "N";
+  int block_start = 10;
+  int block_step = 10;
+  int block_max = 99999;  // wraps to block_start after this
+  std::vector<std::string> block_skip = {"%", "O"};  // blocks starting so get no number
+  bool modal_codes = true;   // suppress repeated modal G codes
+  bool modal_words = true;   // suppress unchanged X/Z/F/S words
+  int program_number = 1;
+
+  std::map<std::string, NumberFormat> formats;  // by address; "default" for the others
+  std::map<std::string, std::string> codes;     // rapid, linear, arc_cw, ... -> "G0", ...
+  // Block templates (fmt replacement fields with named arguments), one NC line each.
+  std::map<std::string, std::vector<std::string>> templates;
+
+  const NumberFormat& format_for(std::string_view address) const;
+  const std::string& code(const std::string& key) const;  // empty when absent
+};
+
+}  // namespace clpost

@@ -1,0 +1,73 @@
+#include "support/diagnostics.h"
+
+#include <fmt/format.h>
+
+namespace clpost {
+
+void Diagnostics::error(SourceLoc loc, std::string_view line_text, std::string message) {
+  add(Severity::kError, loc, line_text, std::move(message));
+}
+void Diagnostics::warning(SourceLoc loc, std::string_view line_text, std::string message) {
+  add(Severity::kWarning, loc, line_text, std::move(message));
+}
+void Diagnostics::note(SourceLoc loc, std::string_view line_text, std::string message) {
+  add(Severity::kNote, loc, line_text, std::move(message));
+}
+
+void Diagnostics::add(Severity severity, SourceLoc loc, std::string_view line_text,
+                      std::string message) {
+  if (severity == Severity::kWarning && werror_) severity = Severity::kError;
+  if (severity == Severity::kError) ++errors_;
+  if (severity == Severity::kWarning) ++warnings_;
+  if (kept_.size() >= kMaxKept) {
+    ++dropped_;
+    return;
+  }
+  // A caret display of a huge line is useless and costly: keep at most 200 characters of it.
+  if (line_text.size() > 200) line_text = line_text.substr(0, 200);
+  kept_.push_back(Diagnostic{severity, loc, std::move(message), std::string(line_text)});
+}
+
+static std::string_view severity_name(Severity s) {
+  switch (s) {
+    case Severity::kNote: return "note";
+    case Severity::kWarning: return "warning";
+    case Severity::kError: return "error";
+  }
+  return "error";
+}
+
+std::string Diagnostics::render(const Diagnostic& d) const {
+  std::string out;
+  if (d.loc.line == 0) {
+    out = fmt::format("{}: {}: {}\n", file_, severity_name(d.severity), d.message);
+  } else if (d.loc.col == 0) {
+    out = fmt::format("{}:{}: {}: {}\n", file_, d.loc.line, severity_name(d.severity), d.message);
+  } else {
+    out = fmt::format("{}:{}:{}: {}: {}\n", file_, d.loc.line, d.loc.col,
+                      severity_name(d.severity), d.message);
+  }
+  if (!d.line_text.empty()) {
+    out += "  ";
+    // Tabs stay tabs so that the caret line lines up under them.
+    for (char c : d.line_text) out += (c == '\r' || c == '\n') ? ' ' : c;
+    out += '\n';
+    if (d.loc.col > 0) {
+      out += "  ";
+      for (uint32_t i = 1; i < d.loc.col && i <= d.line_text.size(); ++i)
+        out += d.line_text[i - 1] == '\t' ? '\t' : ' ';
+      out += "^\n";
+    }
+  }
+  return out;
+}
+
+std::string Diagnostics::render_all() const {
+  std::string out;
+  for (const Diagnostic& d : kept_) out += render(d);
+  if (dropped_ > 0)
+    out += fmt::format("{}: note: {} more diagnostics not shown\n", file_, dropped_);
+  return out;
+}
+
+}  // namespace clpost

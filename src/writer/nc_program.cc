@@ -1,0 +1,185 @@
+#include "writer/nc_program.h"
+
+#include <fmt/args.h>
+#include <fmt/format.h>
+
+#include "writer/number_format.h"
+
+namespace clpost {
+
+namespace {
+
+using Args = fmt::dynamic_format_arg_store<fmt::format_context>;
+
+std::string num(const Machine& m, std::string_view address, double v) {
+  std::string s;
+  append_number(s, v, m.format_for(address));
+  return s;
+}
+
+}  // namespace
+
+NcProgram::NcProgram(const Machine& m, Sink& out) : m_(m), w_(m, out) {}
+
+static void emit_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
+  auto it = m.templates.find(name);
+  if (it == m.templates.end()) return;
+  for (const std::string& line : it->second) {
+    // Templates were checked when the machine was loaded.
+    std::string text = fmt::vformat(line, args);
+    if (!text.empty()) w.text(text).end_block();
+  }
+}
+
+void NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
+  Args a;
+  a.push_back(fmt::arg("program_number", m_.program_number));
+  a.push_back(fmt::arg("program_name", std::string(program_name)));
+  a.push_back(fmt::arg("units_code", m_.code(inch ? "inch" : "metric")));
+  a.push_back(fmt::arg("machine", m_.name));
+  a.push_back(fmt::arg("file", std::string(file)));
+  emit_template(w_, m_, "program_start", a);
+}
+
+void NcProgram::end(std::string_view program_name) {
+  Args a;
+  a.push_back(fmt::arg("program_number", m_.program_number));
+  a.push_back(fmt::arg("program_name", std::string(program_name)));
+  emit_template(w_, m_, "program_end", a);
+}
+
+void NcProgram::tool_change(int tool, int offset, std::string_view name) {
+  Args a;
+  a.push_back(fmt::arg("tool", tool));
+  a.push_back(fmt::arg("offset", offset));
+  a.push_back(fmt::arg("tool_name", std::string(name)));
+  emit_template(w_, m_, "tool_change", a);
+  forget_modal();
+}
+
+void NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
+  Args a;
+  a.push_back(fmt::arg("rpm", num(m_, "S", rpm)));
+  a.push_back(fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
+  emit_template(w_, m_, "spindle_rpm", a);
+}
+
+void NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
+  Args a;
+  a.push_back(fmt::arg("speed", num(m_, "S", speed)));
+  a.push_back(fmt::arg("max_rpm", num(m_, "S", max_rpm)));
+  a.push_back(fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
+  emit_template(w_, m_, "spindle_css", a);
+}
+
+void NcProgram::spindle_stop() {
+  Args a;
+  emit_template(w_, m_, "spindle_stop", a);
+}
+
+void NcProgram::coolant(Coolant c) {
+  static const char* kKeys[] = {"coolant_off", "coolant_flood", "coolant_mist", "coolant_through",
+                                "coolant_air"};
+  const std::string& code = m_.code(kKeys[static_cast<int>(c)]);
+  if (code.empty() && c != Coolant::kOff) {
+    w_.comment(fmt::format("coolant {} not available on this machine", kKeys[static_cast<int>(c)] + 8));
+    return;
+  }
+  w_.code(code).end_block();
+}
+
+void NcProgram::cutter_comp(CutterComp c) {
+  static const char* kKeys[] = {"comp_off", "comp_left", "comp_right"};
+  w_.code(m_.code(kKeys[static_cast<int>(c)])).end_block();
+}
+
+void NcProgram::set_feed(double feed, FeedMode mode) {
+  feed_ = feed;
+  feed_mode_ = mode;
+}
+
+void NcProgram::dwell(double seconds) {
+  Args a;
+  a.push_back(fmt::arg("seconds", num(m_, "dwell", seconds)));
+  a.push_back(fmt::arg("revolutions", num(m_, "dwell", seconds)));
+  emit_template(w_, m_, "dwell", a);
+}
+
+void NcProgram::program_stop(bool optional) {
+  w_.code(m_.code(optional ? "optional_stop" : "stop")).end_block();
+}
+
+void NcProgram::motion_code(const std::string& key) {
+  const std::string& c = m_.code(key);
+  if (!m_.modal_codes || c != motion_) w_.code(c);
+  motion_ = c;
+}
+
+void NcProgram::axes(LathePoint p, bool force_both) {
+  double x = rounded(x_out(p.r), m_.format_for("X"));
+  double z = rounded(p.z, m_.format_for("Z"));
+  bool write_x = force_both || !m_.modal_words || !last_x_ || *last_x_ != x;
+  bool write_z = force_both || !m_.modal_words || !last_z_ || *last_z_ != z;
+  if (write_x) w_.word("X", x_out(p.r));
+  if (write_z) w_.word("Z", p.z);
+  last_x_ = x;
+  last_z_ = z;
+  pos_ = p;
+}
+
+void NcProgram::feed_words() {
+  if (!written_feed_mode_ || *written_feed_mode_ != feed_mode_) {
+    w_.code(m_.code(feed_mode_ == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+    written_feed_mode_ = feed_mode_;
+    written_feed_.reset();
+  }
+  double f = rounded(feed_, m_.format_for("F"));
+  if (!m_.modal_words || !written_feed_ || *written_feed_ != f) {
+    w_.word("F", feed_);
+    written_feed_ = f;
+  }
+}
+
+void NcProgram::rapid(LathePoint p) {
+  motion_code("rapid");
+  axes(p, false);
+  w_.end_block();
+}
+
+void NcProgram::linear(LathePoint p) {
+  motion_code("linear");
+  axes(p, false);
+  feed_words();
+  w_.end_block();
+}
+
+void NcProgram::arc(LathePoint p, LathePoint center, bool ccw) {
+  LathePoint from = pos_.value_or(p);
+  motion_code(ccw ? "arc_ccw" : "arc_cw");
+  axes(p, false);
+  // Arc centres are incremental from the start point, as radii (I along X, K along Z).
+  w_.word("I", center.r - from.r);
+  w_.word("K", center.z - from.z);
+  feed_words();
+  w_.end_block();
+}
+
+void NcProgram::thread(LathePoint p, double lead, std::optional<double> start_angle) {
+  motion_code("thread");
+  axes(p, false);
+  w_.word(m_.thread_lead_address, lead);
+  if (start_angle && m_.start_angle_word) w_.word(m_.start_angle_address, *start_angle);
+  w_.end_block();
+  // Where the lead is written as F it replaces the modal feed: the next feed move restates F.
+  if (m_.thread_lead_address == "F") written_feed_.reset();
+}
+
+void NcProgram::forget_modal() {
+  motion_.clear();
+  last_x_.reset();
+  last_z_.reset();
+  written_feed_.reset();
+  written_feed_mode_.reset();
+}
+
+}  // namespace clpost

@@ -1,0 +1,80 @@
+#pragma once
+// The NC program being written: modal state (motion code, feed mode, feed, spindle, position)
+// over NcWriter, so that callers say what the machine should do and only what changes is
+// written. Coordinates are in the lathe frame: `r` is a radius, `z` the spindle axis, in output
+// units; diameter output is applied here.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "machine/machine.h"
+#include "writer/nc_writer.h"
+
+namespace clpost {
+
+enum class SpindleDir { kCw, kCcw };
+enum class FeedMode { kPerMinute, kPerRev };
+enum class Coolant { kOff, kFlood, kMist, kThrough, kAir };
+enum class CutterComp { kOff, kLeft, kRight };
+
+struct LathePoint {
+  double r = 0;
+  double z = 0;
+};
+
+class NcProgram {
+ public:
+  NcProgram(const Machine& m, Sink& out);
+
+  NcWriter& writer() { return w_; }
+  const Machine& machine() const { return m_; }
+
+  // program_start / program_end templates.
+  void start(std::string_view program_name, bool inch, std::string_view file);
+  void end(std::string_view program_name);
+
+  void tool_change(int tool, int offset, std::string_view name);
+  void spindle_rpm(double rpm, SpindleDir dir);
+  void spindle_css(double speed, double max_rpm, SpindleDir dir);
+  void spindle_stop();
+  void coolant(Coolant c);
+  void cutter_comp(CutterComp c);
+  // The feed for the next feed moves; written with the next feed move when it changed.
+  void set_feed(double feed, FeedMode mode);
+  void dwell(double seconds);
+  void program_stop(bool optional);
+  void comment(std::string_view text) { w_.comment(text); }
+  void raw(std::string_view text) { w_.raw_line(text); }
+
+  void rapid(LathePoint p);
+  void linear(LathePoint p);
+  // Arc in the XZ plane to `p` around `center`; `ccw` = positive rotation about +Y (G3 in G18).
+  void arc(LathePoint p, LathePoint center, bool ccw);
+  // One synchronized (thread) move; `lead` is written with the post's lead address.
+  // `start_angle` adds the start-angle word when the machine has one.
+  void thread(LathePoint p, double lead, std::optional<double> start_angle = std::nullopt);
+
+  // Where the tool is (unknown until the first move).
+  std::optional<LathePoint> position() const { return pos_; }
+  // Forgets the modal motion code, feed and spindle words (after a cycle or raw insert whose
+  // effect on them is unknown).
+  void forget_modal();
+
+ private:
+  void motion_code(const std::string& key);
+  void axes(LathePoint p, bool force_both);
+  void feed_words();
+  double x_out(double r) const { return m_.diameter_output ? 2 * r : r; }
+
+  const Machine& m_;
+  NcWriter w_;
+  std::optional<LathePoint> pos_;
+  std::string motion_;  // last motion code written
+  std::optional<double> last_x_, last_z_;
+  double feed_ = 0;
+  FeedMode feed_mode_ = FeedMode::kPerMinute;
+  std::optional<double> written_feed_;
+  std::optional<FeedMode> written_feed_mode_;
+};
+
+}  // namespace clpost

@@ -1,0 +1,67 @@
+#include "writer/nc_writer.h"
+
+#include <cctype>
+
+#include "writer/number_format.h"
+
+namespace clpost {
+
+NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_(m.block_start) {
+  block_.reserve(256);
+}
+
+NcWriter& NcWriter::code(std::string_view c) {
+  if (c.empty()) return *this;
+  if (!block_.empty()) block_ += ' ';
+  block_.append(c);
+  return *this;
+}
+
+NcWriter& NcWriter::word(std::string_view address, double value) {
+  if (!block_.empty()) block_ += ' ';
+  block_.append(address);
+  append_number(block_, value, m_.format_for(address));
+  return *this;
+}
+
+NcWriter& NcWriter::text(std::string_view raw) { return code(raw); }
+
+void NcWriter::end_block() {
+  if (block_.empty()) return;
+  std::string line;
+  bool unnumbered = false;
+  for (const std::string& prefix : m_.block_skip)
+    if (!prefix.empty() && block_.starts_with(prefix)) unnumbered = true;
+  if (m_.block_numbers && !unnumbered) {
+    line = m_.block_address + std::to_string(next_number_) + ' ';
+    next_number_ += m_.block_step;
+    if (next_number_ > m_.block_max) next_number_ = m_.block_start;
+  }
+  out_.write(line);
+  out_.write(block_);
+  out_.write(m_.line_ending);
+  block_.clear();
+}
+
+void NcWriter::comment(std::string_view text) {
+  std::string clean;
+  clean.reserve(text.size());
+  for (char c : text) {
+    if (m_.comment_forbidden.find(c) != std::string::npos) continue;
+    if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    clean += m_.comment_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+  }
+  // Trim: a comment should read as the CL wrote it, without padding.
+  size_t b = clean.find_first_not_of(' ');
+  size_t e = clean.find_last_not_of(' ');
+  clean = b == std::string::npos ? std::string() : clean.substr(b, e - b + 1);
+  code(m_.comment_open + clean + m_.comment_close);
+  end_block();
+}
+
+void NcWriter::raw_line(std::string_view text) {
+  out_.write(text);
+  out_.write(m_.line_ending);
+}
+
+}  // namespace clpost
