@@ -34,7 +34,7 @@ class ClReader {
 
   // Limits on hostile input.
   static constexpr size_t kMaxStatementBytes = 1 << 20;  // a logical statement, continuations in
-  static constexpr size_t kMaxErrors = 100;               // then stop reading
+  static constexpr size_t kMaxErrors = 100;              // then stop reading
 
  private:
   struct Impl;

@@ -25,7 +25,7 @@ struct Statement {
   enum class Form : uint8_t {
     kRecord,  // MAJOR/arg,arg,...   (args filled; `RAPID/` is a record with no args)
     kBare,    // MAJOR alone on its line: RAPID, END, FINI, STOP, END-OF-PATH ...
-    kText,    // PARTNO, PPRINT, INSERT and other text words: `text` holds the rest verbatim
+    kText,    // PARTNO, PPRINT, INSERT: `text` holds the rest of the line verbatim
   };
   Form form = Form::kBare;
   std::string_view major;  // upper-cased; inner runs of blanks collapsed to one ("TOOL PATH")

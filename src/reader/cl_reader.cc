@@ -1,0 +1,240 @@
+#include "reader/cl_reader.h"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+#include "reader/continuation.h"
+#include "reader/lexer.h"
+#include "reader/line_source.h"
+
+namespace clpost {
+
+using reader::LineSource;
+using reader::StatementLexer;
+using Status = LineSource::Status;
+
+namespace {
+
+// NX "Information listing" output: a header of tab-separated lines up to a blank line, and a
+// last line `Tool Path Listing has N lines.`.
+constexpr std::string_view kNxHeader = "Information listing created by";
+constexpr std::string_view kNxTrailer = "Tool Path Listing has ";
+
+bool is_nx_trailer(std::string_view line) {
+  while (!line.empty() && reader::is_blank_char(line.back())) line.remove_suffix(1);
+  return line.starts_with(kNxTrailer) && line.ends_with(" lines.");
+}
+
+uint32_t first_column(std::string_view line) {
+  size_t i = 0;
+  while (i < line.size() && reader::is_blank_char(line[i])) ++i;
+  return static_cast<uint32_t>(i == line.size() ? 1 : i + 1);
+}
+
+}  // namespace
+
+struct ClReader::Impl {
+  Impl(std::FILE* in, Diagnostics& d) : src(in), diags(d) {}
+  Impl(std::string_view text, Diagnostics& d) : src(text), diags(d) {}
+
+  bool next(Statement& out);
+  bool read_continuations(const LineSource::Line& first, bool continues);
+  void skip_comment(bool continues);
+  void skip_statement(bool continues);
+  void skip_header(const LineSource::Line& info);
+  void too_long(const LineSource::Line& first);
+  void error(SourceLoc loc, std::string_view line, std::string message);
+  void fail(Status s);
+
+  LineSource src;
+  Diagnostics& diags;
+  StatementLexer lexer;
+  std::vector<LineSource::Line> lines;  // of the statement being read
+  size_t errors = 0;
+  bool done = false;
+  bool at_start = true;  // no non-blank line seen yet
+};
+
+void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string message) {
+  diags.error(loc, line, std::move(message));
+  if (++errors >= kMaxErrors && !done) {
+    diags.note(SourceLoc{}, {}, "too many errors, stopping");
+    done = true;
+  }
+}
+
+void ClReader::Impl::fail(Status s) {
+  if (s == Status::kBinary) {
+    error(SourceLoc{}, {},
+          fmt::format("not a CL text file (binary data at byte {})", src.binary_offset()));
+  } else if (s == Status::kReadError) {
+    error(SourceLoc{}, {}, "error reading input: " + src.read_error());
+  }
+  done = true;
+}
+
+bool ClReader::Impl::next(Statement& out) {
+  while (!done) {
+    src.mark();
+    LineSource::Line first;
+    const Status s = src.next_line(kMaxStatementBytes, first);
+    if (s == Status::kEnd) {
+      done = true;
+      break;
+    }
+    if (s != Status::kLine && s != Status::kTooLong) {
+      fail(s);
+      break;
+    }
+    const std::string_view text = src.text(first);  // kTooLong: its first bytes
+    if (at_start && s == Status::kLine) {
+      if (reader::is_blank_line(text)) continue;
+      at_start = false;
+      if (first.number <= 2 && text.starts_with(kNxHeader)) {
+        skip_header(first);
+        continue;
+      }
+    }
+    at_start = false;
+    if (reader::is_comment_line(text)) {
+      skip_comment(s == Status::kTooLong ? src.skip_line().comment_continues()
+                                         : reader::comment_continues(text));
+      continue;
+    }
+    if (s == Status::kTooLong) {
+      too_long(first);
+      continue;
+    }
+    if (reader::is_blank_line(text) || is_nx_trailer(text)) continue;
+
+    out.first_line = first.number;
+    if (StatementLexer::is_text_statement(text)) {
+      out.lines.assign(1, text);
+      lexer.lex_text(out);
+      return true;
+    }
+    bool continues = false;
+    reader::code_part(text, &continues);
+    if (!read_continuations(first, continues)) continue;
+    out.lines.clear();
+    for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
+    StatementLexer::Error err;
+    switch (lexer.lex_code(out, err)) {
+      case StatementLexer::Result::kOk:
+        return true;
+      case StatementLexer::Result::kEmpty:
+        break;
+      case StatementLexer::Result::kError:
+        error(err.loc, out.line_text(err.loc.line), std::move(err.message));
+        break;
+    }
+  }
+  return false;
+}
+
+// Collects the statement's lines in `lines`. False when it cannot be used (too long, input
+// failed), already reported.
+bool ClReader::Impl::read_continuations(const LineSource::Line& first, bool continues) {
+  lines.clear();
+  lines.push_back(first);
+  size_t used = first.size;
+  while (continues) {
+    LineSource::Line l;
+    const Status s = src.next_line(kMaxStatementBytes - used, l);
+    if (s == Status::kEnd) break;
+    if (s == Status::kTooLong) {
+      too_long(first);
+      return false;
+    }
+    if (s != Status::kLine) {
+      fail(s);
+      return false;
+    }
+    lines.push_back(l);
+    used += l.size;
+    reader::code_part(src.text(l), &continues);
+  }
+  return true;
+}
+
+// Reports a statement longer than kMaxStatementBytes at its first line and skips the rest of
+// it, from the line the reader stopped at (not yet consumed), without keeping it.
+void ClReader::Impl::too_long(const LineSource::Line& first) {
+  const std::string_view text = src.text(first);
+  error(SourceLoc{first.number, first_column(text)}, text,
+        fmt::format("statement too long (more than {} bytes)", kMaxStatementBytes));
+  const bool is_text = StatementLexer::is_text_statement(text);
+  const bool continues = src.skip_line().code_continues();
+  skip_statement(continues && !is_text);
+}
+
+void ClReader::Impl::skip_statement(bool continues) {
+  while (continues && !done) {
+    src.mark();
+    LineSource::Line l;
+    const Status s = src.next_line(0, l);  // any line but an empty one is "too long"
+    if (s == Status::kEnd) return;
+    if (s == Status::kLine) return;  // an empty line ends the statement
+    if (s != Status::kTooLong) return fail(s);
+    continues = src.skip_line().code_continues();
+  }
+}
+
+void ClReader::Impl::skip_comment(bool continues) {
+  while (continues && !done) {
+    src.mark();
+    LineSource::Line l;
+    const Status s = src.next_line(kMaxStatementBytes, l);
+    if (s == Status::kEnd) return;
+    if (s == Status::kTooLong) {
+      continues = src.skip_line().comment_continues();
+    } else if (s == Status::kLine) {
+      continues = reader::comment_continues(src.text(l));
+    } else {
+      return fail(s);
+    }
+  }
+}
+
+void ClReader::Impl::skip_header(const LineSource::Line& info) {
+  uint32_t last = info.number;
+  while (!done) {
+    src.mark();
+    LineSource::Line l;
+    const Status s = src.next_line(kMaxStatementBytes, l);
+    if (s == Status::kEnd) break;
+    if (s == Status::kTooLong) {
+      src.skip_line();
+      last = l.number;
+      continue;
+    }
+    if (s != Status::kLine) return fail(s);
+    const std::string_view text = src.text(l);
+    if (!reader::is_blank_line(text) && text.find('\t') == std::string_view::npos) {
+      src.unread(l);  // not a header line: CL starts here
+      break;
+    }
+    last = l.number;
+    if (reader::is_blank_line(text)) break;
+  }
+  diags.note(SourceLoc{info.number, 0}, {},
+             fmt::format("skipped NX information listing header ({} lines)", last));
+}
+
+ClReader::ClReader(std::FILE* in, Diagnostics& diags) : impl_(std::make_unique<Impl>(in, diags)) {}
+ClReader::ClReader(std::string_view text, Diagnostics& diags)
+    : impl_(std::make_unique<Impl>(text, diags)) {}
+ClReader::~ClReader() = default;
+
+bool ClReader::next(Statement& out) {
+  return impl_->next(out);
+}
+size_t ClReader::bytes_read() const {
+  return impl_->src.bytes_read();
+}
+uint32_t ClReader::line() const {
+  return impl_->src.line_number();
+}
+
+}  // namespace clpost
