@@ -1,0 +1,29 @@
+#pragma once
+// Helpers for whole-program tests: run a command, read and write files.
+#include <string>
+#include <vector>
+
+namespace clpost::test {
+
+struct RunResult {
+  int exit_code = -1;  // 128 + signal when killed by a signal
+  std::string out;
+  std::string err;
+};
+
+// Runs `cmd` through /bin/sh with standard input from /dev/null (or `stdin_file`).
+RunResult run(const std::string& cmd, const std::string& stdin_file = "/dev/null");
+
+std::string read_file(const std::string& path);
+void write_file(const std::string& path, const std::string& text);
+bool file_exists(const std::string& path);
+// A fresh empty directory under the system temp dir.
+std::string temp_dir();
+// Single-quoted for the shell.
+std::string quote(const std::string& s);
+
+inline std::string clpost_bin() { return CLPOST_BIN; }
+inline std::string source_dir() { return CLPOST_SOURCE_DIR; }
+inline std::string realcl_dir() { return std::string(CLPOST_SOURCE_DIR) + "/../shared/realcl"; }
+
+}  // namespace clpost::test
