@@ -52,7 +52,8 @@ void add_machine_opts(CLI::App& app, MachineOpts& o) {
   app.add_option("-m,--machine", o.machine,
                  "Shipped machine name or path to a machine YAML file (default: generic-lathe)");
   app.add_option("--set", o.sets, "Override a machine key: --set threading.strategy=loop")
-      ->type_name("KEY=VALUE");
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
 }
 
 bool load(const MachineOpts& o, Machine& m) {

@@ -470,7 +470,23 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
     for (size_t dot; (dot = key.find('.', start)) != std::string::npos; start = dot + 1, ++depth)
       doc += key.substr(start, dot - start) + ": {";
     doc += key.substr(start) + ": " + (value.empty() ? "''" : value) + std::string(depth, '}');
-    if (!apply_machine_yaml("--set " + ov, doc, false, m, errors)) return false;
+    std::string set_errors;
+    if (!apply_machine_yaml("--set " + ov, doc, false, m, set_errors)) {
+      // The YAML document was made here, so its line, column and text mean nothing to the user:
+      // keep only `--set key=value: error: message`.
+      std::string prefix = "--set " + ov + ":1:";
+      size_t start = 0;
+      while (start < set_errors.size()) {
+        size_t end = set_errors.find('\n', start);
+        std::string line = set_errors.substr(start, end - start);
+        if (line.starts_with(prefix)) {
+          size_t colon = line.find(':', prefix.size());
+          errors += "--set " + ov + line.substr(colon) + "\n";
+        }
+        start = end == std::string::npos ? set_errors.size() : end + 1;
+      }
+      return false;
+    }
   }
   out = std::move(m);
   return true;
