@@ -439,7 +439,11 @@ void Interpreter::delay_stmt(const Statement& st) {
 }
 
 void Interpreter::cycle_stmt(const Statement& st) {
-  if (!st.args.empty() && st.args[0].is("OFF")) return;
+  if (!st.args.empty() && st.args[0].is("OFF")) {
+    in_cycle_ = false;
+    return;
+  }
+  in_cycle_ = true;  // its hole positions are not posted as plain moves
   std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
   error(st, st.loc, fmt::format("CYCLE/{} is not supported on machine '{}': its holes would be lost; "
                                 "post the drilling with a milling post or output it as motion",
@@ -488,6 +492,7 @@ void Interpreter::goto_stmt(const Statement& st) {
     }
     note_once(st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
+  if (in_cycle_) return;  // reported at CYCLE/
   if (seq_ != Seq::kNone) return thread_goto(st, p);
   move_to(st, p);
 }
@@ -517,6 +522,15 @@ void Interpreter::circle_stmt(const Statement& st) {
       !number_arg(st, 6, "the radius", c.radius))
     return;
   c.loc = st.loc;
+  // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
+  ClAxis third = static_cast<ClAxis>(3 - static_cast<int>(m_.cl_radial) - static_cast<int>(m_.cl_axial));
+  double ax[3] = {c.ax, c.ay, c.az};
+  double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
+  if (!(len > 0) || std::abs(std::abs(ax[static_cast<int>(third)] / len) - 1) > 1e-6) {
+    error(st, st.loc, fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot be cut on a lathe",
+                                  c.ax, c.ay, c.az));
+    return;
+  }
   circle_ = c;
 }
 
@@ -536,14 +550,9 @@ void Interpreter::move_to(const Statement& st, Point3 p) {
   if (circle_) {
     Circle c = *circle_;
     circle_.reset();
-    // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
     double ax[3] = {c.ax, c.ay, c.az};
-    double len = std::sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
-    double normal = len > 0 ? ax[static_cast<int>(third)] / len : 0;
-    if (std::abs(std::abs(normal) - 1) > 1e-6) {
-      error(st, c.loc, fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot be cut on a lathe",
-                                   c.ax, c.ay, c.az));
-    } else if (!pos_) {
+    double normal = ax[static_cast<int>(third)] / std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
+    if (!pos_) {
       error(st, st.loc, "an arc needs a start point: no GOTO or FROM before CIRCLE/");
     } else {
       LathePoint from = lathe(*pos_);

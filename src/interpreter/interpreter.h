@@ -121,6 +121,7 @@ class Interpreter {
   SpindleDir spindle_dir_ = SpindleDir::kCw;
   std::vector<std::string> noted_;  // words already noted once
   size_t y_warnings_ = 0;
+  bool in_cycle_ = false;  // between an unsupported CYCLE/ and CYCLE/OFF
   size_t axis_notes_ = 0;
 
   // Threading
