@@ -28,12 +28,12 @@ struct ThreadGoto {
 
 // A THREAD/ON ... THREAD/OFF (or OP/THREAD ... OP/THREAD,NOMORE) sequence as read.
 struct MultiThreadInput {
-  ThreadWords words;        // parsed THREAD/ON parameters
-  SavedLines on_lines;      // THREAD/ON statement, for diagnostics on its words
-  SourceLoc on_loc;         // THREAD/ON major word
-  PitchSpec modal_pitch;    // PITCH/ in force at THREAD/ON
+  ThreadWords words;      // parsed THREAD/ON parameters
+  SavedLines on_lines;    // THREAD/ON statement, for diagnostics on its words
+  SourceLoc on_loc;       // THREAD/ON major word
+  PitchSpec modal_pitch;  // PITCH/ in force at THREAD/ON
   LengthUnit units = LengthUnit::kMm;
-  Vec2 p0;                  // tool position before THREAD/ON
+  Vec2 p0;  // tool position before THREAD/ON
   bool feed_approach = false;
   std::vector<ThreadGoto> gotos;  // as read (2 or 3 is valid)
   SourceLoc off_loc;
@@ -44,17 +44,17 @@ struct MultiThreadInput {
 
 // Plans a multi-pass thread (threading.md sections 4-8). Returns false (with diagnostics) on any
 // error; `out` is then unspecified.
-bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settings,
-                       ThreadPlan& out, Diagnostics& diags);
+bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settings, ThreadPlan& out,
+                       Diagnostics& diags);
 
 // A single-pass thread: THREAD/TURN|FACE|TAPER[,pitch couplets] and the GOTOs up to the next
 // statement that is not a GOTO (exactly 2 are valid). Same as GOTO/start, COUPLE/ON, GOTO/end,
 // COUPLE/OFF.
 struct SingleThreadInput {
-  SourceLoc loc;                  // THREAD major word
-  SavedLines lines;               // the THREAD/<kind> statement
+  SourceLoc loc;                     // THREAD major word
+  SavedLines lines;                  // the THREAD/<kind> statement
   std::string word = "THREAD/TURN";  // for messages
-  PitchSpec pitch;                // in force: the modal PITCH/ with the statement's couplets
+  PitchSpec pitch;                   // in force: the modal PITCH/ with the statement's couplets
   LengthUnit units = LengthUnit::kMm;
   Vec2 p0;                        // tool position before the statement
   std::vector<ThreadGoto> gotos;  // as read
@@ -68,11 +68,11 @@ bool plan_single_thread(const SingleThreadInput& in, const PlannerSettings& sett
 // A coupled sequence: COUPLE/ON[,pitch couplets] ... COUPLE/OFF (or the two GOTOs of a
 // single-pass thread).
 struct CoupleInput {
-  SourceLoc loc;                  // COUPLE major word
-  SavedLines lines;               // the COUPLE/ON statement
+  SourceLoc loc;                   // COUPLE major word
+  SavedLines lines;                // the COUPLE/ON statement
   std::string word = "COUPLE/ON";  // for messages
   std::string off_word = "COUPLE/OFF";
-  PitchSpec pitch;                // in force: the modal PITCH/ with the statement's couplets
+  PitchSpec pitch;  // in force: the modal PITCH/ with the statement's couplets
   LengthUnit units = LengthUnit::kMm;
   Vec2 start;                     // tool position at COUPLE/ON: where the first move starts
   std::vector<ThreadGoto> gotos;  // the synchronized moves, in order

@@ -1,0 +1,233 @@
+#include "planner/plan_format.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "planner/number_text.h"
+
+namespace clpost {
+
+const char* form_name(ThreadForm f) {
+  switch (f) {
+    case ThreadForm::kMulti:
+      return "multi";
+    case ThreadForm::kSingle:
+      return "single";
+    case ThreadForm::kCouple:
+      return "couple";
+  }
+  return "multi";
+}
+
+const char* kind_name(ThreadKind k) {
+  switch (k) {
+    case ThreadKind::kTurn:
+      return "turn";
+    case ThreadKind::kFace:
+      return "face";
+    case ThreadKind::kTaper:
+      return "taper";
+  }
+  return "turn";
+}
+
+const char* side_name(ThreadSide s) {
+  return s == ThreadSide::kInternal ? "internal" : "external";
+}
+
+const char* pass_kind_name(PassKind k) {
+  switch (k) {
+    case PassKind::kRough:
+      return "rough";
+    case PassKind::kFinish:
+      return "finish";
+    case PassKind::kSpring:
+      return "spring";
+  }
+  return "rough";
+}
+
+const char* units_name(LengthUnit u) {
+  return u == LengthUnit::kInch ? "in" : "mm";
+}
+
+namespace {
+
+// Length of the UTF-8 sequence starting at s[i], or 0 when it is not valid UTF-8.
+size_t utf8_length(std::string_view s, size_t i) {
+  const auto b = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  size_t n = 0;
+  unsigned min = 0;
+  unsigned cp = 0;
+  if (c < 0x80) return 1;
+  if ((c & 0xE0) == 0xC0) {
+    n = 2, min = 0x80, cp = c & 0x1F;
+  } else if ((c & 0xF0) == 0xE0) {
+    n = 3, min = 0x800, cp = c & 0x0F;
+  } else if ((c & 0xF8) == 0xF0) {
+    n = 4, min = 0x10000, cp = c & 0x07;
+  } else {
+    return 0;
+  }
+  if (i + n > s.size()) return 0;
+  for (size_t k = 1; k < n; ++k) {
+    if ((b(i + k) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (b(i + k) & 0x3F);
+  }
+  if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+  return n;
+}
+
+std::string json_string(std::string_view s) {
+  std::string out = "\"";
+  for (size_t i = 0; i < s.size();) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+      ++i;
+    } else if (c == '\n') {
+      out += "\\n", ++i;
+    } else if (c == '\r') {
+      out += "\\r", ++i;
+    } else if (c == '\t') {
+      out += "\\t", ++i;
+    } else if (c < 0x20 || c == 0x7F) {
+      out += fmt::format("\\u{:04x}", c);
+      ++i;
+    } else {
+      const size_t n = utf8_length(s, i);
+      if (n == 0) {
+        out += "\\ufffd";
+        ++i;
+      } else {
+        out.append(s.substr(i, n));
+        i += n;
+      }
+    }
+  }
+  out += '"';
+  return out;
+}
+
+std::string json_num(double v) {
+  return std::isfinite(v) ? num_text(v) : "null";
+}
+
+std::string json_point(Vec2 p) {
+  return fmt::format("{{\"x\": {}, \"z\": {}}}", json_num(p.x), json_num(p.z));
+}
+
+std::string text_point(Vec2 p) {
+  return fmt::format("(X {}, Z {})", num_text(p.x), num_text(p.z));
+}
+
+}  // namespace
+
+std::string plan_to_json(const std::string& file, LengthUnit units,
+                         const std::vector<ThreadPlan>& plans) {
+  std::string o = "{\n";
+  o += fmt::format("  \"file\": {},\n", json_string(file));
+  o += fmt::format("  \"units\": \"{}\",\n", units_name(units));
+  if (plans.empty()) {
+    o += "  \"threads\": []\n}\n";
+    return o;
+  }
+  o += "  \"threads\": [\n";
+  for (size_t k = 0; k < plans.size(); ++k) {
+    const ThreadPlan& p = plans[k];
+    const bool multi = p.form == ThreadForm::kMulti;
+    o += "    {\n";
+    o += fmt::format("      \"line\": {},\n", p.loc.line);
+    o += fmt::format("      \"form\": \"{}\",\n", form_name(p.form));
+    o += fmt::format("      \"kind\": \"{}\",\n", kind_name(p.kind));
+    o += fmt::format("      \"side\": \"{}\",\n", side_name(p.side));
+    o += fmt::format("      \"pitch\": {},\n", json_num(p.pitch.pitch));
+    o += fmt::format("      \"lead\": {},\n", json_num(p.lead));
+    o += fmt::format("      \"starts\": {},\n", p.pitch.starts);
+    o += fmt::format("      \"depth\": {},\n", json_num(p.depth));
+    o += fmt::format("      \"option\": {},\n", multi ? fmt::format("{}", p.option) : "null");
+    o += fmt::format("      \"tool_angle\": {},\n", multi ? json_num(p.tool_angle) : "null");
+    o += fmt::format("      \"cutang\": {},\n", multi ? json_num(p.cutang) : "null");
+    o += fmt::format("      \"p1\": {},\n", json_point(p.p1));
+    o += fmt::format("      \"p2\": {},\n", json_point(p.p2));
+    o += fmt::format("      \"pullout\": {},\n", p.pullout ? json_point(*p.pullout) : "null");
+    if (p.passes.empty()) {
+      o += "      \"passes\": []\n";
+    } else {
+      o += "      \"passes\": [\n";
+      for (size_t i = 0; i < p.passes.size(); ++i) {
+        const ThreadPass& s = p.passes[i];
+        o += fmt::format(
+            "        {{\"n\": {}, \"start\": {}, \"depth\": {}, \"kind\": \"{}\", \"shift\": {}, "
+            "\"from\": {}, \"to\": {}}}{}\n",
+            s.n, s.start, json_num(s.depth), pass_kind_name(s.kind), json_num(s.shift),
+            json_point(s.from), json_point(s.to), i + 1 < p.passes.size() ? "," : "");
+      }
+      o += "      ]\n";
+    }
+    o += fmt::format("    }}{}\n", k + 1 < plans.size() ? "," : "");
+  }
+  o += "  ]\n}\n";
+  return o;
+}
+
+std::string plan_to_text(const std::string& file, LengthUnit units,
+                         const std::vector<ThreadPlan>& plans) {
+  std::string o = fmt::format("{}: {} thread{} ({})\n", file, plans.size(),
+                              plans.size() == 1 ? "" : "s", units_name(units));
+  for (const ThreadPlan& p : plans) {
+    const bool multi = p.form == ThreadForm::kMulti;
+    std::string pitch = num_text(p.pitch.pitch);
+    if (p.pitch.from_tpi) pitch += fmt::format(" ({} TPI)", num_text(p.pitch.tpi));
+    std::string head =
+        fmt::format("\nline {}: {} {} thread, {}, pitch {}, lead {}, {} start{}", p.loc.line,
+                    form_name(p.form), kind_name(p.kind), side_name(p.side), pitch,
+                    num_text(p.lead), p.pitch.starts, p.pitch.starts == 1 ? "" : "s");
+    if (p.pitch.starts > 1 && multi)
+      head += p.starts_by_angle ? " (by spindle start angle)" : " (by offset)";
+    if (p.pitch.lead_change != 0)
+      head += fmt::format(", lead change {}{} per rev", p.pitch.lead_change > 0 ? "+" : "",
+                          num_text(p.pitch.lead_change));
+    if (multi) {
+      head += fmt::format(", depth {}, option {}, tool angle {}, cutang {}, pull-out ",
+                          num_text(p.depth), p.option, num_text(p.tool_angle), num_text(p.cutang));
+      if (p.pullout) {
+        head += fmt::format("{} ({})", text_point(*p.pullout),
+                            p.pullout_linear ? "linear" : "threaded");
+      } else {
+        head += "none";
+      }
+    }
+    o += head + "\n";
+    const bool angles = p.starts_by_angle;
+    o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {}\n", "pass", "start",
+                     angles ? fmt::format(" {:>7}", "angle") : "", "depth", "step", "shift", "kind",
+                     "from -> to");
+    std::vector<double> last(static_cast<size_t>(std::max(1, p.pitch.starts)), 0.0);
+    for (const ThreadPass& s : p.passes) {
+      double step = s.depth;
+      if (s.start >= 0 && static_cast<size_t>(s.start) < last.size()) {
+        step = s.depth - last[static_cast<size_t>(s.start)];
+        last[static_cast<size_t>(s.start)] = s.depth;
+      }
+      o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {} -> {}\n", s.n, s.start,
+                       angles ? fmt::format(" {:>7}", num_text(s.start_angle)) : "",
+                       num_text(s.depth), num_text(step), num_text(s.shift), pass_kind_name(s.kind),
+                       text_point(s.from), text_point(s.to));
+    }
+    if (multi) {
+      o += fmt::format("  returns {} above the thread line; ends at {}\n", num_text(p.clearance),
+                       text_point(p.end_position));
+    } else {
+      o += fmt::format("  ends at {}\n", text_point(p.end_position));
+    }
+  }
+  return o;
+}
+
+}  // namespace clpost

@@ -1,0 +1,469 @@
+// Multi-pass, single-pass and coupled thread planning (threading.md sections 2-8; the decisions
+// taken where it is silent are in docs/threading.md).
+#include "planner/planner.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "planner/depth_ladder.h"
+#include "planner/number_text.h"
+#include "planner/vec2_math.h"
+
+namespace clpost {
+
+using namespace vec2_math;
+
+namespace {
+
+// Lengths below this (CL units) are zero.
+constexpr double kLengthEps = 1e-9;
+// Angles closer than this (degrees) are equal.
+constexpr double kAngleEps = 1e-9;
+
+std::string pt(Vec2 p) {
+  return fmt::format("(X {}, Z {})", num_text(p.x), num_text(p.z));
+}
+
+std::string machine_text(const PlannerSettings& s) {
+  return s.machine_name.empty() ? std::string("this machine")
+                                : fmt::format("machine '{}'", s.machine_name);
+}
+
+// pitch/(2 tan 30): the full depth of a 60 degree thread, the default pull-out and return height.
+double default_height(double pitch) {
+  return pitch / (2 * std::tan(rad(30)));
+}
+
+bool on_statement(const SavedLines& lines, SourceLoc loc) {
+  return loc.line != 0 && loc.line >= lines.first_line &&
+         loc.line - lines.first_line < lines.lines.size();
+}
+
+// A statement's location and saved lines, for reporting.
+struct Site {
+  SourceLoc loc;
+  const SavedLines* lines;
+};
+
+class Reporter {
+ public:
+  explicit Reporter(Diagnostics& d) : diags_(d) {}
+  bool error(Site s, std::string message) {
+    diags_.error(s.loc, s.lines->text(s.loc.line), std::move(message));
+    return false;
+  }
+  void warning(Site s, std::string message) {
+    diags_.warning(s.loc, s.lines->text(s.loc.line), std::move(message));
+  }
+  void note(Site s, std::string message) {
+    diags_.note(s.loc, s.lines->text(s.loc.line), std::move(message));
+  }
+
+ private:
+  Diagnostics& diags_;
+};
+
+// The pitch in force: present, and constant unless the machine can cut a variable lead.
+bool check_pitch(const PitchSpec& pitch, Site site, std::string_view word,
+                 const PlannerSettings& settings, Reporter& r) {
+  if (!pitch.set) {
+    return r.error(site, fmt::format("no pitch in force at {}: give PITCH/ before it, or TPI, "
+                                     "IPR, MMPR or PERREV on it",
+                                     word));
+  }
+  if (pitch.lead_change != 0 && !settings.variable_lead) {
+    const SourceLoc cl = pitch.lead_change_loc;
+    const Site at = on_statement(*site.lines, cl) ? Site{cl, site.lines} : site;
+    return r.error(at, fmt::format("variable lead ({} {} per revolution, CL line {}) cannot be "
+                                   "cut on {}: it does not declare variable-lead threading "
+                                   "(G34/G35)",
+                                   pitch.lead_change > 0 ? "INCR" : "DECR",
+                                   num_text(std::fabs(pitch.lead_change)),
+                                   cl.line != 0 ? cl.line : site.loc.line, machine_text(settings)));
+  }
+  return true;
+}
+
+ThreadKind kind_of(Vec2 d) {
+  if (std::fabs(d.x) <= kLengthEps) return ThreadKind::kTurn;
+  if (std::fabs(d.z) <= kLengthEps) return ThreadKind::kFace;
+  return ThreadKind::kTaper;
+}
+
+bool is_axis_angle(double deg_value) {
+  const double r = std::fabs(std::fmod(deg_value, 90.0));
+  return r < kAngleEps || 90 - r < kAngleEps;
+}
+
+// One way to define the pull-out, with where it was given (for the "more than one" error).
+struct PulloutSource {
+  std::string name;  // "the third GOTO", "ATANGL", "CHAMFR"
+  Site site;
+};
+
+std::string loc_text(SourceLoc l) {
+  return fmt::format("line {}, column {}", l.line, l.col);
+}
+
+}  // namespace
+
+bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settings, ThreadPlan& out,
+                       Diagnostics& diags) {
+  Reporter r(diags);
+  const Site on{in.on_loc, &in.on_lines};
+  const ThreadWords& w = in.words;
+  auto goto_site = [&](size_t i) { return Site{in.gotos[i].loc, &in.gotos[i].lines}; };
+  auto sequence_note = [&] { r.note(on, "the thread sequence starts here"); };
+
+  // --- The GOTOs: 2 or 3. ---
+  const size_t ngoto = in.gotos.size();
+  if (ngoto < 2) {
+    return r.error(on, fmt::format("{} needs 2 or 3 GOTOs before {} (thread start, thread end, "
+                                   "optional chamfer end); found {}",
+                                   in.on_word, in.off_word, ngoto));
+  }
+  if (ngoto > 3) {
+    r.error(goto_site(3), fmt::format("{} takes at most 3 GOTOs before {} (thread start, thread "
+                                      "end, chamfer end); this is GOTO 4 of {}",
+                                      in.on_word, in.off_word, ngoto));
+    sequence_note();
+    return false;
+  }
+  const Vec2 p0 = in.p0;
+  const Vec2 p1 = in.gotos[0].point;
+  const Vec2 p2 = in.gotos[1].point;
+  const Vec2 d12 = p2 - p1;
+  const double len = length(d12);
+  if (len <= kLengthEps) {
+    r.error(goto_site(1), fmt::format("the thread end {} is the thread start: the thread has no "
+                                      "length",
+                                      pt(p2)));
+    sequence_note();
+    return false;
+  }
+
+  // --- Pitch. ---
+  PitchSpec pitch = in.modal_pitch;
+  w.pitch.apply_to(pitch);
+  if (!check_pitch(pitch, on, in.on_word, settings, r)) return false;
+
+  // --- Geometry. ---
+  ThreadPlan plan;
+  plan.loc = in.on_loc;
+  plan.form = ThreadForm::kMulti;
+  plan.units = in.units;
+  plan.pitch = pitch;
+  plan.lead = pitch.starts * pitch.pitch;
+  plan.p0 = p0;
+  plan.p1 = p1;
+  plan.p2 = p2;
+  plan.feed_approach = in.feed_approach;
+  plan.kind = kind_of(d12);
+  plan.lead_along_z = std::fabs(d12.z) >= std::fabs(d12.x);
+  const Vec2 t = (1 / len) * d12;
+
+  double theta = 0;
+  if (w.cutang.set) {
+    theta = w.cutang.value;
+    const Vec2 u = direction(theta);
+    const double off = deg(std::acos(std::min(1.0, std::fabs(dot(u, t)))));
+    if (off <= 10 + kAngleEps) {
+      return r.error(
+          Site{w.cutang.loc, &in.on_lines},
+          fmt::format("CUTANG {} is only {}° off the thread line (direction {}° from "
+                      "{} to {}); the infeed must be more than 10° off it",
+                      num_text(theta), num_text(off), num_text(angle_of(t)), pt(p1), pt(p2)));
+    }
+  } else if (plan.lead_along_z) {
+    // Turn / turn-taper: along X toward the thread line from the initial point.
+    const double x_line = p1.x + (p0.z - p1.z) * d12.x / d12.z;
+    const double gap = x_line - p0.x;
+    if (std::fabs(gap) <= kLengthEps) {
+      return r.error(on, fmt::format("cannot choose the infeed direction: the initial point {} "
+                                     "is on the thread line; give CUTANG",
+                                     pt(p0)));
+    }
+    theta = gap < 0 ? 180 : 0;
+  } else {
+    // Face / face-taper: along Z toward the thread line.
+    const double z_line = p1.z + (p0.x - p1.x) * d12.z / d12.x;
+    const double gap = z_line - p0.z;
+    if (std::fabs(gap) <= kLengthEps) {
+      return r.error(on, fmt::format("cannot choose the infeed direction: the initial point {} "
+                                     "is on the thread line; give CUTANG",
+                                     pt(p0)));
+    }
+    theta = gap < 0 ? 270 : 90;
+  }
+  plan.cutang = theta;
+  const Vec2 u = direction(theta);
+  Vec2 n{t.z, -t.x};
+  if (dot(n, u) < 0) n = -n;
+  const double nu = dot(n, u);
+  const Vec2 out_dir = -n;  // outward: away from the material
+  // Face threads (lead along X) are reported external; otherwise the side of the material does.
+  plan.side = (!plan.lead_along_z || n.x < 0) ? ThreadSide::kExternal : ThreadSide::kInternal;
+
+  plan.option = w.option.set ? w.option.value : settings.default_option;
+  plan.tool_angle = w.tlangl.set ? w.tlangl.value : settings.default_tool_angle;
+
+  // --- Depth ladder. ---
+  DepthLadder ladder;
+  if (!make_depth_ladder(w, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))
+    return false;
+  plan.depth = ladder.depth;
+
+  // --- Flank shift. ---
+  const size_t npass = ladder.depths.size();
+  std::vector<double> sigma(npass, 0);
+  if (plan.option != 0 && is_axis_angle(theta)) {
+    const double k = std::tan(rad(plan.tool_angle / 2));
+    for (size_t i = 0; i < npass; ++i) {
+      const int pass_no = static_cast<int>(i) + 1;
+      const bool single_edge = plan.option == 1 || plan.option == 3;
+      if (single_edge || pass_no % 2 == 0) sigma[i] = ladder.depths[i] * k;
+    }
+  }
+  const double sigma_max = npass ? *std::max_element(sigma.begin(), sigma.end()) : 0;
+
+  // --- Pull-out. ---
+  std::vector<PulloutSource> sources;
+  if (w.atangl.set) sources.push_back({"ATANGL", {w.atangl.loc, &in.on_lines}});
+  if (w.chamfr.set && w.chamfr.length != 0)
+    sources.push_back({"CHAMFR", {w.chamfr.loc, &in.on_lines}});
+  if (sources.size() == 2 && (sources[1].site.loc.line < sources[0].site.loc.line ||
+                              (sources[1].site.loc.line == sources[0].site.loc.line &&
+                               sources[1].site.loc.col < sources[0].site.loc.col)))
+    std::swap(sources[0], sources[1]);
+  if (ngoto == 3) sources.push_back({"the third GOTO", goto_site(2)});
+  if (sources.size() > 1) {
+    for (size_t k = 1; k < sources.size(); ++k) {
+      r.error(sources[k].site,
+              fmt::format("{} defines a second pull-out: {} at {} already defines it; give only "
+                          "one of a third GOTO, ATANGL and CHAMFR",
+                          sources[k].name, sources[0].name, loc_text(sources[0].site.loc)));
+    }
+    if (sources.back().name == "the third GOTO") sequence_note();
+    return false;
+  }
+  std::optional<Vec2> delta;
+  double shorten = 0;  // negative CHAMFR: every pass ends this much earlier along t
+  double chamfer_angle = 0;
+  if (ngoto == 3) {
+    const Vec2 p3 = in.gotos[2].point;
+    const Vec2 d = p3 - p2;
+    if (length(d) <= kLengthEps) {
+      r.warning(goto_site(2), fmt::format("the third GOTO {} repeats the thread end: no "
+                                          "pull-out",
+                                          pt(p3)));
+    } else if (dot(d, out_dir) < -kLengthEps) {
+      r.error(goto_site(2),
+              fmt::format("the chamfer end {} is {} on the material side of the thread line: "
+                          "the pull-out must move out of the thread",
+                          pt(p3), num_text(-dot(d, out_dir))));
+      sequence_note();
+      return false;
+    } else {
+      delta = d;
+    }
+  } else if (w.atangl.set) {
+    const double h = w.atangl.height > 0 ? w.atangl.height : default_height(pitch.pitch);
+    delta = h * out_dir + (h * std::tan(rad(w.atangl.angle))) * t;
+  } else if (w.chamfr.set && w.chamfr.length != 0) {
+    const double l = std::fabs(w.chamfr.length);
+    delta = l * t + (l * std::tan(rad(w.chamfr.angle))) * out_dir;
+    if (w.chamfr.length < 0) shorten = l;
+  }
+  if (delta) {
+    chamfer_angle = deg(std::atan2(dot(*delta, out_dir), dot(*delta, t)));
+    plan.pullout = delta;
+    plan.pullout_linear = chamfer_angle < 30 - kAngleEps || chamfer_angle > 60 + kAngleEps;
+  }
+
+  // --- Clearance: the line, parallel to the thread, that the tool returns along. ---
+  // Highest pull-out end over all passes (the shallowest pass), above the thread line.
+  const double d_min = *std::min_element(ladder.depths.begin(), ladder.depths.end());
+  const double top =
+      delta ? dot(*delta, out_dir) - d_min : -std::numeric_limits<double>::infinity();
+  double clear_h = 0;
+  if (w.ret.set) {
+    const Site ret{w.ret.loc, &in.on_lines};
+    if (w.ret.height_given) {
+      clear_h = w.ret.height;
+    } else if (plan.lead_along_z) {
+      clear_h = (p0.x - p2.x) / out_dir.x;
+      if (clear_h <= kLengthEps) {
+        return r.error(ret, fmt::format("RETURN without a height clears to the initial point's "
+                                        "X {}, which is not outside the thread end {}; give "
+                                        "RETURN,h",
+                                        num_text(p0.x), pt(p2)));
+      }
+    } else {
+      clear_h = (p0.z - p2.z) / out_dir.z;
+      if (clear_h <= kLengthEps) {
+        return r.error(ret, fmt::format("RETURN without a height clears to the initial point's "
+                                        "Z {}, which is not outside the thread end {}; give "
+                                        "RETURN,h",
+                                        num_text(p0.z), pt(p2)));
+      }
+    }
+    if (top > clear_h + kLengthEps) {
+      r.warning(ret, fmt::format("the return height {} is below the pull-out end ({} above the "
+                                 "thread line): the tool clears to {}",
+                                 num_text(clear_h), num_text(top), num_text(top)));
+      clear_h = top;
+    }
+  } else {
+    clear_h = std::max(default_height(pitch.pitch), top);
+  }
+  plan.clearance = clear_h;
+
+  // --- Passes. ---
+  const double cut_len = len - sigma_max - shorten;
+  if (cut_len <= kLengthEps) {
+    return r.error(
+        on, fmt::format("the passes have no length: thread length {} - largest flank "
+                        "shift {} - negative CHAMFR {} = {}",
+                        num_text(len), num_text(sigma_max), num_text(shorten), num_text(cut_len)));
+  }
+  const int starts = std::clamp(pitch.starts, 1, kMaxStarts);
+  plan.starts_by_angle = starts > 1 && settings.start_angle_word;
+  // Start k begins k pitches (measured along the lead axis) earlier; the end stays.
+  const double t_lead = plan.lead_along_z ? std::fabs(t.z) : std::fabs(t.x);
+  plan.passes.reserve(npass * static_cast<size_t>(starts));
+  for (size_t i = 0; i < npass; ++i) {
+    const double d = ladder.depths[i];
+    const Vec2 base = (d / nu) * u + sigma[i] * t;
+    for (int k = 0; k < starts; ++k) {
+      ThreadPass p;
+      p.n = static_cast<int>(i) + 1;
+      p.start = k;
+      p.depth = d;
+      p.kind = ladder.kinds[i];
+      p.shift = sigma[i];
+      const double offset = plan.starts_by_angle ? 0 : k * pitch.pitch / t_lead;
+      p.from = p1 + base - offset * t;
+      p.to = p2 + base - (sigma_max + shorten) * t;
+      p.pullout_end = delta ? p.to + *delta : p.to;
+      const double h_end = dot(p.pullout_end - p1, out_dir);
+      p.clear = p.pullout_end + (clear_h - h_end) * out_dir;
+      p.approach = p.from - ((clear_h + d) / nu) * u;
+      p.start_angle = plan.starts_by_angle ? k * 360.0 / starts : 0;
+      plan.passes.push_back(p);
+    }
+  }
+  plan.end_position = p1 + clear_h * out_dir;
+  out = std::move(plan);
+  return true;
+}
+
+namespace {
+
+// The shared part of single-pass and coupled threads: `path[0]` is where the tool is, every
+// later point one synchronized move.
+bool plan_path(Site site, std::string_view word, ThreadForm form, const PitchSpec& pitch,
+               LengthUnit units, Vec2 start, const std::vector<ThreadGoto>& gotos,
+               const PlannerSettings& settings, ThreadPlan& out, Reporter& r) {
+  if (!check_pitch(pitch, site, word, settings, r)) return false;
+  ThreadPlan plan;
+  plan.loc = site.loc;
+  plan.form = form;
+  plan.units = units;
+  plan.pitch = pitch;
+  plan.lead = pitch.starts * pitch.pitch;
+  plan.option = 0;
+  plan.tool_angle = 0;
+  plan.cutang = 0;
+  plan.p0 = start;
+  plan.path.push_back(start);
+  for (const ThreadGoto& g : gotos) {
+    const Vec2 from = plan.path.back();
+    if (length(g.point - from) <= kLengthEps) {
+      r.warning(
+          Site{g.loc, &g.lines},
+          fmt::format("this GOTO {} does not move the tool: no synchronized move", pt(g.point)));
+      continue;
+    }
+    ThreadPass p;
+    p.n = static_cast<int>(plan.passes.size()) + 1;
+    p.approach = from;
+    p.from = from;
+    p.to = g.point;
+    p.pullout_end = g.point;
+    p.clear = g.point;
+    plan.passes.push_back(p);
+    plan.path.push_back(g.point);
+  }
+  if (plan.passes.empty()) {
+    return r.error(site, fmt::format("{} has no synchronized move: expected a GOTO that moves "
+                                     "the tool",
+                                     word));
+  }
+  plan.p1 = plan.passes.front().from;
+  plan.p2 = plan.passes.back().to;
+  // The first move is the thread proper; later ones are usually its pull-out.
+  const Vec2 first = plan.passes.front().to - plan.passes.front().from;
+  plan.kind = kind_of(first);
+  plan.lead_along_z = std::fabs(first.z) >= std::fabs(first.x);
+  plan.side = ThreadSide::kExternal;
+  plan.end_position = plan.path.back();
+  if (pitch.starts > 1) {
+    r.warning(site, fmt::format("MULTRD {} on {}: the path is cut once, at lead {} (start 0); "
+                                "program the other starts as their own moves",
+                                pitch.starts, word, num_text(plan.lead)));
+  }
+  out = std::move(plan);
+  return true;
+}
+
+}  // namespace
+
+bool plan_single_thread(const SingleThreadInput& in, const PlannerSettings& settings,
+                        ThreadPlan& out, Diagnostics& diags) {
+  Reporter r(diags);
+  const Site site{in.loc, &in.lines};
+  const size_t n = in.gotos.size();
+  if (n < 2) {
+    return r.error(site, fmt::format("{} needs exactly 2 GOTOs (thread start, thread end); "
+                                     "found {}",
+                                     in.word, n));
+  }
+  if (n > 2) {
+    r.error(Site{in.gotos[2].loc, &in.gotos[2].lines},
+            fmt::format("{} takes exactly 2 GOTOs (thread start, thread end); this is GOTO 3 "
+                        "of {} (use THREAD/ON for a chamfer pull-out)",
+                        in.word, n));
+    r.note(site, "the thread starts here");
+    return false;
+  }
+  const Vec2 a = in.gotos[0].point;
+  const Vec2 b = in.gotos[1].point;
+  if (length(b - a) <= kLengthEps) {
+    r.error(Site{in.gotos[1].loc, &in.gotos[1].lines},
+            fmt::format("the thread end {} is the thread start: the thread has no length", pt(b)));
+    r.note(site, "the thread starts here");
+    return false;
+  }
+  ThreadPlan plan;
+  const std::vector<ThreadGoto> end_only{in.gotos[1]};
+  if (!plan_path(site, in.word, ThreadForm::kSingle, in.pitch, in.units, a, end_only, settings,
+                 plan, r))
+    return false;
+  plan.p0 = in.p0;
+  out = std::move(plan);
+  return true;
+}
+
+bool plan_couple(const CoupleInput& in, const PlannerSettings& settings, ThreadPlan& out,
+                 Diagnostics& diags) {
+  Reporter r(diags);
+  const Site site{in.loc, &in.lines};
+  return plan_path(site, in.word, ThreadForm::kCouple, in.pitch, in.units, in.start, in.gotos,
+                   settings, out, r);
+}
+
+}  // namespace clpost

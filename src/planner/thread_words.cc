@@ -1,0 +1,488 @@
+#include "planner/thread_words.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "planner/number_text.h"
+
+namespace clpost {
+
+void PitchWords::apply_to(PitchSpec& spec) const {
+  if (value_given) {
+    spec.set = true;
+    spec.pitch = pitch;
+    spec.from_tpi = from_tpi;
+    spec.tpi = tpi;
+    spec.loc = value_loc;
+  }
+  if (starts_given) {
+    spec.starts = starts;
+    spec.starts_loc = starts_loc;
+  }
+  if (change_given) {
+    spec.lead_change = lead_change;
+    spec.lead_change_loc = change_loc;
+  }
+}
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+// Walks the arguments of one statement and reports errors at them.
+class Args {
+ public:
+  Args(const Statement& st, size_t first, Diagnostics& diags) : st_(st), i_(first), diags_(diags) {}
+
+  bool done() const { return i_ >= st_.args.size(); }
+  const Arg& peek() const { return st_.args[i_]; }
+  bool peek_number() const { return !done() && peek().is_number(); }
+  bool peek_word() const { return !done() && peek().is_word(); }
+  const Arg& take() { return st_.args[i_++]; }
+  void skip_numbers() {
+    while (peek_number()) ++i_;
+  }
+  bool ok() const { return ok_; }
+
+  void error(SourceLoc loc, std::string message) {
+    diags_.error(loc, st_.line_text(loc.line), std::move(message));
+    ok_ = false;
+  }
+
+  // What stands at the cursor, for "found ..." in messages.
+  std::string found() const {
+    if (done()) return "the end of the statement";
+    if (peek().is_number()) return fmt::format("number {}", peek().text);
+    return fmt::format("'{}'", peek().text);
+  }
+
+  // Takes the number after `key`, or reports "expected <what> after KEY".
+  bool number(const Arg& key, std::string_view what, double& v) {
+    if (!peek_number()) {
+      error(key.loc, fmt::format("expected {} after {}, found {}", what, key.text, found()));
+      return false;
+    }
+    v = take().number;
+    return true;
+  }
+
+  // After a keyword's values: a further number is an error.
+  void no_more_numbers(const Arg& key, std::string_view form) {
+    if (!peek_number()) return;
+    const Arg& extra = peek();
+    error(extra.loc, fmt::format("unexpected number {} after {}: {} takes {}", extra.text, key.text,
+                                 key.text, form));
+    skip_numbers();
+  }
+
+  // "first at column 12" or "first at line 4, column 12".
+  std::string where(SourceLoc first, SourceLoc now) const {
+    if (first.line == now.line) return fmt::format("column {}", first.col);
+    return fmt::format("line {}, column {}", first.line, first.col);
+  }
+
+ private:
+  const Statement& st_;
+  size_t i_;
+  Diagnostics& diags_;
+  bool ok_ = true;
+};
+
+bool is_whole(double v) {
+  return std::isfinite(v) && std::fabs(v - std::round(v)) < 1e-9;
+}
+
+bool is_pitch_unit(const Arg& a) {
+  return a.is("TPI") || a.is("IPR") || a.is("MMPR") || a.is("PERREV");
+}
+
+std::string_view unit_what(std::string_view unit) {
+  if (unit == "TPI") return "the threads per inch";
+  if (unit == "IPR") return "the pitch in inches";
+  if (unit == "MMPR") return "the pitch in mm";
+  if (unit == "PERREV") return "the pitch in CL units";
+  return "the threads per CL unit";
+}
+
+// Sets the pitch part of `pw` from `v` given in `unit` ("" for the unqualified PITCH/ value).
+void set_pitch(std::string_view unit, double v, LengthUnit cl_units, SourceLoc loc,
+               PitchWords& pw) {
+  const bool inch = cl_units == LengthUnit::kInch;
+  pw.value_given = true;
+  pw.value_loc = loc;
+  pw.from_tpi = false;
+  pw.tpi = 0;
+  if (unit == "TPI") {
+    pw.pitch = inch ? 1 / v : kMmPerInch / v;
+    pw.from_tpi = true;
+    pw.tpi = v;
+  } else if (unit == "IPR") {
+    pw.pitch = inch ? v : v * kMmPerInch;
+  } else if (unit == "MMPR") {
+    pw.pitch = inch ? v / kMmPerInch : v;
+  } else if (unit == "PERREV") {
+    pw.pitch = v;
+  } else {  // threads per CL unit
+    pw.pitch = 1 / v;
+    if (inch) {
+      pw.from_tpi = true;
+      pw.tpi = v;
+    }
+  }
+}
+
+// A pitch value must be positive (and finite).
+bool check_pitch_value(Args& a, const Arg& key, double v) {
+  if (std::isfinite(v) && v > 0) return true;
+  a.error(key.loc, fmt::format("{} must be positive; got {}", key.text, num_text(v)));
+  return false;
+}
+
+// The value part was given before on this statement: error.
+bool check_pitch_once(Args& a, const Arg& key, const PitchWords& pw, std::string_view first_word) {
+  if (!pw.value_given) return true;
+  a.error(key.loc, fmt::format("{}: the pitch is already given by {} at {}", key.text, first_word,
+                               a.where(pw.value_loc, key.loc)));
+  return false;
+}
+
+// Parses one pitch couplet whose keyword `key` has just been taken (TPI|IPR|MMPR|PERREV,v,
+// MULTRD,n, INCR|DECR,dv). `first_word` remembers which word gave the pitch value.
+void pitch_couplet(Args& a, const Arg& key, LengthUnit cl_units, PitchWords& pw,
+                   std::string& first_word) {
+  double v = 0;
+  if (is_pitch_unit(key)) {
+    if (!a.number(key, unit_what(key.text), v)) return;
+    if (check_pitch_value(a, key, v) && check_pitch_once(a, key, pw, first_word)) {
+      set_pitch(key.text, v, cl_units, key.loc, pw);
+      first_word = key.text;
+    }
+    a.no_more_numbers(key, fmt::format("one value ({},v)", key.text));
+  } else if (key.is("MULTRD")) {
+    if (!a.number(key, "the number of starts", v)) return;
+    if (pw.starts_given) {
+      a.error(key.loc,
+              fmt::format("MULTRD is given twice (first at {})", a.where(pw.starts_loc, key.loc)));
+    } else if (!is_whole(v) || v < 1) {
+      a.error(key.loc,
+              fmt::format("MULTRD must be a positive whole number of starts; got {}", num_text(v)));
+    } else if (v > kMaxStarts) {
+      a.error(key.loc, fmt::format("MULTRD {} is more than the {} starts a thread may have",
+                                   num_text(v), kMaxStarts));
+    } else {
+      pw.starts_given = true;
+      pw.starts = static_cast<int>(std::lround(v));
+      pw.starts_loc = key.loc;
+    }
+    a.no_more_numbers(key, "one value (MULTRD,n)");
+  } else {  // INCR / DECR
+    if (!a.number(key, "the lead change per revolution", v)) return;
+    if (pw.change_given) {
+      a.error(key.loc, fmt::format("{}: the lead change is already given at {}", key.text,
+                                   a.where(pw.change_loc, key.loc)));
+    } else if (!std::isfinite(v) || v < 0) {
+      a.error(key.loc, fmt::format("{} takes the size of the lead change (0 or more); got {}{}",
+                                   key.text, num_text(v),
+                                   key.is("INCR") ? " (use DECR for a shrinking lead)"
+                                                  : " (use INCR for a growing lead)"));
+    } else {
+      pw.change_given = true;
+      pw.lead_change = key.is("INCR") ? v : -v;
+      pw.change_loc = key.loc;
+    }
+    a.no_more_numbers(key, fmt::format("one value ({},dv)", key.text));
+  }
+}
+
+bool is_pitch_couplet_word(const Arg& a) {
+  return is_pitch_unit(a) || a.is("MULTRD") || a.is("INCR") || a.is("DECR");
+}
+
+// Reports a repeated keyword; returns true when `p` is already set.
+template <typename P>
+bool twice(Args& a, const Arg& key, const P& p) {
+  if (!p.set) return false;
+  a.error(key.loc,
+          fmt::format("{} is given twice (first at {})", key.text, a.where(p.loc, key.loc)));
+  a.skip_numbers();
+  return true;
+}
+
+void parse_cuts(Args& a, const Arg& key, CutsParam& cuts) {
+  std::vector<const Arg*> nums;
+  while (a.peek_number()) nums.push_back(&a.take());
+  if (nums.empty()) {
+    a.error(key.loc, fmt::format("expected the number of passes after CUTS, found {}", a.found()));
+    return;
+  }
+  if (nums.size() > 2 && nums.size() % 2 != 0) {
+    a.error(key.loc, fmt::format("CUTS takes a count, a count and a step, or count,step pairs; "
+                                 "got {} numbers (an odd count of more than 2)",
+                                 nums.size()));
+    return;
+  }
+  CutsParam c;
+  c.set = true;
+  c.loc = key.loc;
+  bool ok = true;
+  for (size_t k = 0; k < nums.size(); ++k) {
+    const Arg& n = *nums[k];
+    const bool is_count = k % 2 == 0;
+    if (is_count) {
+      if (!is_whole(n.number) || n.number < 1) {
+        a.error(n.loc, fmt::format("CUTS count must be a positive whole number; got {}",
+                                   num_text(n.number)));
+        ok = false;
+      } else if (n.number > kMaxPasses) {
+        a.error(n.loc, fmt::format("CUTS count {} is more than the {} passes a thread may have",
+                                   num_text(n.number), kMaxPasses));
+        ok = false;
+      }
+    } else if (!std::isfinite(n.number) || n.number <= 0) {
+      a.error(n.loc, fmt::format("CUTS step must be positive; got {}", num_text(n.number)));
+      ok = false;
+    }
+  }
+  if (!ok) return;
+  if (nums.size() == 1) {
+    c.count = static_cast<int>(std::lround(nums[0]->number));
+  } else {
+    for (size_t k = 0; k + 1 < nums.size(); k += 2) {
+      CutSteps s;
+      s.count = static_cast<int>(std::lround(nums[k]->number));
+      s.step = nums[k + 1]->number;
+      s.loc = nums[k]->loc;
+      c.count += s.count;
+      c.steps.push_back(s);
+    }
+  }
+  cuts = std::move(c);
+}
+
+void parse_fincut(Args& a, const Arg& key, FincutParam& fin) {
+  double count = 0;
+  if (!a.number(key, "the number of finish passes", count)) return;
+  double dist = 0;
+  if (a.peek_number()) dist = a.take().number;
+  a.no_more_numbers(key, "FINCUT,count[,allowance]");
+  if (!is_whole(count) || count < 0) {
+    a.error(key.loc,
+            fmt::format("FINCUT count must be a whole number, 0 or more; got {}", num_text(count)));
+    return;
+  }
+  if (count > kMaxPasses) {
+    a.error(key.loc, fmt::format("FINCUT count {} is more than the {} passes a thread may have",
+                                 num_text(count), kMaxPasses));
+    return;
+  }
+  if (!std::isfinite(dist) || dist < 0) {
+    a.error(key.loc, fmt::format("FINCUT allowance must be 0 or more; got {}", num_text(dist)));
+    return;
+  }
+  fin.set = true;
+  fin.loc = key.loc;
+  fin.count = static_cast<int>(std::lround(count));
+  fin.dist = dist;
+}
+
+}  // namespace
+
+bool parse_thread_words(const Statement& st, size_t first_arg, LengthUnit cl_units,
+                        ThreadWords& out, Diagnostics& diags) {
+  Args a(st, first_arg, diags);
+  ThreadWords w;
+  std::string pitch_word;
+  while (!a.done()) {
+    if (a.peek_number()) {
+      const Arg& n = a.take();
+      a.error(n.loc, fmt::format("expected a thread parameter word, found number {}; valid "
+                                 "words: {}",
+                                 n.text, kThreadWordList));
+      a.skip_numbers();
+      continue;
+    }
+    const Arg& key = a.take();
+    double v = 0;
+    if (key.is("DEPTH")) {
+      if (twice(a, key, w.depth) || !a.number(key, "the thread depth", v)) continue;
+      a.no_more_numbers(key, "one value (DEPTH,d)");
+      if (!std::isfinite(v) || v <= 0) {
+        a.error(key.loc, fmt::format("DEPTH must be positive; got {}", num_text(v)));
+        continue;
+      }
+      w.depth = {true, v, key.loc};
+    } else if (key.is("CUTS")) {
+      if (twice(a, key, w.cuts)) continue;
+      parse_cuts(a, key, w.cuts);
+    } else if (key.is("STEP")) {
+      if (twice(a, key, w.step) || !a.number(key, "the first infeed step", v)) continue;
+      a.no_more_numbers(key, "one value (STEP,s)");
+      if (!std::isfinite(v) || v <= 0) {
+        a.error(key.loc, fmt::format("STEP must be positive; got {}", num_text(v)));
+        continue;
+      }
+      w.step = {true, v, key.loc};
+    } else if (key.is("FINCUT")) {
+      if (twice(a, key, w.fincut)) continue;
+      parse_fincut(a, key, w.fincut);
+    } else if (key.is("OPTION")) {
+      if (twice(a, key, w.option) || !a.number(key, "the infeed option (0 to 4)", v)) continue;
+      a.no_more_numbers(key, "one value (OPTION,n)");
+      if (!is_whole(v) || v < 0 || v > 4) {
+        a.error(key.loc, fmt::format("OPTION must be 0, 1, 2, 3 or 4; got {}", num_text(v)));
+        continue;
+      }
+      w.option = {true, static_cast<int>(std::lround(v)), key.loc};
+    } else if (key.is("CUTANG")) {
+      if (twice(a, key, w.cutang) || !a.number(key, "the infeed angle in degrees", v)) continue;
+      a.no_more_numbers(key, "one value (CUTANG,angle)");
+      if (!std::isfinite(v) || v < -360 || v > 360) {
+        a.error(key.loc,
+                fmt::format("CUTANG must be between -360 and 360 degrees; got {}", num_text(v)));
+        continue;
+      }
+      w.cutang = {true, v, key.loc};
+    } else if (key.is("TLANGL")) {
+      if (twice(a, key, w.tlangl) || !a.number(key, "the tool nose angle in degrees", v)) continue;
+      a.no_more_numbers(key, "one value (TLANGL,angle)");
+      if (!std::isfinite(v) || v <= 0 || v >= 180) {
+        a.error(key.loc, fmt::format("TLANGL must be more than 0 and less than 180 degrees; got {}",
+                                     num_text(v)));
+        continue;
+      }
+      w.tlangl = {true, v, key.loc};
+    } else if (key.is("ATANGL")) {
+      if (twice(a, key, w.atangl) || !a.number(key, "the pull-out angle in degrees", v)) continue;
+      double h = 0;
+      if (a.peek_number()) h = a.take().number;
+      a.no_more_numbers(key, "ATANGL,angle[,height]");
+      if (!std::isfinite(v) || v < -80 || v > 80) {
+        a.error(key.loc,
+                fmt::format("ATANGL must be between -80 and 80 degrees; got {}", num_text(v)));
+        continue;
+      }
+      if (!std::isfinite(h) || h < 0) {
+        a.error(key.loc, fmt::format("ATANGL height must be 0 or more (0: the default "
+                                     "pitch/(2 tan 30)); got {}",
+                                     num_text(h)));
+        continue;
+      }
+      w.atangl.set = true;
+      w.atangl.loc = key.loc;
+      w.atangl.angle = v;
+      w.atangl.height = h;
+    } else if (key.is("CHAMFR")) {
+      if (twice(a, key, w.chamfr) || !a.number(key, "the chamfer length", v)) continue;
+      bool angle_given = false;
+      double beta = 45;
+      if (a.peek_number()) {
+        angle_given = true;
+        beta = a.take().number;
+      }
+      a.no_more_numbers(key, "CHAMFR,length[,angle]");
+      if (!std::isfinite(v)) {
+        a.error(key.loc, fmt::format("CHAMFR length must be a finite number; got {}", num_text(v)));
+        continue;
+      }
+      // CHAMFR,0 and CHAMFR,0,0 turn the chamfer off: the angle does not matter then.
+      if (v != 0 && angle_given && (!std::isfinite(beta) || beta < 10 || beta > 80)) {
+        a.error(key.loc, fmt::format("CHAMFR angle must be between 10 and 80 degrees; got {}",
+                                     num_text(beta)));
+        continue;
+      }
+      w.chamfr.set = true;
+      w.chamfr.loc = key.loc;
+      w.chamfr.length = v;
+      w.chamfr.angle_given = angle_given;
+      w.chamfr.angle = angle_given ? beta : 45;
+    } else if (key.is("RETURN")) {
+      if (twice(a, key, w.ret)) continue;
+      w.ret.set = true;
+      w.ret.loc = key.loc;
+      if (a.peek_number()) {
+        v = a.take().number;
+        a.no_more_numbers(key, "RETURN[,height]");
+        if (!std::isfinite(v) || v <= 0) {
+          a.error(key.loc, fmt::format("RETURN height must be positive; got {}", num_text(v)));
+          w.ret.set = false;
+          continue;
+        }
+        w.ret.height_given = true;
+        w.ret.height = v;
+      }
+    } else if (is_pitch_couplet_word(key)) {
+      pitch_couplet(a, key, cl_units, w.pitch, pitch_word);
+    } else {
+      a.error(key.loc, fmt::format("unknown thread parameter '{}'; valid words: {}", key.text,
+                                   kThreadWordList));
+      a.skip_numbers();
+    }
+  }
+  if (!a.ok()) return false;
+  out = std::move(w);
+  return true;
+}
+
+bool parse_pitch_words(const Statement& st, size_t first_arg, LengthUnit cl_units, PitchSpec& pitch,
+                       Diagnostics& diags) {
+  Args a(st, first_arg, diags);
+  PitchWords pw;
+  std::string pitch_word;
+  bool qualifiable = false;  // a leading value not yet qualified by TPI|IPR|MMPR|PERREV
+  double leading = 0;
+  while (!a.done()) {
+    if (a.peek_number()) {
+      const Arg& n = a.take();
+      if (pw.value_given) {
+        a.error(n.loc, fmt::format("unexpected number {}: the pitch is already given by {} at {}",
+                                   n.text, pitch_word, a.where(pw.value_loc, n.loc)));
+        a.skip_numbers();
+        continue;
+      }
+      if (!std::isfinite(n.number) || n.number <= 0) {
+        a.error(n.loc, fmt::format("the pitch value must be positive; got {}", num_text(n.number)));
+        a.skip_numbers();
+        continue;
+      }
+      leading = n.number;
+      set_pitch("", leading, cl_units, n.loc, pw);
+      pitch_word = fmt::format("the value {}", n.text);
+      qualifiable = true;
+      continue;
+    }
+    const Arg& key = a.take();
+    if (is_pitch_unit(key) && !a.peek_number()) {
+      // PITCH/v,TPI: qualifies the leading value.
+      if (!qualifiable) {
+        a.error(key.loc, fmt::format("expected {} after {}, found {}", unit_what(key.text),
+                                     key.text, a.found()));
+        continue;
+      }
+      const SourceLoc vloc = pw.value_loc;
+      set_pitch(key.text, leading, cl_units, vloc, pw);
+      pitch_word = fmt::format("{} {}", num_text(leading), key.text);
+      qualifiable = false;
+      continue;
+    }
+    qualifiable = false;
+    if (is_pitch_couplet_word(key)) {
+      pitch_couplet(a, key, cl_units, pw, pitch_word);
+    } else {
+      a.error(key.loc,
+              fmt::format("unknown pitch word '{}'; valid words: {}", key.text, kPitchWordList));
+      a.skip_numbers();
+    }
+  }
+  if (!a.ok()) return false;
+  if (st.major == "PITCH" && !pw.value_given) {
+    diags.error(st.loc, st.line_text(st.loc.line),
+                "PITCH needs a value: PITCH/v[,TPI|IPR|MMPR|PERREV][,MULTRD,n][,INCR|DECR,dv]");
+    return false;
+  }
+  pw.apply_to(pitch);
+  return true;
+}
+
+}  // namespace clpost
