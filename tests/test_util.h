@@ -23,6 +23,9 @@ std::string temp_dir();
 std::string quote(const std::string& s);
 
 inline std::string clpost_bin() { return CLPOST_BIN; }
+// rs274 crashes (SIGBUS) when two instances run at once, as ctest -j does: every call goes
+// through one lock.
+inline std::string rs274() { return "flock /tmp/clpost-rs274.lock rs274"; }
 inline std::string source_dir() { return CLPOST_SOURCE_DIR; }
 inline std::string realcl_dir() { return std::string(CLPOST_SOURCE_DIR) + "/../shared/realcl"; }
 

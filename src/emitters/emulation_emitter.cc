@@ -9,7 +9,6 @@ LathePoint lp(Vec2 v) { return LathePoint{v.x, v.z}; }
 }  // namespace
 
 bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
-  std::optional<int> last_start;
   for (size_t i = 0; i < plan.passes.size(); ++i) {
     const ThreadPass& p = plan.passes[i];
     std::string kind = p.kind == PassKind::kRough    ? "rough"
@@ -19,15 +18,16 @@ bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitC
                             ? fmt::format("pass {} start {} depth {:.4f} {}", p.n, p.start + 1, p.depth, kind)
                             : fmt::format("pass {} depth {:.4f} {}", p.n, p.depth, kind);
     prog.comment(label);
-    // To the approach point (parallel to the thread from the last clear position), then the
-    // infeed along CUTANG, fed or rapid as the CL had it.
-    if (plan.feed_approach) {
+    // To the approach point: from the initial point fed or rapid as the CL had it, later back
+    // parallel to the thread at rapid. Then the infeed along CUTANG, fed or rapid as the CL had it.
+    if (plan.feed_approach && i == 0)
       prog.linear(lp(p.approach));
-      prog.linear(lp(p.from));
-    } else {
+    else
       prog.rapid(lp(p.approach));
+    if (plan.feed_approach)
+      prog.linear(lp(p.from));
+    else
       prog.rapid(lp(p.from));
-    }
     std::optional<double> angle;
     if (plan.starts_by_angle && plan.pitch.starts > 1) angle = p.start_angle;
     prog.thread(lp(p.to), plan.lead, angle);
@@ -38,7 +38,6 @@ bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitC
         prog.thread(lp(p.pullout_end), plan.lead);
     }
     prog.rapid(lp(p.clear));
-    last_start = p.start;
   }
   prog.rapid(lp(plan.end_position));
   (void)ctx;

@@ -29,7 +29,7 @@ void Interpreter::thread_stmt(const Statement& st, size_t first) {
     seq_ = Seq::kNone;
     multi_.off_loc = st.loc;
     ThreadPlan plan;
-    if (!plan_multi_thread(multi_, planner_settings_, plan, diags_)) return;
+    if (multi_failed_ || !plan_multi_thread(multi_, planner_settings_, plan, diags_)) return;
     emit_thread(plan, multi_.on_lines);
     // The tool ends where the plan leaves it (clear, above the start).
     return;
@@ -44,9 +44,13 @@ void Interpreter::thread_stmt(const Statement& st, size_t first) {
   }
   if (a.is("ON") || (st.major == "OP" && (a.is("TURN") || a.is("FACE") || a.is("TAPER")))) {
     multi_ = MultiThreadInput{};
-    if (!parse_thread_words(st, first + 1, units_, multi_.words, diags_)) {
-      // Still enter the sequence so its GOTOs are not posted as ordinary moves.
+    if (st.major == "OP") {
+      multi_.on_word = fmt::format("OP/THREAD,{}", a.text);
+      multi_.off_word = "OP/THREAD,NOMORE";
     }
+    // On a bad word the sequence is still entered, so that its GOTOs are not posted as ordinary
+    // moves, but it is not planned (one error, not a cascade).
+    multi_failed_ = !parse_thread_words(st, first + 1, units_, multi_.words, diags_);
     multi_.on_lines = SavedLines::of(st);
     multi_.on_loc = st.loc;
     multi_.modal_pitch = pitch_;
