@@ -10,7 +10,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string bin() { return quote(clpost_bin()); }
+std::string bin() {
+  return quote(clpost_bin());
+}
 
 // Six good statements, then a bad number on line 7 (column 15).
 constexpr const char* kBadLine7 =
@@ -29,9 +31,10 @@ TEST(Cli, SyntaxErrorOnLine7ExitsOneAndWritesNothing) {
   RunResult r = run(bin() + " -o " + quote(dir + "/bad.nc") + " " + quote(dir + "/bad.cl"));
   EXPECT_EQ(r.exit_code, 1);
   // Column 11: G-O-T-O-/-1-0-,-0-, are columns 1..10, the number starts at 11.
-  EXPECT_EQ(r.err, dir + "/bad.cl:7:11: error: invalid number '-1.2.3'\n"
-                         "  GOTO/10,0,-1.2.3\n"
-                         "            ^\n");
+  EXPECT_EQ(r.err, dir +
+                       "/bad.cl:7:11: error: invalid number '-1.2.3'\n"
+                       "  GOTO/10,0,-1.2.3\n"
+                       "            ^\n");
   EXPECT_FALSE(file_exists(dir + "/bad.nc"));
   // Nothing else left behind either (no temporary files).
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
@@ -98,21 +101,29 @@ TEST(Cli, BrokenMachineFileExitsTwoWithItsLocation) {
   std::string dir = temp_dir();
   write_file(dir + "/m.yaml", "extends: iso-lathe\ndescription: test\nlimits: {max_rpm: fast}\n");
   fs::create_directories(dir + "/../posts");  // not there: the post is found in the data dirs
-  RunResult r = run(bin() + " -m " + quote(dir + "/m.yaml") + " " + quote(source_dir() + "/samples/pin-apt.apt"));
+  RunResult r = run(bin() + " -m " + quote(dir + "/m.yaml") + " " +
+                    quote(source_dir() + "/samples/pin-apt.apt"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, dir + "/m.yaml:3:19: error: 'limits.max_rpm' must be a number, not 'fast'\n"
-                         "  limits: {max_rpm: fast}\n"
-                         "                    ^\n");
+  EXPECT_EQ(r.err, dir +
+                       "/m.yaml:3:19: error: 'limits.max_rpm' must be a number, not 'fast'\n"
+                       "  limits: {max_rpm: fast}\n"
+                       "                    ^\n");
   fs::remove_all(dir);
 }
 
 TEST(Cli, SetOverridesTheMachine) {
-  RunResult r = run(bin() + " --set block_numbers.enabled=false " + quote(source_dir() + "/samples/pin-apt.apt"));
+  RunResult r = run(bin() + " --set block_numbers.enabled=false " +
+                    quote(source_dir() + "/samples/pin-apt.apt"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out.rfind("%\nO0001\nG18 G21 G40 G90\n(PIN-01 turned pin, 25 mm stock)\nT0303\n", 0), 0u) << r.out;
-  RunResult bad = run(bin() + " --set limits.max_rmp=1 " + quote(source_dir() + "/samples/pin-apt.apt"));
+  EXPECT_EQ(r.out.rfind("%\nO0001\nG18 G21 G40 G90\n(PIN-01 turned pin, 25 mm stock)\nT0303\n", 0),
+            0u)
+      << r.out;
+  RunResult bad =
+      run(bin() + " --set limits.max_rmp=1 " + quote(source_dir() + "/samples/pin-apt.apt"));
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.err, "--set limits.max_rmp=1: error: unknown key 'limits.max_rmp' (did you mean 'max_rpm'?)\n");
+  EXPECT_EQ(
+      bad.err,
+      "--set limits.max_rmp=1: error: unknown key 'limits.max_rmp' (did you mean 'max_rpm'?)\n");
 }
 
 TEST(Cli, UnknownStatementWarnsOrFailsWithStrict) {
@@ -120,28 +131,34 @@ TEST(Cli, UnknownStatementWarnsOrFailsWithStrict) {
   write_file(dir + "/u.cl", "UNITS/MM\nFEDRAT/0.1,MMPR\nFROB/1,2\nGOTO/1,0,1\nFINI\n");
   RunResult r = run(bin() + " " + quote(dir + "/u.cl"));
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.err, dir + "/u.cl:3:1: warning: unknown statement 'FROB' written as a comment\n"
-                         "  FROB/1,2\n"
-                         "  ^\n");
+  EXPECT_EQ(r.err, dir +
+                       "/u.cl:3:1: warning: unknown statement 'FROB' written as a comment\n"
+                       "  FROB/1,2\n"
+                       "  ^\n");
   EXPECT_NE(r.out.find("(FROB/1,2)"), std::string::npos);
   RunResult s = run(bin() + " --strict " + quote(dir + "/u.cl"));
   EXPECT_EQ(s.exit_code, 1);
-  EXPECT_EQ(s.err, dir + "/u.cl:3:1: error: unknown statement 'FROB' (--strict)\n"
-                         "  FROB/1,2\n"
-                         "  ^\n");
+  EXPECT_EQ(s.err, dir +
+                       "/u.cl:3:1: error: unknown statement 'FROB' (--strict)\n"
+                       "  FROB/1,2\n"
+                       "  ^\n");
   fs::remove_all(dir);
 }
 
 TEST(Cli, CheckValidatesWithoutWriting) {
   std::string dir = temp_dir();
   write_file(dir + "/bad.cl", kBadLine7);
-  RunResult ok = run("cd " + quote(dir) + " && " + bin() + " check " + quote(source_dir() + "/samples/shaft-nx.cls"));
+  RunResult ok = run("cd " + quote(dir) + " && " + bin() + " check " +
+                     quote(source_dir() + "/samples/shaft-nx.cls"));
   EXPECT_EQ(ok.exit_code, 0);
   EXPECT_EQ(ok.out, "");
-  RunResult bad = run(bin() + " check " + quote(dir + "/bad.cl") + " " + quote(source_dir() + "/samples/pin-apt.apt"));
+  RunResult bad = run(bin() + " check " + quote(dir + "/bad.cl") + " " +
+                      quote(source_dir() + "/samples/pin-apt.apt"));
   EXPECT_EQ(bad.exit_code, 1);
-  EXPECT_NE(bad.err.find(dir + "/bad.cl: failed (1 errors, 0 warnings"), std::string::npos) << bad.err;
-  EXPECT_NE(bad.err.find("samples/pin-apt.apt: ok (0 errors, 0 warnings"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find(dir + "/bad.cl: failed (1 errors, 0 warnings"), std::string::npos)
+      << bad.err;
+  EXPECT_NE(bad.err.find("samples/pin-apt.apt: ok (0 errors, 0 warnings"), std::string::npos)
+      << bad.err;
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   fs::remove_all(dir);
 }
@@ -151,7 +168,8 @@ TEST(Cli, MissingFiniIsAWarningAndTheProgramIsClosed) {
   write_file(dir + "/nofini.cl", "UNITS/MM\nRAPID\nGOTO/10,0,2\n");
   RunResult r = run(bin() + " --set block_numbers.enabled=false " + quote(dir + "/nofini.cl"));
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.err, dir + "/nofini.cl:3: warning: the file ends without FINI: the program end was added\n");
+  EXPECT_EQ(r.err,
+            dir + "/nofini.cl:3: warning: the file ends without FINI: the program end was added\n");
   EXPECT_EQ(r.out, "%\nO0001\nG18 G21 G40 G90\nG0 X20. Z2.\nM30\n%\n");
   fs::remove_all(dir);
 }

@@ -38,7 +38,8 @@ TEST(Golden, EverySamplePostsAsReviewed) {
       fs::path golden = cl.parent_path() / (cl.stem().string() + "." + m.name + m.ext);
       ASSERT_TRUE(fs::exists(golden)) << "missing golden " << golden;
       std::string out = dir + "/" + cl.stem().string() + m.ext;
-      RunResult r = run(quote(clpost_bin()) + " -m " + m.name + " -o " + quote(out) + " " + quote(cl.string()));
+      RunResult r = run(quote(clpost_bin()) + " -m " + m.name + " -o " + quote(out) + " " +
+                        quote(cl.string()));
       EXPECT_EQ(r.exit_code, 0) << cl << " on " << m.name << "\n" << r.err;
       EXPECT_EQ(read_file(out), read_file(golden.string())) << cl << " on " << m.name;
       ++compared;

@@ -29,15 +29,17 @@ TEST(RealCl, EveryFileIsReadWithoutCrashAndDiagnosed) {
   std::regex located("^.+:[0-9]+(:[0-9]+)?: error: .+");
   for (const std::string& f : files) {
     RunResult r = run(quote(clpost_bin()) + " check " + quote(f));
-    ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << f << " exit " << r.exit_code << "\n" << r.err;
+    ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << f << " exit " << r.exit_code << "\n"
+                                                      << r.err;
     if (r.exit_code == 1) {
       // The first error is located: file:line:col: error: ...
       std::string first_error;
       size_t p = r.err.find(": error: ");
       ASSERT_NE(p, std::string::npos) << f << "\n" << r.err;
       size_t start = r.err.rfind('\n', p);
-      first_error = r.err.substr(start == std::string::npos ? 0 : start + 1,
-                                 r.err.find('\n', p) - (start == std::string::npos ? 0 : start + 1));
+      first_error =
+          r.err.substr(start == std::string::npos ? 0 : start + 1,
+                       r.err.find('\n', p) - (start == std::string::npos ? 0 : start + 1));
       EXPECT_TRUE(std::regex_match(first_error, located)) << first_error;
     }
   }
@@ -45,7 +47,8 @@ TEST(RealCl, EveryFileIsReadWithoutCrashAndDiagnosed) {
 
 TEST(RealCl, LatheProgramsPostCleanly) {
   if (realcl_files().empty()) GTEST_SKIP() << "../shared/realcl not found: skipped";
-  for (const char* name : {"nist_proe/V20_basic_turning_cycle.ncl", "nist_proe/V20_cl_data_unified-iso.ncl"}) {
+  for (const char* name :
+       {"nist_proe/V20_basic_turning_cycle.ncl", "nist_proe/V20_cl_data_unified-iso.ncl"}) {
     std::string f = realcl_dir() + "/" + name;
     RunResult r = run(quote(clpost_bin()) + " -m linuxcnc-lathe " + quote(f));
     EXPECT_EQ(r.exit_code, 0) << f << "\n" << r.err;

@@ -20,7 +20,9 @@ struct XZ {
   double x, z;
 };
 
-bool have_rs274() { return run("command -v rs274").exit_code == 0; }
+bool have_rs274() {
+  return run("command -v rs274").exit_code == 0;
+}
 
 // Motion end points from `rs274 -g` canonical output.
 std::vector<XZ> canon_motions(const std::string& canon) {
@@ -67,16 +69,19 @@ std::vector<XZ> cl_points(const std::string& path) {
 }
 
 TEST(Rs274, SamplesRunAndFollowTheClPoints) {
-  if (!have_rs274()) GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   std::string dir = temp_dir();
   int checked = 0;
   for (const auto& e : fs::directory_iterator(source_dir() + "/samples")) {
     std::string ext = e.path().extension().string();
     if (ext != ".cls" && ext != ".ncl" && ext != ".apt" && ext != ".cl") continue;
     std::string ngc = dir + "/" + e.path().stem().string() + ".ngc";
-    RunResult post = run(quote(clpost_bin()) + " -m linuxcnc-lathe -o " + quote(ngc) + " " + quote(e.path().string()));
+    RunResult post = run(quote(clpost_bin()) + " -m linuxcnc-lathe -o " + quote(ngc) + " " +
+                         quote(e.path().string()));
     ASSERT_EQ(post.exit_code, 0) << post.err;
-    RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -t " + quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+    RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -t " +
+                      quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
     EXPECT_EQ(r.exit_code, 0) << e.path() << ": rs274 says\n" << r.err << r.out;
     // Multi-pass threads add the planned passes between the GOTOs: thread_matrix_test.cc checks
     // those against the plan. Here they only have to run.
@@ -101,7 +106,8 @@ TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   // From rs274 -g on "G7 G18 G21 G90 / G0 X20 Z5 / G2 X34 Z-22 I2 K0": radii, Z first on arcs.
   std::vector<XZ> m = canon_motions(
       "   12 N..... STRAIGHT_TRAVERSE(10.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
-      "   33 N..... ARC_FEED(-22.0000, 17.0000, -20.0000, 17.0000, -1, 0.0000, 0.0000, 0.0000, 0.0000)\n");
+      "   33 N..... ARC_FEED(-22.0000, 17.0000, -20.0000, 17.0000, -1, 0.0000, 0.0000, 0.0000, "
+      "0.0000)\n");
   ASSERT_EQ(m.size(), 2u);
   EXPECT_DOUBLE_EQ(m[0].x, 10);
   EXPECT_DOUBLE_EQ(m[0].z, 5);

@@ -22,7 +22,9 @@ void write_file(const std::string& path, const std::string& text) {
   out << text;
 }
 
-bool file_exists(const std::string& path) { return std::filesystem::exists(path); }
+bool file_exists(const std::string& path) {
+  return std::filesystem::exists(path);
+}
 
 std::string temp_dir() {
   std::string templ = (std::filesystem::temp_directory_path() / "clpost-test-XXXXXX").string();
@@ -42,8 +44,10 @@ RunResult run(const std::string& cmd, const std::string& stdin_file) {
   std::string full = "(" + cmd + ") <" + quote(stdin_file) + " >" + quote(out) + " 2>" + quote(err);
   int status = std::system(full.c_str());
   RunResult r;
-  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-  else if (WIFSIGNALED(status)) r.exit_code = 128 + WTERMSIG(status);
+  if (WIFEXITED(status))
+    r.exit_code = WEXITSTATUS(status);
+  else if (WIFSIGNALED(status))
+    r.exit_code = 128 + WTERMSIG(status);
   r.out = read_file(out);
   r.err = read_file(err);
   std::filesystem::remove_all(dir);

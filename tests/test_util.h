@@ -22,11 +22,19 @@ std::string temp_dir();
 // Single-quoted for the shell.
 std::string quote(const std::string& s);
 
-inline std::string clpost_bin() { return CLPOST_BIN; }
+inline std::string clpost_bin() {
+  return CLPOST_BIN;
+}
 // rs274 crashes (SIGBUS) when two instances run at once, as ctest -j does: every call goes
 // through one lock.
-inline std::string rs274() { return "flock /tmp/clpost-rs274.lock rs274"; }
-inline std::string source_dir() { return CLPOST_SOURCE_DIR; }
-inline std::string realcl_dir() { return std::string(CLPOST_SOURCE_DIR) + "/../shared/realcl"; }
+inline std::string rs274() {
+  return "flock /tmp/clpost-rs274.lock rs274";
+}
+inline std::string source_dir() {
+  return CLPOST_SOURCE_DIR;
+}
+inline std::string realcl_dir() {
+  return std::string(CLPOST_SOURCE_DIR) + "/../shared/realcl";
+}
 
 }  // namespace clpost::test

@@ -135,7 +135,8 @@ int run_cli(int argc, char** argv) {
     if (json && plan_inputs.size() > 1) out += "[\n";
     for (size_t i = 0; i < plan_inputs.size(); ++i) {
       std::vector<ThreadPlan> plans;
-      PostRequest req{plan_inputs[i], "", &m, PostOptions{}, [&](const ThreadPlan& p) { plans.push_back(p); }};
+      PostRequest req{plan_inputs[i], "", &m, PostOptions{},
+                      [&](const ThreadPlan& p) { plans.push_back(p); }};
       PostOutcome r = post_file(req);
       print_err(r.diagnostics);
       if (!r.ok) {

@@ -20,7 +20,9 @@ class NullSink : public Sink {
 };
 }  // namespace
 
-std::string display_name(const std::string& input) { return input == "-" ? "<stdin>" : input; }
+std::string display_name(const std::string& input) {
+  return input == "-" ? "<stdin>" : input;
+}
 
 PostOutcome post_file(const PostRequest& req) {
   PostOutcome out;

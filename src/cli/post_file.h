@@ -10,18 +10,18 @@
 namespace clpost {
 
 struct PostRequest {
-  std::string input;         // path, or "-" for standard input
-  std::string output;        // path, "-" for standard output, empty: write nothing (check, plan)
+  std::string input;   // path, or "-" for standard input
+  std::string output;  // path, "-" for standard output, empty: write nothing (check, plan)
   const Machine* machine = nullptr;
   PostOptions options;
   std::function<void(const ThreadPlan&)> on_thread;  // every thread plan
 };
 
 struct PostOutcome {
-  bool ok = false;           // no errors (output written when one was asked for)
+  bool ok = false;  // no errors (output written when one was asked for)
   size_t errors = 0;
   size_t warnings = 0;
-  std::string diagnostics;   // rendered, ready for stderr
+  std::string diagnostics;  // rendered, ready for stderr
   PostStats stats;
   LengthUnit units = LengthUnit::kMm;
   size_t bytes_in = 0;

@@ -5,7 +5,9 @@
 namespace clpost {
 
 namespace {
-LathePoint lp(Vec2 v) { return LathePoint{v.x, v.z}; }
+LathePoint lp(Vec2 v) {
+  return LathePoint{v.x, v.z};
+}
 }  // namespace
 
 bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
@@ -14,9 +16,10 @@ bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitC
     std::string kind = p.kind == PassKind::kRough    ? "rough"
                        : p.kind == PassKind::kFinish ? "finish"
                                                      : "spring";
-    std::string label = plan.pitch.starts > 1
-                            ? fmt::format("pass {} start {} depth {:.4f} {}", p.n, p.start + 1, p.depth, kind)
-                            : fmt::format("pass {} depth {:.4f} {}", p.n, p.depth, kind);
+    std::string label =
+        plan.pitch.starts > 1
+            ? fmt::format("pass {} start {} depth {:.4f} {}", p.n, p.start + 1, p.depth, kind)
+            : fmt::format("pass {} depth {:.4f} {}", p.n, p.depth, kind);
     prog.comment(label);
     // To the approach point: from the initial point fed or rapid as the CL had it, later back
     // parallel to the thread at rapid. Then the infeed along CUTANG, fed or rapid as the CL had it.

@@ -99,16 +99,21 @@ void Interpreter::statement(const Statement& st) {
   }
   // Thread sequences accept only motion and a few modal statements inside.
   if (seq_ == Seq::kMulti || seq_ == Seq::kSingle) {
-    bool closing = (w == "THREAD" && !st.args.empty() && st.args[0].is("OFF")) ||
-                   (w == "OP" && st.args.size() >= 2 && st.args[0].is("THREAD") && st.args[1].is("NOMORE"));
+    bool closing =
+        (w == "THREAD" && !st.args.empty() && st.args[0].is("OFF")) ||
+        (w == "OP" && st.args.size() >= 2 && st.args[0].is("THREAD") && st.args[1].is("NOMORE"));
     if (w != "GOTO" && w != "RAPID" && w != "FEDRAT" && !closing) {
       if (seq_ == Seq::kSingle) {
-        error(st, st.loc, fmt::format("expected the second GOTO of the single-pass thread started at line {}, found {}",
-                                      seq_loc_.line, w));
+        error(st, st.loc,
+              fmt::format(
+                  "expected the second GOTO of the single-pass thread started at line {}, found {}",
+                  seq_loc_.line, w));
         seq_ = Seq::kNone;
       } else {
-        error(st, st.loc, fmt::format("{} is not allowed inside THREAD/ON (line {}) ... THREAD/OFF; "
-                                      "expected GOTO or THREAD/OFF", w, seq_loc_.line));
+        error(st, st.loc,
+              fmt::format("{} is not allowed inside THREAD/ON (line {}) ... THREAD/OFF; "
+                          "expected GOTO or THREAD/OFF",
+                          w, seq_loc_.line));
         return;
       }
     }
@@ -171,15 +176,38 @@ void Interpreter::statement(const Statement& st) {
     return;
   }
   // Records that carry nothing a lathe program needs: understood and skipped, noted once.
-  static constexpr std::string_view kSkipped[] = {
-      "TLDATA", "MSYS", "PAINT", "END-OF-PATH", "MACHIN", "CUTTER", "SELECT", "TRNTYP", "CSYS",
-      "CNTRL", "SETUP", "CSI_SET_FLUTE_LENGTH", "CSI_SET_EXTENSION_LENGTH", "MFGNO", "FEATNO",
-      "CLEARP", "TOLER", "INTOL", "OUTTOL", "DISPLY", "AUTOPS", "PLABEL", "CALSUB", "ORIGIN"};
+  static constexpr std::string_view kSkipped[] = {"TLDATA",
+                                                  "MSYS",
+                                                  "PAINT",
+                                                  "END-OF-PATH",
+                                                  "MACHIN",
+                                                  "CUTTER",
+                                                  "SELECT",
+                                                  "TRNTYP",
+                                                  "CSYS",
+                                                  "CNTRL",
+                                                  "SETUP",
+                                                  "CSI_SET_FLUTE_LENGTH",
+                                                  "CSI_SET_EXTENSION_LENGTH",
+                                                  "MFGNO",
+                                                  "FEATNO",
+                                                  "CLEARP",
+                                                  "TOLER",
+                                                  "INTOL",
+                                                  "OUTTOL",
+                                                  "DISPLY",
+                                                  "AUTOPS",
+                                                  "PLABEL",
+                                                  "CALSUB",
+                                                  "ORIGIN"};
   for (std::string_view s : kSkipped) {
     if (w == s) return skipped(st, "nothing a lathe program needs");
   }
   if (w == "NURBS" || w == "KNOT") {
-    error(st, st.loc, fmt::format("{}/ spline motion cannot be cut on a lathe post; output it as GOTO points from the CAM system", w));
+    error(st, st.loc,
+          fmt::format("{}/ spline motion cannot be cut on a lathe post; output it as GOTO points "
+                      "from the CAM system",
+                      w));
     return;
   }
   unknown(st);
@@ -193,7 +221,8 @@ void Interpreter::unknown(const Statement& st) {
   std::string text(st.major);
   if (st.form == Statement::Form::kRecord) {
     text += '/';
-    for (size_t i = 0; i < st.args.size(); ++i) text += (i ? "," : "") + std::string(st.args[i].text);
+    for (size_t i = 0; i < st.args.size(); ++i)
+      text += (i ? "," : "") + std::string(st.args[i].text);
   } else if (st.form == Statement::Form::kText) {
     text += ' ' + std::string(st.text);
   }
@@ -232,7 +261,8 @@ void Interpreter::units_stmt(const Statement& st) {
     return;
   }
   if (started_ && u != units_) {
-    if (pos_) warning(st, st.loc, "units change after motion: later coordinates are read in the new units");
+    if (pos_)
+      warning(st, st.loc, "units change after motion: later coordinates are read in the new units");
     prog_.writer().code(m_.code(u == LengthUnit::kInch ? "inch" : "metric")).end_block();
   }
   units_ = u;
@@ -249,7 +279,8 @@ void Interpreter::fedrat_stmt(const Statement& st) {
   for (const Arg& a : st.args) {
     if (a.is_number()) {
       if (have_value) {
-        error(st, a.loc, fmt::format("FEDRAT/ takes one feed value; found a second number '{}'", a.text));
+        error(st, a.loc,
+              fmt::format("FEDRAT/ takes one feed value; found a second number '{}'", a.text));
         return;
       }
       value = a.number;
@@ -267,8 +298,9 @@ void Interpreter::fedrat_stmt(const Statement& st) {
     } else if (a.is("PERREV") || a.is("FPR")) {
       mode = FeedMode::kPerRev;
     } else {
-      error(st, a.loc, fmt::format("unknown FEDRAT word '{}': expected a feed and one of {}", a.text,
-                                   upper_list({"MMPM", "MMPR", "IPM", "IPR", "PERMIN", "PERREV"})));
+      error(st, a.loc,
+            fmt::format("unknown FEDRAT word '{}': expected a feed and one of {}", a.text,
+                        upper_list({"MMPM", "MMPR", "IPM", "IPR", "PERMIN", "PERREV"})));
       return;
     }
   }
@@ -287,7 +319,8 @@ void Interpreter::fedrat_stmt(const Statement& st) {
   feed_mode_ = mode;
   feed_given_ = true;
   if (m_.max_feed > 0 && mode == FeedMode::kPerMinute && feed_ > m_.max_feed) {
-    warning(st, st.loc, fmt::format("feed {} exceeds the machine's maximum feed {}", feed_, m_.max_feed));
+    warning(st, st.loc,
+            fmt::format("feed {} exceeds the machine's maximum feed {}", feed_, m_.max_feed));
   }
   prog_.set_feed(feed_, feed_mode_);
 }
@@ -301,7 +334,8 @@ void Interpreter::spindl_stmt(const Statement& st) {
     const Arg& a = st.args[i];
     if (a.is_number()) {
       if (value) {
-        error(st, a.loc, fmt::format("SPINDL/ takes one speed; found a second number '{}'", a.text));
+        error(st, a.loc,
+              fmt::format("SPINDL/ takes one speed; found a second number '{}'", a.text));
         return;
       }
       value = a.number, value_loc = a.loc;
@@ -310,7 +344,9 @@ void Interpreter::spindl_stmt(const Statement& st) {
     } else if (a.is("SMM") || a.is("SFM")) {
       css = true;
       // SMM: metres per minute, SFM: feet per minute; converted to the output unit's speed.
-      if (a.is("SMM") && units_ == LengthUnit::kInch) note_once(st, "SMM-inch", "SMM in an inch program: written as metres per minute in the G96 word");
+      if (a.is("SMM") && units_ == LengthUnit::kInch)
+        note_once(st, "SMM-inch",
+                  "SMM in an inch program: written as metres per minute in the G96 word");
     } else if (a.is("CLW")) {
       dir = SpindleDir::kCw;
     } else if (a.is("CCLW")) {
@@ -328,8 +364,9 @@ void Interpreter::spindl_stmt(const Statement& st) {
     } else if (a.is("RANGE")) {
       if (i + 1 < st.args.size() && st.args[i + 1].is_number()) ++i;
     } else {
-      error(st, a.loc, fmt::format("unknown SPINDL word '{}': expected a speed and {}", a.text,
-                                   upper_list({"RPM", "SMM", "SFM", "CLW", "CCLW", "MAXRPM", "OFF", "ON"})));
+      error(st, a.loc,
+            fmt::format("unknown SPINDL word '{}': expected a speed and {}", a.text,
+                        upper_list({"RPM", "SMM", "SFM", "CLW", "CCLW", "MAXRPM", "OFF", "ON"})));
       return;
     }
   }
@@ -340,7 +377,8 @@ void Interpreter::spindl_stmt(const Statement& st) {
     return;
   }
   if (!value) {
-    if (on && spindle_value_ > 0) value = spindle_value_, css = css_;
+    if (on && spindle_value_ > 0)
+      value = spindle_value_, css = css_;
     else {
       error(st, st.loc, "SPINDL/ needs a speed (or SPINDL/ON after an earlier speed)");
       return;
@@ -352,7 +390,9 @@ void Interpreter::spindl_stmt(const Statement& st) {
   }
   if (dir) spindle_dir_ = *dir;
   if (!css && m_.max_rpm > 0 && *value > m_.max_rpm) {
-    error(st, value_loc, fmt::format("spindle speed {} rpm exceeds the machine's maximum {} rpm", *value, m_.max_rpm));
+    error(st, value_loc,
+          fmt::format("spindle speed {} rpm exceeds the machine's maximum {} rpm", *value,
+                      m_.max_rpm));
     return;
   }
   css_ = css;
@@ -361,7 +401,9 @@ void Interpreter::spindl_stmt(const Statement& st) {
   if (css) {
     double limit = max_rpm.value_or(m_.max_rpm);
     if (!(limit > 0)) {
-      error(st, st.loc, "constant surface speed needs a speed limit: add MAXRPM,n or set limits.max_rpm in the machine file");
+      error(st, st.loc,
+            "constant surface speed needs a speed limit: add MAXRPM,n or set limits.max_rpm in the "
+            "machine file");
       return;
     }
     if (m_.max_rpm > 0 && limit > m_.max_rpm) limit = m_.max_rpm;
@@ -376,12 +418,14 @@ void Interpreter::loadtl_stmt(const Statement& st, size_t first) {
   double tool = 0;
   if (!number_arg(st, first, "a tool number", tool)) return;
   if (tool < 0 || tool != std::floor(tool) || tool > 9999) {
-    error(st, st.args[first].loc, fmt::format("tool number must be a whole number 0..9999, got {}", st.args[first].text));
+    error(st, st.args[first].loc,
+          fmt::format("tool number must be a whole number 0..9999, got {}", st.args[first].text));
     return;
   }
   int offset = static_cast<int>(tool);
   for (size_t i = first + 1; i + 1 < st.args.size(); ++i) {
-    if ((st.args[i].is("ADJUST") || st.args[i].is("OSETNO") || st.args[i].is("OFFSET")) && st.args[i + 1].is_number())
+    if ((st.args[i].is("ADJUST") || st.args[i].is("OSETNO") || st.args[i].is("OFFSET")) &&
+        st.args[i + 1].is_number())
       offset = static_cast<int>(st.args[i + 1].number);
   }
   ensure_started();
@@ -391,18 +435,26 @@ void Interpreter::loadtl_stmt(const Statement& st, size_t first) {
 
 void Interpreter::coolnt_stmt(const Statement& st) {
   if (st.args.empty() || !st.args[0].is_word()) {
-    error(st, st.args.empty() ? st.loc : st.args[0].loc, "expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF");
+    error(st, st.args.empty() ? st.loc : st.args[0].loc,
+          "expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF");
     return;
   }
   const Arg& a = st.args[0];
   Coolant c;
-  if (a.is("ON") || a.is("FLOOD")) c = Coolant::kFlood;
-  else if (a.is("MIST")) c = Coolant::kMist;
-  else if (a.is("THRU") || a.is("TOOL")) c = Coolant::kThrough;
-  else if (a.is("AIR")) c = Coolant::kAir;
-  else if (a.is("OFF")) c = Coolant::kOff;
+  if (a.is("ON") || a.is("FLOOD"))
+    c = Coolant::kFlood;
+  else if (a.is("MIST"))
+    c = Coolant::kMist;
+  else if (a.is("THRU") || a.is("TOOL"))
+    c = Coolant::kThrough;
+  else if (a.is("AIR"))
+    c = Coolant::kAir;
+  else if (a.is("OFF"))
+    c = Coolant::kOff;
   else {
-    error(st, a.loc, fmt::format("unknown COOLNT word '{}': expected ON, FLOOD, MIST, THRU, AIR or OFF", a.text));
+    error(st, a.loc,
+          fmt::format("unknown COOLNT word '{}': expected ON, FLOOD, MIST, THRU, AIR or OFF",
+                      a.text));
     return;
   }
   ensure_started();
@@ -416,9 +468,12 @@ void Interpreter::cutcom_stmt(const Statement& st) {
   }
   const Arg& a = st.args[0];
   CutterComp c;
-  if (a.is("LEFT")) c = CutterComp::kLeft;
-  else if (a.is("RIGHT")) c = CutterComp::kRight;
-  else if (a.is("OFF")) c = CutterComp::kOff;
+  if (a.is("LEFT"))
+    c = CutterComp::kLeft;
+  else if (a.is("RIGHT"))
+    c = CutterComp::kRight;
+  else if (a.is("OFF"))
+    c = CutterComp::kOff;
   else {
     error(st, a.loc, fmt::format("unknown CUTCOM word '{}': expected LEFT, RIGHT or OFF", a.text));
     return;
@@ -445,9 +500,10 @@ void Interpreter::cycle_stmt(const Statement& st) {
   }
   in_cycle_ = true;  // its hole positions are not posted as plain moves
   std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
-  error(st, st.loc, fmt::format("CYCLE/{} is not supported on machine '{}': its holes would be lost; "
-                                "post the drilling with a milling post or output it as motion",
-                                kind, m_.name));
+  error(st, st.loc,
+        fmt::format("CYCLE/{} is not supported on machine '{}': its holes would be lost; "
+                    "post the drilling with a milling post or output it as motion",
+                    kind, m_.name));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -523,12 +579,15 @@ void Interpreter::circle_stmt(const Statement& st) {
     return;
   c.loc = st.loc;
   // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
-  ClAxis third = static_cast<ClAxis>(3 - static_cast<int>(m_.cl_radial) - static_cast<int>(m_.cl_axial));
+  ClAxis third =
+      static_cast<ClAxis>(3 - static_cast<int>(m_.cl_radial) - static_cast<int>(m_.cl_axial));
   double ax[3] = {c.ax, c.ay, c.az};
   double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
   if (!(len > 0) || std::abs(std::abs(ax[static_cast<int>(third)] / len) - 1) > 1e-6) {
-    error(st, st.loc, fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot be cut on a lathe",
-                                  c.ax, c.ay, c.az));
+    error(st, st.loc,
+          fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot "
+                      "be cut on a lathe",
+                      c.ax, c.ay, c.az));
     return;
   }
   circle_ = c;
@@ -536,13 +595,15 @@ void Interpreter::circle_stmt(const Statement& st) {
 
 void Interpreter::move_to(const Statement& st, Point3 p) {
   // The lathe plane is spanned by the radial and axial CL axes; the third must stay at 0.
-  ClAxis third = static_cast<ClAxis>(3 - static_cast<int>(m_.cl_radial) - static_cast<int>(m_.cl_axial));
+  ClAxis third =
+      static_cast<ClAxis>(3 - static_cast<int>(m_.cl_radial) - static_cast<int>(m_.cl_axial));
   double off = axis_value(p.x, p.y, p.z, third);
   if (std::abs(off) > 1e-6) {
     if (y_warnings_++ == 0)
-      warning(st, st.loc, fmt::format("{} = {} but a lathe has no such axis: ignored (the first of "
-                                      "such points; is this a milling program?)",
-                                      "XYZ"[static_cast<int>(third)], off));
+      warning(st, st.loc,
+              fmt::format("{} = {} but a lathe has no such axis: ignored (the first of "
+                          "such points; is this a milling program?)",
+                          "XYZ"[static_cast<int>(third)], off));
   }
   ensure_started();
   ++stats_.motions;
@@ -551,7 +612,8 @@ void Interpreter::move_to(const Statement& st, Point3 p) {
     Circle c = *circle_;
     circle_.reset();
     double ax[3] = {c.ax, c.ay, c.az};
-    double normal = ax[static_cast<int>(third)] / std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
+    double normal =
+        ax[static_cast<int>(third)] / std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
     if (!pos_) {
       error(st, st.loc, "an arc needs a start point: no GOTO or FROM before CIRCLE/");
     } else {
@@ -561,8 +623,10 @@ void Interpreter::move_to(const Statement& st, Point3 p) {
       double r1 = std::hypot(target.r - center.r, target.z - center.z);
       double tol = std::max(1e-3, 1e-4 * std::max(r0, r1));
       if (std::abs(r0 - r1) > tol) {
-        error(st, st.loc, fmt::format("arc end point is not on the circle of line {}: distance from the centre {:.6g} at the start, {:.6g} at the end",
-                                      c.loc.line, r0, r1));
+        error(st, st.loc,
+              fmt::format("arc end point is not on the circle of line {}: distance from the centre "
+                          "{:.6g} at the start, {:.6g} at the end",
+                          c.loc.line, r0, r1));
       } else {
         // Positive rotation about the axis: G3 when it turns axial toward radial (axis along
         // axial x radial), as ISO G18 defines it.
@@ -594,7 +658,8 @@ void Interpreter::move_to(const Statement& st, Point3 p) {
 
 void Interpreter::end_of_input(uint32_t last_line) {
   if (ended_) return;
-  diags_.warning(SourceLoc{last_line, 0}, {}, "the file ends without FINI: the program end was added");
+  diags_.warning(SourceLoc{last_line, 0}, {},
+                 "the file ends without FINI: the program end was added");
   finish(last_line);
 }
 

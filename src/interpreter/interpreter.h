@@ -136,7 +136,7 @@ class Interpreter {
   PlannerSettings planner_settings_;
   bool couple_started_ = false;
   bool multi_failed_ = false;  // THREAD/ON had an error: its sequence is read but not planned
-  bool forced_rpm_ = false;  // CSS turned into G97 for the thread in progress
+  bool forced_rpm_ = false;    // CSS turned into G97 for the thread in progress
   double thread_rpm_ = 0;
   static constexpr size_t kMaxKeptPath = 10000;  // coupled moves kept for `clpost plan`
 };

@@ -57,7 +57,8 @@ TEST(Interpreter, InchFeedInAMetricProgramIsConverted) {
 }
 
 TEST(Interpreter, RapidIsOneShot) {
-  Posted p = post("FEDRAT/100,MMPM\nRAPID\nGOTO/10,0,5\nGOTO/10,0,0\nRAPID/\nGOTO/12,0,0\nFINI\n", generic());
+  Posted p = post("FEDRAT/100,MMPM\nRAPID\nGOTO/10,0,5\nGOTO/10,0,0\nRAPID/\nGOTO/12,0,0\nFINI\n",
+                  generic());
   EXPECT_EQ(p.nc, std::string(kHeader) + "G0 X20. Z5.\nG1 Z0. G94 F100.\nG0 X24.\nM30\n%\n");
 }
 
@@ -75,56 +76,68 @@ TEST(Interpreter, ConstantSurfaceSpeedUsesTheLimit) {
 TEST(Interpreter, SpindleOverTheMachineLimitIsAnError) {
   Posted p = post("SPINDL/4500,RPM,CLW\nFINI\n", generic());
   EXPECT_EQ(p.errors, 1u);
-  EXPECT_EQ(p.diags, "t.cl:1:8: error: spindle speed 4500 rpm exceeds the machine's maximum 4000 rpm\n"
-                     "  SPINDL/4500,RPM,CLW\n"
-                     "         ^\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:8: error: spindle speed 4500 rpm exceeds the machine's maximum 4000 rpm\n"
+            "  SPINDL/4500,RPM,CLW\n"
+            "         ^\n");
 }
 
 TEST(Interpreter, GotoArgumentCount) {
   Posted p = post("RAPID\nGOTO/1,2,3,4\nFINI\n", generic());
-  EXPECT_EQ(p.diags, "t.cl:2:12: error: GOTO/ takes x,y[,z[,i,j,k]]: 2, 3 or 6 numbers, found 4\n"
-                     "  GOTO/1,2,3,4\n"
-                     "             ^\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:2:12: error: GOTO/ takes x,y[,z[,i,j,k]]: 2, 3 or 6 numbers, found 4\n"
+            "  GOTO/1,2,3,4\n"
+            "             ^\n");
   Posted q = post("RAPID\nGOTO/1,0,CLW\nFINI\n", generic());
-  EXPECT_EQ(q.diags, "t.cl:2:10: error: expected Z but found 'CLW'\n"
-                     "  GOTO/1,0,CLW\n"
-                     "           ^\n");
+  EXPECT_EQ(q.diags,
+            "t.cl:2:10: error: expected Z but found 'CLW'\n"
+            "  GOTO/1,0,CLW\n"
+            "           ^\n");
 }
 
 TEST(Interpreter, FeedMoveWithoutFeedIsAnError) {
   Posted p = post("GOTO/1,0,3\nFINI\n", generic());
-  EXPECT_EQ(p.diags, "t.cl:1:1: error: feed move before any FEDRAT/: the feed is unknown\n"
-                     "  GOTO/1,0,3\n"
-                     "  ^\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: error: feed move before any FEDRAT/: the feed is unknown\n"
+            "  GOTO/1,0,3\n"
+            "  ^\n");
 }
 
 TEST(Interpreter, YOnALatheWarnsOnce) {
   Posted p = post("RAPID\nGOTO/1,2,3\nRAPID\nGOTO/1,5,3\nFINI\n", generic());
   EXPECT_EQ(p.errors, 0u);
-  EXPECT_EQ(p.diags, "t.cl:2:1: warning: Y = 2 but a lathe has no such axis: ignored (the first of such "
-                     "points; is this a milling program?)\n"
-                     "  GOTO/1,2,3\n"
-                     "  ^\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:2:1: warning: Y = 2 but a lathe has no such axis: ignored (the first of such "
+            "points; is this a milling program?)\n"
+            "  GOTO/1,2,3\n"
+            "  ^\n");
 }
 
 TEST(Interpreter, ArcDirectionAndCentre) {
   // Fillet R2 from (r15, z-20) to (r17, z-22) about (r17, z-20), CL axis -Y: clockwise, G2.
-  Posted p = post("FEDRAT/0.1,MMPR\nGOTO/15,0,-20\nCIRCLE/17,0,-20,0,-1,0,2\nGOTO/17,0,-22\n"
-                  "CIRCLE/17,0,-20,0,1,0,2\nGOTO/15,0,-20\nFINI\n", generic());
+  Posted p = post(
+      "FEDRAT/0.1,MMPR\nGOTO/15,0,-20\nCIRCLE/17,0,-20,0,-1,0,2\nGOTO/17,0,-22\n"
+      "CIRCLE/17,0,-20,0,1,0,2\nGOTO/15,0,-20\nFINI\n",
+      generic());
   EXPECT_EQ(p.diags, "");
-  EXPECT_EQ(p.nc, std::string(kHeader) + "G1 X30. Z-20. G95 F0.1\nG2 X34. Z-22. I2. K0.\n"
-                                         "G3 X30. Z-20. I0. K2.\nM30\n%\n");
+  EXPECT_EQ(p.nc, std::string(kHeader) +
+                      "G1 X30. Z-20. G95 F0.1\nG2 X34. Z-22. I2. K0.\n"
+                      "G3 X30. Z-20. I0. K2.\nM30\n%\n");
 }
 
 TEST(Interpreter, ArcErrors) {
-  Posted off_plane = post("FEDRAT/0.1,MMPR\nGOTO/15,0,-20\nCIRCLE/17,0,-20,0,0,1,2\nGOTO/17,0,-22\nFINI\n", generic());
+  Posted off_plane = post(
+      "FEDRAT/0.1,MMPR\nGOTO/15,0,-20\nCIRCLE/17,0,-20,0,0,1,2\nGOTO/17,0,-22\nFINI\n", generic());
   EXPECT_EQ(off_plane.diags,
-            "t.cl:3:1: error: CIRCLE axis (0, 0, 1) is not normal to the lathe plane: the arc cannot be cut on a lathe\n"
+            "t.cl:3:1: error: CIRCLE axis (0, 0, 1) is not normal to the lathe plane: the arc "
+            "cannot be cut on a lathe\n"
             "  CIRCLE/17,0,-20,0,0,1,2\n"
             "  ^\n");
-  Posted not_on = post("FEDRAT/0.1,MMPR\nGOTO/15,0,-20\nCIRCLE/17,0,-20,0,-1,0,2\nGOTO/17,0,-23\nFINI\n", generic());
+  Posted not_on = post(
+      "FEDRAT/0.1,MMPR\nGOTO/15,0,-20\nCIRCLE/17,0,-20,0,-1,0,2\nGOTO/17,0,-23\nFINI\n", generic());
   EXPECT_EQ(not_on.diags,
-            "t.cl:4:1: error: arc end point is not on the circle of line 3: distance from the centre 2 at "
+            "t.cl:4:1: error: arc end point is not on the circle of line 3: distance from the "
+            "centre 2 at "
             "the start, 3 at the end\n"
             "  GOTO/17,0,-23\n"
             "  ^\n");
@@ -144,9 +157,12 @@ TEST(Interpreter, TextStatements) {
 }
 
 TEST(Interpreter, ToolCoolantCompDwellStops) {
-  Posted p = post("LOADTL/4,ADJUST,14\nLOAD/TOOL,5\nCOOLNT/ON\nCOOLNT/OFF\nCUTCOM/LEFT\nCUTCOM/OFF\n"
-                  "DELAY/2\nSTOP\nOPSTOP\nFINI\n", generic());
-  EXPECT_EQ(p.nc, std::string(kHeader) + "T0414\nT0505\nM8\nM9\nG41\nG40\nG4 X2.\nM0\nM1\nM30\n%\n");
+  Posted p = post(
+      "LOADTL/4,ADJUST,14\nLOAD/TOOL,5\nCOOLNT/ON\nCOOLNT/OFF\nCUTCOM/LEFT\nCUTCOM/OFF\n"
+      "DELAY/2\nSTOP\nOPSTOP\nFINI\n",
+      generic());
+  EXPECT_EQ(p.nc,
+            std::string(kHeader) + "T0414\nT0505\nM8\nM9\nG41\nG40\nG4 X2.\nM0\nM1\nM30\n%\n");
 }
 
 TEST(Interpreter, UnitsInchesGiveG20AndInchCoordinates) {
@@ -163,8 +179,9 @@ TEST(Interpreter, StatementsAfterFiniAreIgnoredWithANote) {
 TEST(Interpreter, DrillingCyclesAreRefusedNotDropped) {
   Posted p = post("CYCLE/DRILL,5,MMPM,100\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n", generic());
   EXPECT_EQ(p.errors, 1u);
-  EXPECT_NE(p.diags.find("t.cl:1:1: error: CYCLE/DRILL is not supported on machine 'generic-lathe'"),
-            std::string::npos);
+  EXPECT_NE(
+      p.diags.find("t.cl:1:1: error: CYCLE/DRILL is not supported on machine 'generic-lathe'"),
+      std::string::npos);
 }
 
 }  // namespace

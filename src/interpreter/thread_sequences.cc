@@ -23,7 +23,9 @@ void Interpreter::thread_stmt(const Statement& st, size_t first) {
   const Arg& a = st.args[first];
   if (a.is("OFF") || a.is("NOMORE")) {
     if (seq_ != Seq::kMulti) {
-      error(st, a.loc, fmt::format("{} without a THREAD/ON before it", st.major == "OP" ? "OP/THREAD,NOMORE" : "THREAD/OFF"));
+      error(st, a.loc,
+            fmt::format("{} without a THREAD/ON before it",
+                        st.major == "OP" ? "OP/THREAD,NOMORE" : "THREAD/OFF"));
       return;
     }
     seq_ = Seq::kNone;
@@ -35,11 +37,15 @@ void Interpreter::thread_stmt(const Statement& st, size_t first) {
     return;
   }
   if (seq_ == Seq::kMulti) {
-    error(st, st.loc, fmt::format("THREAD/{} inside the thread started at line {}: THREAD/OFF missing", a.text, seq_loc_.line));
+    error(st, st.loc,
+          fmt::format("THREAD/{} inside the thread started at line {}: THREAD/OFF missing", a.text,
+                      seq_loc_.line));
     return;
   }
   if (seq_ == Seq::kCouple) {
-    error(st, st.loc, fmt::format("THREAD/{} inside COUPLE/ON of line {}: COUPLE/OFF missing", a.text, seq_loc_.line));
+    error(st, st.loc,
+          fmt::format("THREAD/{} inside COUPLE/ON of line {}: COUPLE/OFF missing", a.text,
+                      seq_loc_.line));
     return;
   }
   if (a.is("ON") || (st.major == "OP" && (a.is("TURN") || a.is("FACE") || a.is("TAPER")))) {
@@ -80,7 +86,8 @@ void Interpreter::thread_stmt(const Statement& st, size_t first) {
     seq_loc_ = st.loc;
     return;
   }
-  error(st, a.loc, fmt::format("unknown THREAD word '{}': expected ON, OFF, TURN, FACE or TAPER", a.text));
+  error(st, a.loc,
+        fmt::format("unknown THREAD word '{}': expected ON, OFF, TURN, FACE or TAPER", a.text));
 }
 
 void Interpreter::op_stmt(const Statement& st) {
@@ -111,7 +118,8 @@ void Interpreter::couple_stmt(const Statement& st) {
     return;
   }
   if (seq_ == Seq::kCouple) {
-    error(st, st.loc, fmt::format("COUPLE/ON inside COUPLE/ON of line {}: COUPLE/OFF missing", seq_loc_.line));
+    error(st, st.loc,
+          fmt::format("COUPLE/ON inside COUPLE/ON of line {}: COUPLE/OFF missing", seq_loc_.line));
     return;
   }
   if (seq_ == Seq::kMulti) {
@@ -141,12 +149,14 @@ void Interpreter::couple_stmt(const Statement& st) {
 
 bool Interpreter::check_pitch(const Statement& st, const PitchSpec& p) {
   if (!p.set) {
-    error(st, st.loc, "no pitch in force: give PITCH/ before the thread or a pitch on this statement");
+    error(st, st.loc,
+          "no pitch in force: give PITCH/ before the thread or a pitch on this statement");
     return false;
   }
   if (p.lead_change != 0 && !m_.variable_lead) {
     error(st, p.lead_change_loc.line ? p.lead_change_loc : st.loc,
-          fmt::format("variable lead (INCR/DECR {}) cannot be cut on machine '{}': it has no variable-lead threading",
+          fmt::format("variable lead (INCR/DECR {}) cannot be cut on machine '{}': it has no "
+                      "variable-lead threading",
                       p.lead_change, m_.name));
     return false;
   }
@@ -218,7 +228,9 @@ void Interpreter::thread_goto(const Statement& st, Point3 p) {
 
 void Interpreter::single_pass_plan(ThreadPlan& plan) {
   Vec2 d{plan.p2.x - plan.p1.x, plan.p2.z - plan.p1.z};
-  plan.kind = std::abs(d.x) < 1e-9 ? ThreadKind::kTurn : std::abs(d.z) < 1e-9 ? ThreadKind::kFace : ThreadKind::kTaper;
+  plan.kind = std::abs(d.x) < 1e-9   ? ThreadKind::kTurn
+              : std::abs(d.z) < 1e-9 ? ThreadKind::kFace
+                                     : ThreadKind::kTaper;
   ThreadPass pass;
   pass.n = 1;
   pass.approach = pass.from = plan.p1;
@@ -234,7 +246,8 @@ bool Interpreter::begin_thread_spindle(const ThreadPlan& plan, const SavedLines&
     diags_.error(plan.loc, lines.text(plan.loc.line), std::move(msg));
     return false;
   };
-  if (!spindle_on_) return fail("thread cut with the spindle stopped: program SPINDL/ before the thread");
+  if (!spindle_on_)
+    return fail("thread cut with the spindle stopped: program SPINDL/ before the thread");
   double rpm = spindle_value_;
   forced_rpm_ = false;
   if (css_) {
@@ -247,15 +260,18 @@ bool Interpreter::begin_thread_spindle(const ThreadPlan& plan, const SavedLines&
     rpm = std::min(rpm, css_max_rpm_);
     if (rpm < 1) rpm = 1;
     ensure_started();
-    prog_.comment(fmt::format("constant surface speed {} off for the thread: {} rpm", spindle_value_, rpm));
+    prog_.comment(
+        fmt::format("constant surface speed {} off for the thread: {} rpm", spindle_value_, rpm));
     prog_.spindle_rpm(rpm, spindle_dir_);
     forced_rpm_ = true;
   }
   double lead = plan.pitch.pitch * plan.pitch.starts;
   double feed = lead * rpm;
   if (m_.max_feed > 0 && feed > m_.max_feed + 1e-9) {
-    return fail(fmt::format("thread feed too fast for machine '{}': lead {} x {} rpm = {} per minute, above its maximum feed {}",
-                            m_.name, lead, rpm, feed, m_.max_feed));
+    return fail(
+        fmt::format("thread feed too fast for machine '{}': lead {} x {} rpm = {} per minute, "
+                    "above its maximum feed {}",
+                    m_.name, lead, rpm, feed, m_.max_feed));
   }
   thread_rpm_ = rpm;
   return true;
@@ -273,8 +289,8 @@ void Interpreter::emit_thread(ThreadPlan& plan, const SavedLines& lines) {
   ++stats_.threads;
   stats_.passes += plan.passes.size();
   if (on_thread_) on_thread_(plan);
-  prog_.comment(fmt::format("thread line {}: {} passes, pitch {}, depth {}", plan.loc.line, plan.passes.size(),
-                            plan.pitch.pitch, plan.depth));
+  prog_.comment(fmt::format("thread line {}: {} passes, pitch {}, depth {}", plan.loc.line,
+                            plan.passes.size(), plan.pitch.pitch, plan.depth));
   EmitContext ctx{diags_, lines, thread_rpm_, feed_, feed_mode_};
   emitter_->emit(plan, prog_, ctx);
   stats_.motions += plan.passes.size() * 4;
@@ -291,11 +307,13 @@ void Interpreter::emit_thread(ThreadPlan& plan, const SavedLines& lines) {
 void Interpreter::end_sequence_errors(uint32_t line) {
   (void)line;
   if (seq_ == Seq::kNone) return;
-  const char* what = seq_ == Seq::kMulti ? "THREAD/ON without THREAD/OFF"
+  const char* what = seq_ == Seq::kMulti    ? "THREAD/ON without THREAD/OFF"
                      : seq_ == Seq::kCouple ? "COUPLE/ON without COUPLE/OFF"
                                             : "single-pass thread without its second GOTO";
-  diags_.error(seq_loc_, seq_ == Seq::kMulti ? multi_.on_lines.text(seq_loc_.line) : seq_lines_.text(seq_loc_.line),
-               fmt::format("{} (the file ends first)", what));
+  diags_.error(
+      seq_loc_,
+      seq_ == Seq::kMulti ? multi_.on_lines.text(seq_loc_.line) : seq_lines_.text(seq_loc_.line),
+      fmt::format("{} (the file ends first)", what));
   seq_ = Seq::kNone;
 }
 

@@ -44,26 +44,26 @@ struct Machine {
   ThreadFallback thread_fallback = ThreadFallback::kEmulate;
   int default_option = 0;
   double default_tool_angle = 60;
-  bool start_angle_word = false;  // the control's thread block has a start-angle word
-  bool variable_lead = false;     // G34/G35 style variable lead
-  std::string thread_lead_address = "F";   // G33 lead word (F, K, ...)
-  std::string start_angle_address = "Q";   // when start_angle_word
+  bool start_angle_word = false;          // the control's thread block has a start-angle word
+  bool variable_lead = false;             // G34/G35 style variable lead
+  std::string thread_lead_address = "F";  // G33 lead word (F, K, ...)
+  std::string start_angle_address = "Q";  // when start_angle_word
 
   // Output
   std::string extension = ".nc";
   std::string line_ending = "\n";
   std::string comment_open = "(";
   std::string comment_close = ")";
-  bool comment_upper = false;          // upper-case comment text
+  bool comment_upper = false;            // upper-case comment text
   std::string comment_forbidden = "()";  // characters removed from comment text
   bool block_numbers = false;
   std::string block_address = "N";
   int block_start = 10;
   int block_step = 10;
-  int block_max = 99999;  // wraps to block_start after this
+  int block_max = 99999;                             // wraps to block_start after this
   std::vector<std::string> block_skip = {"%", "O"};  // blocks starting so get no number
-  bool modal_codes = true;   // suppress repeated modal G codes
-  bool modal_words = true;   // suppress unchanged X/Z/F/S words
+  bool modal_codes = true;                           // suppress repeated modal G codes
+  bool modal_words = true;                           // suppress unchanged X/Z/F/S words
   int program_number = 1;
 
   std::map<std::string, NumberFormat> formats;  // by address; "default" for the others

@@ -78,8 +78,9 @@ bool get_bool(Ctx& c, const YAML::Node& n, std::string_view key, bool& out) {
     if (s == "true" || s == "yes" || s == "on") return out = true, true;
     if (s == "false" || s == "no" || s == "off") return out = false, true;
   }
-  c.error(n, fmt::format("'{}' must be true or false, not '{}'", key,
-                         n.IsScalar() ? n.Scalar() : std::string("a ") + (n.IsMap() ? "map" : "list")));
+  c.error(
+      n, fmt::format("'{}' must be true or false, not '{}'", key,
+                     n.IsScalar() ? n.Scalar() : std::string("a ") + (n.IsMap() ? "map" : "list")));
   return false;
 }
 
@@ -93,7 +94,8 @@ bool get_number(Ctx& c, const YAML::Node& n, std::string_view key, double lo, do
     ok = ec == std::errc() && p == s.data() + s.size() && std::isfinite(v);
   }
   if (!ok) {
-    c.error(n, fmt::format("'{}' must be a number, not '{}'", key, n.IsScalar() ? n.Scalar() : "a collection"));
+    c.error(n, fmt::format("'{}' must be a number, not '{}'", key,
+                           n.IsScalar() ? n.Scalar() : "a collection"));
     return false;
   }
   if (v < lo || v > hi) {
@@ -159,9 +161,10 @@ bool check_template(Ctx& c, const YAML::Node& n, const std::string& name, const 
     (void)fmt::vformat(line, args);
   } catch (const fmt::format_error& e) {
     std::string fields;
-    for (const std::string& f : template_fields().at(name)) fields += (fields.empty() ? "{" : ", {") + f + "}";
-    c.error(n, fmt::format("bad template line '{}' in '{}': {} (fields: {})", line, name,
-                           e.what(), fields.empty() ? "none" : fields));
+    for (const std::string& f : template_fields().at(name))
+      fields += (fields.empty() ? "{" : ", {") + f + "}";
+    c.error(n, fmt::format("bad template line '{}' in '{}': {} (fields: {})", line, name, e.what(),
+                           fields.empty() ? "none" : fields));
     return false;
   }
   return true;
@@ -178,11 +181,16 @@ bool apply_format(Ctx& c, const YAML::Node& node, const std::string& addr, Numbe
   for (const auto& kv : node) {
     const std::string key = kv.first.Scalar();
     const std::string path = "formats." + addr + "." + key;
-    if (key == "decimals") ok &= get_int(c, kv.second, path, 0, 9, f.decimals);
-    else if (key == "trailing_zeros") ok &= get_bool(c, kv.second, path, f.trailing_zeros);
-    else if (key == "decimal_point") ok &= get_bool(c, kv.second, path, f.decimal_point);
-    else if (key == "leading_zero") ok &= get_bool(c, kv.second, path, f.leading_zero);
-    else if (key == "scale") ok &= get_number(c, kv.second, path, 1e-6, 1e6, f.scale);
+    if (key == "decimals")
+      ok &= get_int(c, kv.second, path, 0, 9, f.decimals);
+    else if (key == "trailing_zeros")
+      ok &= get_bool(c, kv.second, path, f.trailing_zeros);
+    else if (key == "decimal_point")
+      ok &= get_bool(c, kv.second, path, f.decimal_point);
+    else if (key == "leading_zero")
+      ok &= get_bool(c, kv.second, path, f.leading_zero);
+    else if (key == "scale")
+      ok &= get_number(c, kv.second, path, 1e-6, 1e6, f.scale);
     else {
       c.error(kv.first, fmt::format("unknown key '{}'{}", path, suggestion(key, kKeys)));
       ok = false;
@@ -197,48 +205,109 @@ using Setter = std::function<bool(Ctx&, const YAML::Node&, Machine&)>;
 const std::map<std::string, Setter>& scalar_keys() {
   static const std::map<std::string, Setter> kKeys = [] {
     std::map<std::string, Setter> k;
-    k["description"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "description", m.description); };
+    k["description"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "description", m.description);
+    };
     k["units"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
       return get_choice<std::string>(c, n, "units", {{"mm", "mm"}, {"in", "in"}}, m.default_units);
     };
     k["cl.radial_axis"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
-      return get_choice<ClAxis>(c, n, "cl.radial_axis", {{"x", ClAxis::kX}, {"y", ClAxis::kY}, {"z", ClAxis::kZ}}, m.cl_radial);
+      return get_choice<ClAxis>(c, n, "cl.radial_axis",
+                                {{"x", ClAxis::kX}, {"y", ClAxis::kY}, {"z", ClAxis::kZ}},
+                                m.cl_radial);
     };
     k["cl.axial_axis"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
-      return get_choice<ClAxis>(c, n, "cl.axial_axis", {{"x", ClAxis::kX}, {"y", ClAxis::kY}, {"z", ClAxis::kZ}}, m.cl_axial);
+      return get_choice<ClAxis>(c, n, "cl.axial_axis",
+                                {{"x", ClAxis::kX}, {"y", ClAxis::kY}, {"z", ClAxis::kZ}},
+                                m.cl_axial);
     };
-    k["cl.radial_is_diameter"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "cl.radial_is_diameter", m.cl_x_is_diameter); };
-    k["output.diameter"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "output.diameter", m.diameter_output); };
-    k["output.extension"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "output.extension", m.extension); };
+    k["cl.radial_is_diameter"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "cl.radial_is_diameter", m.cl_x_is_diameter);
+    };
+    k["output.diameter"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "output.diameter", m.diameter_output);
+    };
+    k["output.extension"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "output.extension", m.extension);
+    };
     k["output.line_ending"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
-      return get_choice<std::string>(c, n, "output.line_ending", {{"lf", "\n"}, {"crlf", "\r\n"}}, m.line_ending);
+      return get_choice<std::string>(c, n, "output.line_ending", {{"lf", "\n"}, {"crlf", "\r\n"}},
+                                     m.line_ending);
     };
-    k["output.program_number"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_int(c, n, "output.program_number", 0, 99999999, m.program_number); };
-    k["output.modal_codes"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "output.modal_codes", m.modal_codes); };
-    k["output.modal_words"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "output.modal_words", m.modal_words); };
-    k["comments.open"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "comments.open", m.comment_open); };
-    k["comments.close"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "comments.close", m.comment_close); };
-    k["comments.upper_case"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "comments.upper_case", m.comment_upper); };
-    k["comments.forbidden"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "comments.forbidden", m.comment_forbidden); };
-    k["block_numbers.enabled"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "block_numbers.enabled", m.block_numbers); };
-    k["block_numbers.address"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "block_numbers.address", m.block_address); };
-    k["block_numbers.start"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_int(c, n, "block_numbers.start", 0, 99999999, m.block_start); };
-    k["block_numbers.step"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_int(c, n, "block_numbers.step", 1, 1000, m.block_step); };
-    k["block_numbers.max"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_int(c, n, "block_numbers.max", 1, 99999999, m.block_max); };
-    k["limits.max_rpm"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_number(c, n, "limits.max_rpm", 0, 1e6, m.max_rpm); };
-    k["limits.max_feed"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_number(c, n, "limits.max_feed", 0, 1e7, m.max_feed); };
+    k["output.program_number"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_int(c, n, "output.program_number", 0, 99999999, m.program_number);
+    };
+    k["output.modal_codes"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "output.modal_codes", m.modal_codes);
+    };
+    k["output.modal_words"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "output.modal_words", m.modal_words);
+    };
+    k["comments.open"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "comments.open", m.comment_open);
+    };
+    k["comments.close"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "comments.close", m.comment_close);
+    };
+    k["comments.upper_case"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "comments.upper_case", m.comment_upper);
+    };
+    k["comments.forbidden"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "comments.forbidden", m.comment_forbidden);
+    };
+    k["block_numbers.enabled"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "block_numbers.enabled", m.block_numbers);
+    };
+    k["block_numbers.address"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "block_numbers.address", m.block_address);
+    };
+    k["block_numbers.start"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_int(c, n, "block_numbers.start", 0, 99999999, m.block_start);
+    };
+    k["block_numbers.step"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_int(c, n, "block_numbers.step", 1, 1000, m.block_step);
+    };
+    k["block_numbers.max"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_int(c, n, "block_numbers.max", 1, 99999999, m.block_max);
+    };
+    k["limits.max_rpm"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "limits.max_rpm", 0, 1e6, m.max_rpm);
+    };
+    k["limits.max_feed"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "limits.max_feed", 0, 1e7, m.max_feed);
+    };
     k["threading.strategy"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
-      return get_choice<ThreadStrategy>(c, n, "threading.strategy", {{"cycle", ThreadStrategy::kCycle}, {"loop", ThreadStrategy::kLoop}, {"emulate", ThreadStrategy::kEmulate}}, m.thread_strategy);
+      return get_choice<ThreadStrategy>(c, n, "threading.strategy",
+                                        {{"cycle", ThreadStrategy::kCycle},
+                                         {"loop", ThreadStrategy::kLoop},
+                                         {"emulate", ThreadStrategy::kEmulate}},
+                                        m.thread_strategy);
     };
     k["threading.fallback"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
-      return get_choice<ThreadFallback>(c, n, "threading.fallback", {{"loop", ThreadFallback::kLoop}, {"emulate", ThreadFallback::kEmulate}, {"error", ThreadFallback::kError}}, m.thread_fallback);
+      return get_choice<ThreadFallback>(c, n, "threading.fallback",
+                                        {{"loop", ThreadFallback::kLoop},
+                                         {"emulate", ThreadFallback::kEmulate},
+                                         {"error", ThreadFallback::kError}},
+                                        m.thread_fallback);
     };
-    k["threading.option"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_int(c, n, "threading.option", 0, 4, m.default_option); };
-    k["threading.tool_angle"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_number(c, n, "threading.tool_angle", 1e-9, 179.999999, m.default_tool_angle); };
-    k["threading.start_angle_word"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "threading.start_angle_word", m.start_angle_word); };
-    k["threading.variable_lead"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_bool(c, n, "threading.variable_lead", m.variable_lead); };
-    k["threading.lead_address"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "threading.lead_address", m.thread_lead_address); };
-    k["threading.start_angle_address"] = [](Ctx& c, const YAML::Node& n, Machine& m) { return get_string(c, n, "threading.start_angle_address", m.start_angle_address); };
+    k["threading.option"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_int(c, n, "threading.option", 0, 4, m.default_option);
+    };
+    k["threading.tool_angle"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.tool_angle", 1e-9, 179.999999, m.default_tool_angle);
+    };
+    k["threading.start_angle_word"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "threading.start_angle_word", m.start_angle_word);
+    };
+    k["threading.variable_lead"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "threading.variable_lead", m.variable_lead);
+    };
+    k["threading.lead_address"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "threading.lead_address", m.thread_lead_address);
+    };
+    k["threading.start_angle_address"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "threading.start_angle_address", m.start_angle_address);
+    };
     return k;
   }();
   return kKeys;
@@ -279,13 +348,16 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
     return get_string(c, value, "extends", m.post);
   }
   if (prefix.empty() && name == "formats") {
-    if (!value.IsMap()) return c.error(value, "'formats' must be a map of address: {decimals: ...}"), false;
+    if (!value.IsMap())
+      return c.error(value, "'formats' must be a map of address: {decimals: ...}"), false;
     bool ok = true;
-    for (const auto& kv : value) ok &= apply_format(c, kv.second, kv.first.Scalar(), m.formats[kv.first.Scalar()]);
+    for (const auto& kv : value)
+      ok &= apply_format(c, kv.second, kv.first.Scalar(), m.formats[kv.first.Scalar()]);
     return ok;
   }
   if (path == "block_numbers.skip") {
-    if (!value.IsSequence()) return c.error(value, "'block_numbers.skip' must be a list of block prefixes"), false;
+    if (!value.IsSequence())
+      return c.error(value, "'block_numbers.skip' must be a list of block prefixes"), false;
     m.block_skip.clear();
     bool ok = true;
     for (const auto& item : value) ok &= get_string(c, item, path, m.block_skip.emplace_back());
@@ -294,7 +366,8 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
   if (prefix.empty() && name == "codes") {
     if (!value.IsMap()) return c.error(value, "'codes' must be a map of name: code"), false;
     bool ok = true;
-    for (const auto& kv : value) ok &= get_string(c, kv.second, "codes." + kv.first.Scalar(), m.codes[kv.first.Scalar()]);
+    for (const auto& kv : value)
+      ok &= get_string(c, kv.second, "codes." + kv.first.Scalar(), m.codes[kv.first.Scalar()]);
     return ok;
   }
   if (prefix.empty() && name == "templates") {
@@ -305,7 +378,8 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
     for (const auto& kv : value) {
       const std::string tname = kv.first.Scalar();
       if (!template_fields().count(tname)) {
-        c.error(kv.first, fmt::format("unknown template 'templates.{}'{}", tname, suggestion(tname, names)));
+        c.error(kv.first,
+                fmt::format("unknown template 'templates.{}'{}", tname, suggestion(tname, names)));
         ok = false;
         continue;
       }
@@ -314,7 +388,11 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
         lines.push_back(kv.second.Scalar());
       } else if (kv.second.IsSequence()) {
         for (const auto& line : kv.second) {
-          if (!line.IsScalar()) { c.error(line, fmt::format("'templates.{}' lines must be strings", tname)); ok = false; continue; }
+          if (!line.IsScalar()) {
+            c.error(line, fmt::format("'templates.{}' lines must be strings", tname));
+            ok = false;
+            continue;
+          }
           lines.push_back(line.Scalar());
         }
       } else if (!kv.second.IsNull()) {
@@ -408,8 +486,9 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
       for (const MachineInfo& mi : list_machines(data_dirs)) names.push_back(mi.name);
       std::string list;
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      errors += fmt::format("clpost: error: unknown machine '{}'{}; shipped machines: {}\n",
-                            name_or_path, suggestion(name_or_path, names), list.empty() ? "none found" : list);
+      errors +=
+          fmt::format("clpost: error: unknown machine '{}'{}; shipped machines: {}\n", name_or_path,
+                      suggestion(name_or_path, names), list.empty() ? "none found" : list);
       return false;
     }
   }
@@ -431,9 +510,12 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
   if (!probe.post.empty()) {
     // Posts live in posts/ beside the machines/ folder of the machine file, or in a data dir.
     std::vector<std::string> candidates = {
-        (fs::path(path).parent_path() / ".." / "posts" / (probe.post + ".yaml")).lexically_normal().string(),
+        (fs::path(path).parent_path() / ".." / "posts" / (probe.post + ".yaml"))
+            .lexically_normal()
+            .string(),
         (fs::path(path).parent_path() / (probe.post + ".yaml")).string()};
-    for (const std::string& dir : data_dirs) candidates.push_back(dir + "/posts/" + probe.post + ".yaml");
+    for (const std::string& dir : data_dirs)
+      candidates.push_back(dir + "/posts/" + probe.post + ".yaml");
     std::string post_path;
     for (const std::string& cand : candidates)
       if (fs::exists(cand)) {
@@ -445,7 +527,9 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
       uint32_t line = t.find_key_line("extends");
       Diagnostics d(path);
       d.error(SourceLoc{line, 1}, t.line(line),
-              fmt::format("post '{}' not found (looked in posts/ beside the machine file and in the data directories)", probe.post));
+              fmt::format("post '{}' not found (looked in posts/ beside the machine file and in "
+                          "the data directories)",
+                          probe.post));
       errors += d.render_all();
       return false;
     }

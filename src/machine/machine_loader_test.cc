@@ -23,8 +23,8 @@ TEST(MachineLoader, GenericLatheTakesPostThenMachineKeys) {
   ASSERT_TRUE(load_machine("generic-lathe", kDirs, {}, m, errors)) << errors;
   EXPECT_EQ(m.name, "generic-lathe");
   EXPECT_EQ(m.post, "iso-lathe");
-  EXPECT_EQ(m.code("thread"), "G33");      // from the post
-  EXPECT_DOUBLE_EQ(m.max_rpm, 4000);       // from the machine
+  EXPECT_EQ(m.code("thread"), "G33");  // from the post
+  EXPECT_DOUBLE_EQ(m.max_rpm, 4000);   // from the machine
   EXPECT_EQ(m.extension, ".nc");
   EXPECT_TRUE(m.block_numbers);
 }
@@ -52,12 +52,14 @@ TEST(MachineLoader, UnknownKeySuggestsTheClosest) {
 TEST(MachineLoader, WrongTypeAndRange) {
   Machine m;
   std::string errors;
-  EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading:\n  option: 7\n  strategy: cycel\n", false, m, errors));
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading:\n  option: 7\n  strategy: cycel\n", false,
+                                  m, errors));
   EXPECT_EQ(errors,
             "m.yaml:2:11: error: 'threading.option' is 7 but must be between 0 and 4\n"
             "    option: 7\n"
             "            ^\n"
-            "m.yaml:3:13: error: 'threading.strategy' must be one of cycle, loop, emulate, not 'cycel' (did you mean 'cycle'?)\n"
+            "m.yaml:3:13: error: 'threading.strategy' must be one of cycle, loop, emulate, not "
+            "'cycel' (did you mean 'cycle'?)\n"
             "    strategy: cycel\n"
             "              ^\n");
 }
@@ -65,12 +67,14 @@ TEST(MachineLoader, WrongTypeAndRange) {
 TEST(MachineLoader, BadTemplateFieldIsCaughtAtLoad) {
   Machine m;
   std::string errors;
-  EXPECT_FALSE(apply_machine_yaml("m.yaml", "templates:\n  tool_change: [\"T{tool}{ofset}\"]\n", false, m, errors));
-  EXPECT_EQ(errors,
-            "m.yaml:2:17: error: bad template line 'T{tool}{ofset}' in 'tool_change': argument not found "
-            "(fields: {tool}, {offset}, {tool_name})\n"
-            "    tool_change: [\"T{tool}{ofset}\"]\n"
-            "                  ^\n");
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "templates:\n  tool_change: [\"T{tool}{ofset}\"]\n",
+                                  false, m, errors));
+  EXPECT_EQ(
+      errors,
+      "m.yaml:2:17: error: bad template line 'T{tool}{ofset}' in 'tool_change': argument not found "
+      "(fields: {tool}, {offset}, {tool_name})\n"
+      "    tool_change: [\"T{tool}{ofset}\"]\n"
+      "                  ^\n");
 }
 
 TEST(MachineLoader, InvalidYamlHasALocation) {
@@ -84,7 +88,10 @@ TEST(MachineLoader, UnknownMachineListsShippedOnes) {
   Machine m;
   std::string errors;
   EXPECT_FALSE(load_machine("generic-lath", kDirs, {}, m, errors));
-  EXPECT_EQ(errors.rfind("clpost: error: unknown machine 'generic-lath' (did you mean 'generic-lathe'?); shipped machines: ", 0), 0u)
+  EXPECT_EQ(errors.rfind("clpost: error: unknown machine 'generic-lath' (did you mean "
+                         "'generic-lathe'?); shipped machines: ",
+                         0),
+            0u)
       << errors;
 }
 

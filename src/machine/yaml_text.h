@@ -27,7 +27,8 @@ class YamlText {
   // First line starting with `key:` (top level), 0 when none.
   uint32_t find_key_line(std::string_view key) const {
     for (size_t i = 0; i < lines_.size(); ++i)
-      if (lines_[i].starts_with(key) && lines_[i].size() > key.size() && lines_[i][key.size()] == ':')
+      if (lines_[i].starts_with(key) && lines_[i].size() > key.size() &&
+          lines_[i][key.size()] == ':')
         return static_cast<uint32_t>(i + 1);
     return 0;
   }

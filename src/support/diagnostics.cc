@@ -30,9 +30,12 @@ void Diagnostics::add(Severity severity, SourceLoc loc, std::string_view line_te
 
 static std::string_view severity_name(Severity s) {
   switch (s) {
-    case Severity::kNote: return "note";
-    case Severity::kWarning: return "warning";
-    case Severity::kError: return "error";
+    case Severity::kNote:
+      return "note";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kError:
+      return "error";
   }
   return "error";
 }
@@ -44,8 +47,8 @@ std::string Diagnostics::render(const Diagnostic& d) const {
   } else if (d.loc.col == 0) {
     out = fmt::format("{}:{}: {}: {}\n", file_, d.loc.line, severity_name(d.severity), d.message);
   } else {
-    out = fmt::format("{}:{}:{}: {}: {}\n", file_, d.loc.line, d.loc.col,
-                      severity_name(d.severity), d.message);
+    out = fmt::format("{}:{}:{}: {}: {}\n", file_, d.loc.line, d.loc.col, severity_name(d.severity),
+                      d.message);
   }
   if (!d.line_text.empty()) {
     out += "  ";

@@ -30,7 +30,9 @@ bool write_all(int fd, const char* data, size_t size, int& err) {
 }
 }  // namespace
 
-OutputFile::~OutputFile() { abort(); }
+OutputFile::~OutputFile() {
+  abort();
+}
 
 bool OutputFile::open(const std::string& path, std::string& error) {
   abort();

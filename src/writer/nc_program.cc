@@ -21,7 +21,8 @@ std::string num(const Machine& m, std::string_view address, double v) {
 
 NcProgram::NcProgram(const Machine& m, Sink& out) : m_(m), w_(m, out) {}
 
-static void emit_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
+static void emit_template(NcWriter& w, const Machine& m, const std::string& name,
+                          const Args& args) {
   auto it = m.templates.find(name);
   if (it == m.templates.end()) return;
   for (const std::string& line : it->second) {
@@ -60,7 +61,8 @@ void NcProgram::tool_change(int tool, int offset, std::string_view name) {
 void NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
   Args a;
   a.push_back(fmt::arg("rpm", num(m_, "S", rpm)));
-  a.push_back(fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
+  a.push_back(
+      fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
   emit_template(w_, m_, "spindle_rpm", a);
 }
 
@@ -68,7 +70,8 @@ void NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
   Args a;
   a.push_back(fmt::arg("speed", num(m_, "S", speed)));
   a.push_back(fmt::arg("max_rpm", num(m_, "S", max_rpm)));
-  a.push_back(fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
+  a.push_back(
+      fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
   emit_template(w_, m_, "spindle_css", a);
 }
 
@@ -82,7 +85,8 @@ void NcProgram::coolant(Coolant c) {
                                 "coolant_air"};
   const std::string& code = m_.code(kKeys[static_cast<int>(c)]);
   if (code.empty() && c != Coolant::kOff) {
-    w_.comment(fmt::format("coolant {} not available on this machine", kKeys[static_cast<int>(c)] + 8));
+    w_.comment(
+        fmt::format("coolant {} not available on this machine", kKeys[static_cast<int>(c)] + 8));
     return;
   }
   w_.code(code).end_block();

@@ -7,9 +7,10 @@ namespace {
 
 Machine test_machine() {
   Machine m;
-  m.codes = {{"rapid", "G0"}, {"linear", "G1"}, {"arc_cw", "G2"}, {"arc_ccw", "G3"},
-             {"thread", "G33"}, {"feed_per_rev", "G95"}, {"feed_per_min", "G94"},
-             {"metric", "G21"}, {"coolant_flood", "M8"}, {"coolant_off", "M9"}};
+  m.codes = {{"rapid", "G0"},         {"linear", "G1"},  {"arc_cw", "G2"},
+             {"arc_ccw", "G3"},       {"thread", "G33"}, {"feed_per_rev", "G95"},
+             {"feed_per_min", "G94"}, {"metric", "G21"}, {"coolant_flood", "M8"},
+             {"coolant_off", "M9"}};
   m.templates["program_start"] = {"%", "O{program_number:04}", "G18 {units_code}"};
   m.templates["spindle_rpm"] = {"G97 S{rpm} {direction}"};
   m.codes["spindle_cw"] = "M3";
@@ -23,13 +24,13 @@ TEST(NcProgram, ModalWordsAndDiameterOutput) {
   NcProgram p(m, out);
   p.start("", false, "x.cl");
   p.spindle_rpm(1200, SpindleDir::kCw);
-  p.rapid({22, 2});           // radius 22 -> X44.
-  p.rapid({22, 0});           // only Z changes
+  p.rapid({22, 2});  // radius 22 -> X44.
+  p.rapid({22, 0});  // only Z changes
   p.set_feed(0.2, FeedMode::kPerRev);
-  p.linear({-0.4, 0});        // G1, X-0.8, G95 F0.2 on the first feed move
-  p.linear({-0.4, 1});        // only Z
+  p.linear({-0.4, 0});  // G1, X-0.8, G95 F0.2 on the first feed move
+  p.linear({-0.4, 1});  // only Z
   p.set_feed(0.15, FeedMode::kPerRev);
-  p.linear({15, 1});          // new F only
+  p.linear({15, 1});  // new F only
   EXPECT_EQ(out.out,
             "%\nO0001\nG18 G21\nG97 S1200 M3\nG0 X44. Z2.\nZ0.\nG1 X-0.8 G95 F0.2\nZ1.\n"
             "X30. F0.15\n");

@@ -24,7 +24,9 @@ NcWriter& NcWriter::word(std::string_view address, double value) {
   return *this;
 }
 
-NcWriter& NcWriter::text(std::string_view raw) { return code(raw); }
+NcWriter& NcWriter::text(std::string_view raw) {
+  return code(raw);
+}
 
 void NcWriter::end_block() {
   if (block_.empty()) return;
