@@ -658,6 +658,7 @@ void Interpreter::move_to(const Statement& st, Point3 p) {
 
 void Interpreter::end_of_input(uint32_t last_line) {
   if (ended_) return;
+  end_sequence_errors(last_line);  // an unterminated thread is the first thing to say
   diags_.warning(SourceLoc{last_line, 0}, {},
                  "the file ends without FINI: the program end was added");
   finish(last_line);

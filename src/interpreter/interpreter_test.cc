@@ -186,3 +186,74 @@ TEST(Interpreter, DrillingCyclesAreRefusedNotDropped) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+TEST(InterpreterThreads, FeedAboveTheMachineLimitStopsWithTheThreeNumbers) {
+  // lead 2.5 x 4000 rpm = 10000 per minute: exactly the limit is allowed; 2.6 x 4000 is not.
+  Machine m = generic();
+  Posted ok = post(
+      "SPINDL/4000,RPM,CLW\nRAPID\nGOTO/12,0,2\nTHREAD/TURN,MMPR,2.5\nRAPID\nGOTO/10,0,2\nGOTO/"
+      "10,0,-20\nFINI\n",
+      m);
+  EXPECT_EQ(ok.errors, 0u) << ok.diags;
+  Posted bad = post(
+      "SPINDL/4000,RPM,CLW\nRAPID\nGOTO/12,0,2\nTHREAD/TURN,MMPR,2.6\nRAPID\nGOTO/10,0,2\nGOTO/"
+      "10,0,-20\nFINI\n",
+      m);
+  EXPECT_EQ(
+      bad.diags,
+      "t.cl:4:1: error: thread feed too fast for machine 'generic-lathe': lead 2.6 x 4000 rpm = "
+      "10400 per minute, above its maximum feed 10000\n"
+      "  THREAD/TURN,MMPR,2.6\n"
+      "  ^\n");
+}
+
+TEST(InterpreterThreads, ConstantSurfaceSpeedBecomesG97ForTheThreadAndComesBack) {
+  // 120 m/min at the thread's largest diameter 24 mm: 1000*120/(pi*24) = 1591.5 -> 1591 rpm.
+  Posted p = post(
+      "SPINDL/SMM,120,CLW,MAXRPM,3000\nRAPID\nGOTO/12,0,2\nCOUPLE/ON,MMPR,1.5\nGOTO/12,0,-20\n"
+      "COUPLE/OFF\nFINI\n",
+      generic());
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(
+      p.nc,
+      std::string(kHeader) +
+          "G50 S3000\nG96 S120 M3\nG0 X24. Z2.\n(constant surface speed 120 off for the "
+          "thread: 1591 rpm)\nG97 S1591 M3\nG33 Z-20. F1.5\nG50 S3000\nG96 S120 M3\nM30\n%\n");
+}
+
+TEST(InterpreterThreads, ThreadWithTheSpindleStoppedIsAnError) {
+  Posted p =
+      post("RAPID\nGOTO/12,0,2\nPITCH/1.5,MMPR\nCOUPLE/ON\nGOTO/12,0,-20\nCOUPLE/OFF\nFINI\n",
+           generic());
+  EXPECT_EQ(
+      p.diags,
+      "t.cl:4:1: error: thread cut with the spindle stopped: program SPINDL/ before the thread\n"
+      "  COUPLE/ON\n"
+      "  ^\n");
+}
+
+TEST(InterpreterThreads, UnterminatedSequencesAreErrorsAtTheirStart) {
+  Posted t = post(
+      "SPINDL/500,RPM,CLW\nRAPID\nGOTO/15,0,5\nTHREAD/ON,DEPTH,1,CUTS,2,MMPR,1.5\nGOTO/10,0,2\n",
+      generic());
+  EXPECT_EQ(t.diags,
+            "t.cl:4:1: error: THREAD/ON without THREAD/OFF (the file ends first)\n"
+            "  THREAD/ON,DEPTH,1,CUTS,2,MMPR,1.5\n"
+            "  ^\n"
+            "t.cl:5: warning: the file ends without FINI: the program end was added\n");
+  Posted c = post("SPINDL/500,RPM,CLW\nRAPID\nGOTO/15,0,5\nCOUPLE/ON,MMPR,1.5\nCOUPLE/ON\nFINI\n",
+                  generic());
+  EXPECT_EQ(c.diags,
+            "t.cl:5:1: error: COUPLE/ON inside COUPLE/ON of line 4: COUPLE/OFF missing\n"
+            "  COUPLE/ON\n"
+            "  ^\n"
+            "t.cl:4:1: error: COUPLE/ON without COUPLE/OFF (the file ends first)\n"
+            "  COUPLE/ON,MMPR,1.5\n"
+            "  ^\n");
+}
+
+}  // namespace
+}  // namespace clpost
