@@ -1,14 +1,22 @@
 #!/usr/bin/env bash
-# Rewrites the golden NC files beside every sample (samples/<stem>.<machine><ext>) from the
-# current build. Review `git diff samples/` line by line before committing: the goldens are the
-# project's statement of what each machine receives.
+# Rewrites the golden NC files (samples/golden/<machine>/<name><ext>) from the current build:
+# every sample in samples/ and samples/threads/ on every shipped machine, and
+# samples/machines/<machine>.* on its own machine. Review `git diff samples/golden` line by line
+# before committing: the goldens are the project's statement of what each machine receives.
+# The list of pairs is golden_cases() in tests/golden_test.cc; keep the two in step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${CLPOST_BIN:-build/clpost}
-for cl in samples/*.cls samples/*.ncl samples/*.apt samples/*.cl; do
-  [ -e "$cl" ] || continue
-  stem=${cl%.*}
-  "$bin" -m generic-lathe -o "$stem.generic-lathe.nc" "$cl"
-  "$bin" -m linuxcnc-lathe -o "$stem.linuxcnc-lathe.ngc" "$cl"
+"$bin" machines | while read -r machine ext _; do
+  mkdir -p "samples/golden/$machine"
+  for cl in samples/*.cls samples/*.ncl samples/*.apt samples/*.cl samples/threads/*.apt \
+            samples/machines/"$machine".*; do
+    [ -e "$cl" ] || continue
+    case "$cl" in *.nc|*.ngc|*.mpf|*.h|*.txt) continue ;; esac
+    name=$(basename "${cl%.*}")
+    case "$cl" in samples/threads/*) name="threads-$name" ;; esac
+    "$bin" -m "$machine" -o "samples/golden/$machine/$name$ext" "$cl" ||
+      echo "update-goldens: $cl on $machine failed" >&2
+  done
 done
 git status --short samples/

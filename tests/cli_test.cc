@@ -66,14 +66,14 @@ TEST(Cli, StdinAndStdout) {
   EXPECT_EQ(file.exit_code, 0);
   EXPECT_EQ(piped.exit_code, 0) << piped.err;
   EXPECT_EQ(piped.out, file.out);
-  EXPECT_EQ(piped.out, read_file(source_dir() + "/samples/pin-apt.generic-lathe.nc"));
+  EXPECT_EQ(piped.out, read_file(source_dir() + "/samples/golden/generic-lathe/pin-apt.nc"));
 }
 
 TEST(Cli, MachinesListsTheShippedOnes) {
   RunResult r = run(bin() + " machines");
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_NE(r.out.find("generic-lathe      Generic 2-axis ISO lathe"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("linuxcnc-lathe     LinuxCNC lathe"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("generic-lathe      .nc   emulation                          Generic 2-axis ISO lathe"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("linuxcnc-lathe     .ngc  "), std::string::npos) << r.out;
 }
 
 TEST(Cli, VersionAndHelp) {

@@ -10,6 +10,7 @@
 
 #include "cli/data_dirs.h"
 #include "cli/post_file.h"
+#include "emitters/emitter.h"
 #include "machine/machine_loader.h"
 #include "planner/plan_format.h"
 
@@ -105,9 +106,21 @@ int run_cli(int argc, char** argv) {
   }
 
   if (*machines) {
-    for (const MachineInfo& mi : list_machines(data_dirs()))
-      print_out(fmt::format("{:<18} {}\n", mi.name, mi.description));
-    return kExitOk;
+    // Each machine is loaded in full, so a broken file shows here rather than mid-batch.
+    int rc = kExitOk;
+    for (const MachineInfo& mi : list_machines(data_dirs())) {
+      Machine m;
+      std::string errors;
+      if (!load_machine(mi.path, data_dirs(), {}, m, errors)) {
+        print_out(fmt::format("{:<18} {:<5} {}\n", mi.name, "?", "(does not load, see below)"));
+        print_err(errors);
+        rc = kExitUsage;
+        continue;
+      }
+      print_out(fmt::format("{:<18} {:<5} {:<34} {}\n", mi.name, m.extension, threading_summary(m),
+                            m.description));
+    }
+    return rc;
   }
 
   if (*check) {

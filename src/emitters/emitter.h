@@ -1,8 +1,12 @@
 #pragma once
-// One interface for every threading output style: plain G1/G33 emulation, G33 loops, and the
-// controls' cycles (CYCLE99, G76, G92, G31 …). The machine file picks the implementation.
+// One interface for every threading output style: plain G1/G33 emulation, G33 / G92 loops, and
+// the controls' cycles (CYCLE99, G76, G31 …). The machine file picks the implementation
+// (threading.strategy / cycle / loop / fallback); make_emitter() wires the choice with its
+// fallback (thread_output.cc).
 #include <memory>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
@@ -20,14 +24,37 @@ struct EmitContext {
   FeedMode feed_mode = FeedMode::kPerMinute;
 };
 
+// Whether an output style cuts exactly a plan. The rule (controllers.md, "exact or fall
+// back"): a cycle is written only when the passes the control will cut from the words we would
+// write — its own law, its rounding — equal the plan's passes.
+struct Fit {
+  std::string mismatch;            // empty: exact; else why not, one line with the numbers
+  std::vector<std::string> notes;  // accepted differences, written as NC comments before it
+  bool exact() const { return mismatch.empty(); }
+};
+
 class Emitter {
  public:
   virtual ~Emitter() = default;
+  // What the NC comments and diagnostics call it: "CYCLE99", "G76", "G33 loop", ...
   virtual std::string_view name() const = 0;
-  // Writes a multi-pass thread. Returns false (with a diagnostic) when it cannot.
+  // Would this output cut `plan` exactly on machine `m`? Cycle emitters expand the words they
+  // would write with the control's law and compare (cut_pass.h). Loops and emulation cut every
+  // planned pass as written, so they fit unless the plan needs something they cannot say.
+  virtual Fit fit(const ThreadPlan& plan, const Machine& m) const = 0;
+  // Writes a multi-pass thread that fits. Returns false (with a diagnostic) when it cannot.
   virtual bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) = 0;
 };
 
+// The thread output for machine `m`: its strategy's emitter, falling back as the machine says
+// (an NC comment names the reason), or an error diagnostic with `fallback: error`.
 std::unique_ptr<Emitter> make_emitter(const Machine& m);
+// What make_emitter(m) tries, in order: "CYCLE99, else G33 loop" (for `clpost machines`).
+std::string threading_summary(const Machine& m);
+
+// The emitter of one cycle / loop style (nullptr for ThreadCycle::kNone).
+std::unique_ptr<Emitter> make_cycle_emitter(ThreadCycle c);
+std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l);
+std::unique_ptr<Emitter> make_emulation_emitter();
 
 }  // namespace clpost

@@ -2,15 +2,40 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace clpost {
 
 namespace {
 LathePoint lp(Vec2 v) {
   return LathePoint{v.x, v.z};
 }
+double dist(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.z - b.z);
+}
 }  // namespace
 
+ThreadLead thread_lead(const ThreadPlan& plan) {
+  ThreadLead l;
+  l.lead = plan.lead;
+  if (plan.pitch.from_tpi && plan.lead > 0)
+    l.tpi = (plan.units == LengthUnit::kMm ? 25.4 : 1.0) / plan.lead;
+  l.lead_change = plan.pitch.lead_change;
+  return l;
+}
+
+Fit EmulationEmitter::fit(const ThreadPlan& plan, const Machine& m) const {
+  Fit f;
+  if (plan.pitch.lead_change != 0 &&
+      m.code(plan.pitch.lead_change > 0 ? "thread_increasing" : "thread_decreasing").empty())
+    f.mismatch =
+        fmt::format("machine '{}' has no code for a variable lead ({})", m.name,
+                    plan.pitch.lead_change > 0 ? "thread_increasing" : "thread_decreasing");
+  return f;
+}
+
 bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
+  const ThreadLead base = thread_lead(plan);
   for (size_t i = 0; i < plan.passes.size(); ++i) {
     const ThreadPass& p = plan.passes[i];
     std::string kind = p.kind == PassKind::kRough    ? "rough"
@@ -31,14 +56,22 @@ bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitC
       prog.linear(lp(p.from));
     else
       prog.rapid(lp(p.from));
-    std::optional<double> angle;
-    if (plan.starts_by_angle && plan.pitch.starts > 1) angle = p.start_angle;
-    prog.thread(lp(p.to), plan.lead, angle);
+    ThreadLead l = base;
+    if (plan.starts_by_angle && plan.pitch.starts > 1) l.start_angle = p.start_angle;
+    prog.thread(lp(p.to), l);
     if (plan.pullout) {
-      if (plan.pullout_linear)
+      if (plan.pullout_linear) {
         prog.linear(lp(p.pullout_end));
-      else
-        prog.thread(lp(p.pullout_end), plan.lead);
+      } else {
+        ThreadLead pl = base;
+        if (pl.lead_change != 0) {
+          // The lead where the pull-out begins: K² grows by 2·ΔK per unit of travel.
+          double k2 = pl.lead * pl.lead + 2 * pl.lead_change * dist(p.from, p.to);
+          pl.lead = std::sqrt(std::max(0.0, k2));
+          pl.tpi = 0;
+        }
+        prog.thread(lp(p.pullout_end), pl);
+      }
     }
     prog.rapid(lp(p.clear));
   }
@@ -47,9 +80,8 @@ bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitC
   return true;
 }
 
-std::unique_ptr<Emitter> make_emitter(const Machine& m) {
-  (void)m;  // every machine emulates until the control emitters land
-  return std::make_unique<EmulationEmitter>();
+std::unique_ptr<Emitter> make_emulation_emitter() {
+  return std::make_unique<EmulationEmitter>("emulation");
 }
 
 }  // namespace clpost

@@ -20,6 +20,17 @@ struct NumberFormat {
 
 enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
 enum class ThreadFallback : uint8_t { kLoop, kEmulate, kError };
+// The control's multi-pass threading cycle (threading.cycle) and single-pass loop block
+// (threading.loop); see docs/machines.md.
+enum class ThreadCycle : uint8_t {
+  kNone,
+  kCycle99,
+  kFanucG76,
+  kHaasG76,
+  kHeidenhainG31,
+  kLinuxcncG76
+};
+enum class ThreadLoop : uint8_t { kG33, kG92 };
 enum class ClAxis : uint8_t { kX, kY, kZ };
 
 struct Machine {
@@ -48,6 +59,14 @@ struct Machine {
   bool variable_lead = false;             // G34/G35 style variable lead
   std::string thread_lead_address = "F";  // G33 lead word (F, K, ...)
   std::string start_angle_address = "Q";  // when start_angle_word
+  ThreadCycle thread_cycle = ThreadCycle::kNone;
+  ThreadLoop thread_loop = ThreadLoop::kG33;
+  std::string thread_lead_address_x;  // lead word when the X travel dominates ("" = same)
+  std::string tpi_address;            // threads-per-inch word used when the CL gave TPI ("" none)
+  double run_in = 0;                  // run-in length before the thread start (cycle words)
+  bool extra_spring_passes = false;   // a cycle may add full-depth passes the plan lacks
+  double thread_tolerance = 0;        // largest cut difference that counts as exact, CL units
+                                      // (0 = one least increment of the Z format)
 
   // Output
   std::string extension = ".nc";

@@ -308,6 +308,36 @@ const std::map<std::string, Setter>& scalar_keys() {
     k["threading.start_angle_address"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
       return get_string(c, n, "threading.start_angle_address", m.start_angle_address);
     };
+    k["threading.cycle"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_choice<ThreadCycle>(c, n, "threading.cycle",
+                                     {{"none", ThreadCycle::kNone},
+                                      {"cycle99", ThreadCycle::kCycle99},
+                                      {"fanuc_g76", ThreadCycle::kFanucG76},
+                                      {"haas_g76", ThreadCycle::kHaasG76},
+                                      {"heidenhain_g31", ThreadCycle::kHeidenhainG31},
+                                      {"linuxcnc_g76", ThreadCycle::kLinuxcncG76}},
+                                     m.thread_cycle);
+    };
+    k["threading.loop"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_choice<ThreadLoop>(c, n, "threading.loop",
+                                    {{"g33", ThreadLoop::kG33}, {"g92", ThreadLoop::kG92}},
+                                    m.thread_loop);
+    };
+    k["threading.lead_address_x"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "threading.lead_address_x", m.thread_lead_address_x);
+    };
+    k["threading.tpi_address"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_string(c, n, "threading.tpi_address", m.tpi_address);
+    };
+    k["threading.run_in"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.run_in", 0, 1000, m.run_in);
+    };
+    k["threading.extra_spring_passes"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "threading.extra_spring_passes", m.extra_spring_passes);
+    };
+    k["threading.tolerance"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.tolerance", 0, 1, m.thread_tolerance);
+    };
     return k;
   }();
   return kKeys;

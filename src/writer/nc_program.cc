@@ -3,26 +3,23 @@
 #include <fmt/args.h>
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "writer/number_format.h"
 
 namespace clpost {
 
 namespace {
 
-using Args = fmt::dynamic_format_arg_store<fmt::format_context>;
+using Args = TemplateArgs;
 
-std::string num(const Machine& m, std::string_view address, double v) {
+std::string num_text(const Machine& m, std::string_view address, double v) {
   std::string s;
   append_number(s, v, m.format_for(address));
   return s;
 }
 
-}  // namespace
-
-NcProgram::NcProgram(const Machine& m, Sink& out) : m_(m), w_(m, out) {}
-
-static void emit_template(NcWriter& w, const Machine& m, const std::string& name,
-                          const Args& args) {
+void write_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
   auto it = m.templates.find(name);
   if (it == m.templates.end()) return;
   for (const std::string& line : it->second) {
@@ -32,6 +29,10 @@ static void emit_template(NcWriter& w, const Machine& m, const std::string& name
   }
 }
 
+}  // namespace
+
+NcProgram::NcProgram(const Machine& m, Sink& out) : m_(m), w_(m, out) {}
+
 void NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
   Args a;
   a.push_back(fmt::arg("program_number", m_.program_number));
@@ -39,14 +40,14 @@ void NcProgram::start(std::string_view program_name, bool inch, std::string_view
   a.push_back(fmt::arg("units_code", m_.code(inch ? "inch" : "metric")));
   a.push_back(fmt::arg("machine", m_.name));
   a.push_back(fmt::arg("file", std::string(file)));
-  emit_template(w_, m_, "program_start", a);
+  write_template(w_, m_, "program_start", a);
 }
 
 void NcProgram::end(std::string_view program_name) {
   Args a;
   a.push_back(fmt::arg("program_number", m_.program_number));
   a.push_back(fmt::arg("program_name", std::string(program_name)));
-  emit_template(w_, m_, "program_end", a);
+  write_template(w_, m_, "program_end", a);
 }
 
 void NcProgram::tool_change(int tool, int offset, std::string_view name) {
@@ -54,30 +55,30 @@ void NcProgram::tool_change(int tool, int offset, std::string_view name) {
   a.push_back(fmt::arg("tool", tool));
   a.push_back(fmt::arg("offset", offset));
   a.push_back(fmt::arg("tool_name", std::string(name)));
-  emit_template(w_, m_, "tool_change", a);
+  write_template(w_, m_, "tool_change", a);
   forget_modal();
 }
 
 void NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
   Args a;
-  a.push_back(fmt::arg("rpm", num(m_, "S", rpm)));
+  a.push_back(fmt::arg("rpm", num_text(m_, "S", rpm)));
   a.push_back(
       fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
-  emit_template(w_, m_, "spindle_rpm", a);
+  write_template(w_, m_, "spindle_rpm", a);
 }
 
 void NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
   Args a;
-  a.push_back(fmt::arg("speed", num(m_, "S", speed)));
-  a.push_back(fmt::arg("max_rpm", num(m_, "S", max_rpm)));
+  a.push_back(fmt::arg("speed", num_text(m_, "S", speed)));
+  a.push_back(fmt::arg("max_rpm", num_text(m_, "S", max_rpm)));
   a.push_back(
       fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
-  emit_template(w_, m_, "spindle_css", a);
+  write_template(w_, m_, "spindle_css", a);
 }
 
 void NcProgram::spindle_stop() {
   Args a;
-  emit_template(w_, m_, "spindle_stop", a);
+  write_template(w_, m_, "spindle_stop", a);
 }
 
 void NcProgram::coolant(Coolant c) {
@@ -104,9 +105,9 @@ void NcProgram::set_feed(double feed, FeedMode mode) {
 
 void NcProgram::dwell(double seconds) {
   Args a;
-  a.push_back(fmt::arg("seconds", num(m_, "dwell", seconds)));
-  a.push_back(fmt::arg("revolutions", num(m_, "dwell", seconds)));
-  emit_template(w_, m_, "dwell", a);
+  a.push_back(fmt::arg("seconds", num_text(m_, "dwell", seconds)));
+  a.push_back(fmt::arg("revolutions", num_text(m_, "dwell", seconds)));
+  write_template(w_, m_, "dwell", a);
 }
 
 void NcProgram::program_stop(bool optional) {
@@ -169,13 +170,50 @@ void NcProgram::arc(LathePoint p, LathePoint center, bool ccw) {
 }
 
 void NcProgram::thread(LathePoint p, double lead, std::optional<double> start_angle) {
-  motion_code("thread");
+  ThreadLead l;
+  l.lead = lead;
+  l.start_angle = start_angle;
+  thread(p, l);
+}
+
+void NcProgram::thread(LathePoint p, const ThreadLead& l) {
+  LathePoint from = pos_.value_or(p);
+  bool along_x = std::fabs(x_out(p.r) - x_out(from.r)) > std::fabs(p.z - from.z) &&
+                 !m_.thread_lead_address_x.empty();
+  const std::string& lead_addr = along_x ? m_.thread_lead_address_x : m_.thread_lead_address;
+  if (l.lead_change != 0) {
+    motion_code(l.lead_change > 0 ? "thread_increasing" : "thread_decreasing");
+  } else {
+    motion_code("thread");
+  }
   axes(p, false);
-  w_.word(m_.thread_lead_address, lead);
-  if (start_angle && m_.start_angle_word) w_.word(m_.start_angle_address, *start_angle);
+  if (l.tpi > 0 && !m_.tpi_address.empty()) {
+    w_.word(m_.tpi_address, l.tpi);
+  } else {
+    w_.word(lead_addr, l.lead);
+    if (lead_addr == "F") written_feed_.reset();
+  }
+  if (l.lead_change != 0) {
+    w_.word("F", std::fabs(l.lead_change));
+    written_feed_.reset();
+  }
+  if (l.start_angle && m_.start_angle_word) w_.word(m_.start_angle_address, *l.start_angle);
   w_.end_block();
-  // Where the lead is written as F it replaces the modal feed: the next feed move restates F.
-  if (m_.thread_lead_address == "F") written_feed_.reset();
+}
+
+bool NcProgram::emit_template(const std::string& name, const TemplateArgs& args) {
+  if (!m_.templates.count(name)) return false;
+  write_template(w_, m_, name, args);
+  return true;
+}
+
+std::string NcProgram::num(std::string_view format, double v) const {
+  return num_text(m_, format, v);
+}
+
+void NcProgram::cycle_ended_at(LathePoint p) {
+  forget_modal();
+  pos_ = p;
 }
 
 void NcProgram::forget_modal() {

@@ -3,6 +3,8 @@
 // over NcWriter, so that callers say what the machine should do and only what changes is
 // written. Coordinates are in the lathe frame: `r` is a radius, `z` the spindle axis, in output
 // units; diameter output is applied here.
+#include <fmt/args.h>
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,6 +23,16 @@ struct LathePoint {
   double r = 0;
   double z = 0;
 };
+
+// The words of one synchronized move besides its end point.
+struct ThreadLead {
+  double lead = 0;                    // output units per revolution
+  std::optional<double> start_angle;  // degrees; written only when the machine has the word
+  double tpi = 0;                     // > 0: the CL gave threads per inch (machine tpi_address)
+  double lead_change = 0;             // variable lead: change per revolution (+ INCR, - DECR)
+};
+
+using TemplateArgs = fmt::dynamic_format_arg_store<fmt::format_context>;
 
 class NcProgram {
  public:
@@ -53,6 +65,19 @@ class NcProgram {
   // One synchronized (thread) move; `lead` is written with the post's lead address.
   // `start_angle` adds the start-angle word when the machine has one.
   void thread(LathePoint p, double lead, std::optional<double> start_angle = std::nullopt);
+  // The same with every lead word: the lead goes to threading.lead_address, or
+  // threading.lead_address_x when the X travel dominates; with a TPI and a tpi_address the
+  // thread count per inch of the lead is written instead; a lead change selects the codes
+  // thread_increasing / thread_decreasing (G34 / G35) with the change in the F format.
+  void thread(LathePoint p, const ThreadLead& l);
+
+  // Writes the machine's template `name`, one block per line, with named fields (numbers
+  // already formatted with num()). Returns false when the machine has no such template.
+  bool emit_template(const std::string& name, const TemplateArgs& args);
+  // `v` as the machine writes numbers of format `format` (an address or a named format).
+  std::string num(std::string_view format, double v) const;
+  // After a cycle: the tool is at `p` (lathe frame, output units); modal words are unknown.
+  void cycle_ended_at(LathePoint p);
 
   // Where the tool is (unknown until the first move).
   std::optional<LathePoint> position() const { return pos_; }

@@ -1,0 +1,141 @@
+// make_emitter: the machine's threading strategy with its fallback ("exact or fall back",
+// controllers.md). The cycle and loop emitters are listed in make_cycle_emitter /
+// make_loop_emitter below; add a new control's emitter there.
+#include <fmt/format.h>
+
+#include "emitters/emitter.h"
+#include "emitters/emulation_emitter.h"
+
+namespace clpost {
+
+std::unique_ptr<Emitter> make_cycle_emitter(ThreadCycle c) {
+  switch (c) {
+    case ThreadCycle::kNone:
+      return nullptr;
+    case ThreadCycle::kCycle99:
+    case ThreadCycle::kFanucG76:
+    case ThreadCycle::kHaasG76:
+    case ThreadCycle::kHeidenhainG31:
+    case ThreadCycle::kLinuxcncG76:
+      return nullptr;  // not yet written: the strategy falls back
+  }
+  return nullptr;
+}
+
+std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l) {
+  switch (l) {
+    case ThreadLoop::kG33:
+      return std::make_unique<EmulationEmitter>("G33 loop");
+    case ThreadLoop::kG92:
+      return nullptr;  // not yet written
+  }
+  return nullptr;
+}
+
+namespace {
+
+// Tries each emitter in order; the first that fits writes the thread. When the first one does
+// not fit, an NC comment says why (or, with `fallback: error`, an error diagnostic).
+class ThreadOutput : public Emitter {
+ public:
+  ThreadOutput(const Machine& m, std::vector<std::unique_ptr<Emitter>> chain, bool error_fallback)
+      : m_(m), chain_(std::move(chain)), error_fallback_(error_fallback) {}
+
+  std::string_view name() const override { return chain_.front()->name(); }
+
+  Fit fit(const ThreadPlan& plan, const Machine& m) const override {
+    for (const auto& e : chain_) {
+      Fit f = e->fit(plan, m);
+      if (f.exact() || error_fallback_) return f;
+    }
+    return chain_.back()->fit(plan, m);
+  }
+
+  bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) override {
+    std::string why;
+    for (size_t i = 0; i < chain_.size(); ++i) {
+      Emitter& e = *chain_[i];
+      Fit f = e.fit(plan, m_);
+      if (!f.exact()) {
+        if (error_fallback_) {
+          ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
+                          fmt::format("machine '{}': {} would not cut the planned passes: {} "
+                                      "(threading.fallback is 'error')",
+                                      m_.name, e.name(), f.mismatch));
+          return false;
+        }
+        if (why.empty()) why = fmt::format("{} not used: {}", e.name(), f.mismatch);
+        continue;
+      }
+      if (!why.empty()) prog.comment(fmt::format("{}. {} instead", why, e.name()));
+      for (const std::string& n : f.notes) prog.comment(n);
+      return e.emit(plan, prog, ctx);
+    }
+    ctx.diags.error(
+        plan.loc, ctx.lines.text(plan.loc.line),
+        fmt::format("machine '{}': no threading output can cut this thread: {}", m_.name, why));
+    return false;
+  }
+
+ private:
+  const Machine& m_;
+  std::vector<std::unique_ptr<Emitter>> chain_;
+  bool error_fallback_;
+};
+
+}  // namespace
+
+namespace {
+
+std::vector<std::unique_ptr<Emitter>> emitter_chain(const Machine& m) {
+  std::vector<std::unique_ptr<Emitter>> chain;
+  auto add = [&](std::unique_ptr<Emitter> e) {
+    if (!e) return false;
+    for (const auto& have : chain)
+      if (have->name() == e->name()) return true;
+    chain.push_back(std::move(e));
+    return true;
+  };
+  // The strategy's own output; a style this build does not have degrades to the next simpler.
+  switch (m.thread_strategy) {
+    case ThreadStrategy::kCycle:
+      if (add(make_cycle_emitter(m.thread_cycle))) break;
+      [[fallthrough]];
+    case ThreadStrategy::kLoop:
+      if (add(make_loop_emitter(m.thread_loop))) break;
+      [[fallthrough]];
+    case ThreadStrategy::kEmulate:
+      add(make_emulation_emitter());
+  }
+  switch (m.thread_fallback) {
+    case ThreadFallback::kLoop:
+      add(make_loop_emitter(m.thread_loop));
+      break;
+    case ThreadFallback::kEmulate:
+      add(make_emulation_emitter());
+      break;
+    case ThreadFallback::kError:
+      return chain;
+  }
+  // Plain emulation cuts any plan: the last resort behind a loop that cannot say it (a G92
+  // loop has no face thread).
+  add(make_emulation_emitter());
+  return chain;
+}
+
+}  // namespace
+
+std::unique_ptr<Emitter> make_emitter(const Machine& m) {
+  return std::make_unique<ThreadOutput>(m, emitter_chain(m),
+                                        m.thread_fallback == ThreadFallback::kError);
+}
+
+std::string threading_summary(const Machine& m) {
+  std::string s;
+  for (const auto& e : emitter_chain(m))
+    s += fmt::format("{}{}", s.empty() ? "" : ", else ", e->name());
+  if (m.thread_fallback == ThreadFallback::kError && s != "emulation") s += ", else error";
+  return s;
+}
+
+}  // namespace clpost
