@@ -498,6 +498,49 @@ bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_po
   return ok && !c.diags.has_errors();
 }
 
+namespace {
+
+// What every machine must define, through its post or itself: without these the program would
+// silently lack its motion codes or its start and end.
+const std::vector<std::string>& required_codes() {
+  static const std::vector<std::string> k = {"rapid",   "linear",     "arc_cw",
+                                             "arc_ccw", "thread",     "metric",
+                                             "inch",    "spindle_cw", "spindle_ccw"};
+  return k;
+}
+const std::vector<std::string>& required_templates() {
+  static const std::vector<std::string> k = {"program_start", "program_end", "tool_change",
+                                             "spindle_rpm", "spindle_stop"};
+  return k;
+}
+
+bool check_required(const std::string& path, const std::string& text, const Machine& m,
+                    std::string& errors) {
+  std::vector<std::string> missing;
+  for (const std::string& c : required_codes())
+    if (m.code(c).empty()) missing.push_back("codes." + c);
+  for (const std::string& t : required_templates())
+    if (!m.templates.count(t)) missing.push_back("templates." + t);
+  if (missing.empty()) return true;
+  YamlText t(text);
+  uint32_t line = m.post.empty() ? 1 : t.find_key_line("extends");
+  Diagnostics d(path);
+  std::string list;
+  for (const std::string& k : missing) list += (list.empty() ? "'" : ", '") + k + "'";
+  d.error(SourceLoc{line, 1}, t.line(line),
+          m.post.empty()
+              ? fmt::format("missing required {} {} (a machine file normally 'extends' a post "
+                            "from posts/ that defines them)",
+                            missing.size() == 1 ? "key" : "keys", list)
+              : fmt::format("missing required {} {}: empty or absent in this machine and its "
+                            "post '{}'",
+                            missing.size() == 1 ? "key" : "keys", list, m.post));
+  errors += d.render_all();
+  return false;
+}
+
+}  // namespace
+
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
                   const std::vector<std::string>& overrides, Machine& out, std::string& errors) {
   std::string path;
@@ -602,6 +645,7 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
       return false;
     }
   }
+  if (!check_required(path, machine_text, m, errors)) return false;
   out = std::move(m);
   return true;
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 namespace clpost {
 namespace {
 
@@ -93,6 +95,72 @@ TEST(MachineLoader, UnknownMachineListsShippedOnes) {
                          0),
             0u)
       << errors;
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  std::string path = testing::TempDir() + name;
+  FILE* f = std::fopen(path.c_str(), "w");
+  std::fwrite(text.data(), 1, text.size(), f);
+  std::fclose(f);
+  return path;
+}
+
+TEST(MachineLoader, MachineWithoutPostMissesRequiredKeys) {
+  std::string path = write_temp("lonely.yaml", "description: no post\nunits: mm\n");
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+  EXPECT_EQ(errors, path +
+                        ":1:1: error: missing required keys 'codes.rapid', 'codes.linear', "
+                        "'codes.arc_cw', 'codes.arc_ccw', 'codes.thread', 'codes.metric', "
+                        "'codes.inch', 'codes.spindle_cw', 'codes.spindle_ccw', "
+                        "'templates.program_start', 'templates.program_end', "
+                        "'templates.tool_change', 'templates.spindle_rpm', "
+                        "'templates.spindle_stop' (a machine file normally 'extends' a post from "
+                        "posts/ that defines them)\n"
+                        "  description: no post\n"
+                        "  ^\n");
+}
+
+TEST(MachineLoader, EmptiedRequiredCodeIsAnError) {
+  std::string path =
+      write_temp("emptied.yaml", "# no thread code\nextends: iso-lathe\ncodes: {thread: ''}\n");
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+  EXPECT_EQ(errors, path +
+                        ":2:1: error: missing required key 'codes.thread': empty or absent in "
+                        "this machine and its post 'iso-lathe'\n"
+                        "  extends: iso-lathe\n"
+                        "  ^\n");
+}
+
+TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading: {cycle: g76}\n", false, m, errors));
+  EXPECT_NE(errors.find("m.yaml:1:20: error: 'threading.cycle' must be one of"), std::string::npos)
+      << errors;
+  errors.clear();
+  EXPECT_TRUE(apply_machine_yaml("m.yaml",
+                                 "threading: {cycle: fanuc_g76, loop: g92, run_in: 2.5, "
+                                 "tolerance: 0.005, extra_spring_passes: true, tpi_address: E, "
+                                 "lead_address_x: I}\n",
+                                 false, m, errors))
+      << errors;
+  EXPECT_EQ(m.thread_cycle, ThreadCycle::kFanucG76);
+  EXPECT_EQ(m.thread_loop, ThreadLoop::kG92);
+  EXPECT_DOUBLE_EQ(m.run_in, 2.5);
+  EXPECT_DOUBLE_EQ(m.thread_tolerance, 0.005);
+  EXPECT_TRUE(m.extra_spring_passes);
+  EXPECT_EQ(m.tpi_address, "E");
+  EXPECT_EQ(m.thread_lead_address_x, "I");
 }
 
 }  // namespace
