@@ -77,3 +77,62 @@ TEST(NcProgram, ThreadLeadInFRestatesTheFeedAfterwards) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// The lead words of thread blocks: K along Z, I when the X travel dominates (a face thread),
+// E threads per inch, SF= start angle, G34/G35 with the lead change in F.
+TEST(NcProgram, ThreadLeadWords) {
+  Machine m = test_machine();
+  m.thread_lead_address = "K";
+  m.thread_lead_address_x = "I";
+  m.start_angle_word = true;
+  m.start_angle_address = "SF=";
+  m.codes["thread_increasing"] = "G34";
+  m.codes["thread_decreasing"] = "G35";
+  m.formats["K"] = NumberFormat{6, false, true, true, 1};
+  m.formats["I"] = NumberFormat{6, false, true, true, 1};
+  StringSink out;
+  NcProgram p(m, out);
+  p.rapid({10, 2});
+  ThreadLead l;
+  l.lead = 1.5;
+  l.start_angle = 180;
+  p.thread({10, -20}, l);  // 22 along Z: K
+  p.rapid({40, 0});
+  l.start_angle.reset();
+  p.thread({20, 0}, l);  // 20 radius = 40 on the diameter along X, 0 along Z: I
+  p.rapid({10, 2});
+  ThreadLead v;
+  v.lead = 2;
+  v.lead_change = 0.05;
+  p.thread({10, -20}, v);
+  p.rapid({10, 2});
+  v.lead_change = -0.05;
+  p.thread({10, -20}, v);
+  EXPECT_EQ(out.out,
+            "G0 X20. Z2.\nG33 Z-20. K1.5 SF=180.\nG0 X80. Z0.\nG33 X40. I1.5\nG0 X20. Z2.\n"
+            "G34 Z-20. K2. F0.05\nG0 Z2.\nG35 Z-20. K2. F0.05\n");
+}
+
+TEST(NcProgram, ThreadsPerInchWord) {
+  Machine m = test_machine();
+  m.thread_lead_address = "F";
+  m.tpi_address = "E";
+  m.formats["E"] = NumberFormat{4, false, true, true, 1};
+  StringSink out;
+  NcProgram p(m, out);
+  p.rapid({5, 2});
+  ThreadLead l;
+  l.lead = 25.4 / 13;
+  l.tpi = 13;
+  p.thread({5, -20}, l);
+  l.tpi = 0;  // a machine without the word, or a metric lead: F
+  p.rapid({5, 2});
+  p.thread({5, -20}, l);
+  EXPECT_EQ(out.out, "G0 X10. Z2.\nG33 Z-20. E13.\nG0 Z2.\nG33 Z-20. F1.954\n");
+}
+
+}  // namespace
+}  // namespace clpost
