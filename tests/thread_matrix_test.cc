@@ -5,6 +5,7 @@
 // delta, within 0.001 mm.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -180,6 +181,43 @@ const Case kCases[] = {
      {0.375, -1},
      "DEPTH,0.0384,CUTS,4,CUTANG,210,TPI,16",
      nullptr},
+    // Cut as G76 on linuxcnc-lathe: H2, the exit taper E L2, an angled infeed as Q, a thread
+    // cut toward +Z, an internal constant-depth thread.
+    {"g76_spring",
+     false,
+     {15, 5},
+     {10, 2},
+     {10, -30},
+     "DEPTH,1.534,CUTS,5,FINCUT,2,OPTION,1,MMPR,2.5",
+     nullptr},
+    {"g76_exit_taper",
+     false,
+     {15, 5},
+     {10, 2},
+     {10, -30},
+     "DEPTH,1.534,CUTS,5,OPTION,1,CHAMFR,1.534,MMPR,2.5",
+     nullptr},
+    {"g76_cutang",
+     false,
+     {15, 5},
+     {10, 2},
+     {10, -30},
+     "DEPTH,1.534,CUTS,4,OPTION,3,CUTANG,210,MMPR,2.5",
+     nullptr},
+    {"g76_toward_plus",
+     false,
+     {15, -35},
+     {10, -30},
+     {10, 2},
+     "DEPTH,1.534,CUTS,5,OPTION,1,MMPR,2.5",
+     nullptr},
+    {"g76_internal_opt3",
+     false,
+     {5, 5},
+     {8.5, 2},
+     {8.5, -25},
+     "DEPTH,1.083,STEP,0.3,OPTION,3,MMPR,2",
+     nullptr},
 };
 
 bool have_rs274() {
@@ -246,6 +284,32 @@ std::vector<Seg> synced(const std::string& canon) {
   return out;
 }
 
+// The cases linuxcnc-lathe writes as one G76 block (its law gives exactly the planned passes);
+// the others fall back to the emulation, each with a comment saying why. The reasons, by case:
+// OPTION 0 laws, alternating flanks (OPTION 2, 4), couplets, every pull-out whose rise is not the
+// thread depth or that is not threaded, several starts, taper, face.
+// opt1_cuts_fincut and inch_tpi have a finish allowance that G76 happens to cut: the last
+// rough depth times sqrt((c + 1)/c) is not below DEPTH, so the control goes to K next.
+const char* const kG76Cases[] = {
+    "opt1_cuts_fincut", "opt1_step",      "opt3_cuts",  "internal",        "inch_tpi",
+    "g76_spring",       "g76_exit_taper", "g76_cutang", "g76_toward_plus", "g76_internal_opt3"};
+
+bool expects_g76(const Case& c) {
+  for (const char* n : kG76Cases)
+    if (std::string(n) == c.name) return true;
+  return false;
+}
+
+// G76 blocks and fallback comments in a LinuxCNC program.
+int count_lines_starting(const std::string& text, const std::string& prefix) {
+  int n = 0;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.compare(0, prefix.size(), prefix) == 0) ++n;
+  return n;
+}
+
 class ThreadMatrix : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ThreadMatrix, Rs274CutsThePlan) {
@@ -263,6 +327,11 @@ TEST_P(ThreadMatrix, Rs274CutsThePlan) {
   RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -t " +
                     quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
   ASSERT_EQ(r.exit_code, 0) << "rs274: " << r.err << "\n" << read_file(ngc);
+  // G76 where its law gives the plan, else the emulation with the reason: either way rs274 must
+  // cut exactly the planned passes (below).
+  const std::string nc = read_file(ngc);
+  EXPECT_EQ(count_lines_starting(nc, "G76 "), expects_g76(c) ? 1 : 0) << nc;
+  EXPECT_EQ(count_lines_starting(nc, "(G76 not used: "), expects_g76(c) ? 0 : 1) << nc;
   std::vector<Seg> want = planned(plan.out, c.linear_pullout);
   std::vector<Seg> got = synced(r.out);
   ASSERT_GT(want.size(), 0u);
@@ -276,6 +345,78 @@ TEST_P(ThreadMatrix, Rs274CutsThePlan) {
     EXPECT_NEAR(got[i].to.x, want[i].to.x, tol) << c.name << " segment " << i + 1;
     EXPECT_NEAR(got[i].to.z, want[i].to.z, tol) << c.name << " segment " << i + 1;
   }
+  fs::remove_all(dir);
+}
+
+// The planned synchronized segments of every thread in a `clpost plan --format json` printout,
+// in order: each thread's passes with its pull-out, which emulation feeds with G1 (not
+// synchronized) when its angle to the thread line is outside 30..60 degrees.
+std::vector<Seg> planned_all(const std::string& json) {
+  std::vector<Seg> out;
+  std::vector<size_t> at;
+  for (size_t p = json.find("\"line\": "); p != std::string::npos;
+       p = json.find("\"line\": ", p + 1))
+    at.push_back(p);
+  at.push_back(json.size());
+  std::regex p1_re(
+      R"re("p1": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\},\s*"p2": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\})re");
+  std::regex pullout_re(R"re("pullout": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\})re");
+  for (size_t i = 0; i + 1 < at.size(); ++i) {
+    const std::string one = json.substr(at[i], at[i + 1] - at[i]);
+    std::smatch m, q;
+    bool linear = false;
+    if (std::regex_search(one, q, pullout_re) && std::regex_search(one, m, p1_re)) {
+      const double tx = std::stod(m[4]) - std::stod(m[2]), tr = std::stod(m[3]) - std::stod(m[1]);
+      const double dx = std::stod(q[1]), dz = std::stod(q[2]);
+      const double c = std::fabs(tx * dz + tr * dx) / std::hypot(tx, tr) / std::hypot(dx, dz);
+      const double angle = std::acos(std::min(1.0, c)) * 180 / 3.14159265358979323846;
+      linear = angle < 30 - 1e-6 || angle > 60 + 1e-6;
+    }
+    std::vector<Seg> segs = planned(one, linear);
+    out.insert(out.end(), segs.begin(), segs.end());
+  }
+  return out;
+}
+
+// The shared thread samples and linuxcnc-lathe's own sample, posted on linuxcnc-lathe: every
+// thread written as G76 (and every fallback) cuts in rs274 exactly the planned passes.
+TEST(ThreadSamples, Rs274CutsThePlanOfEveryThread) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(source_dir() + "/samples/threads"))
+    if (e.path().extension() == ".apt") files.push_back(e.path().string());
+  files.push_back(source_dir() + "/samples/machines/linuxcnc-lathe.apt");
+  files.push_back(source_dir() + "/samples/thread-m20.apt");
+  std::sort(files.begin(), files.end());
+  std::string dir = temp_dir();
+  int g76 = 0;
+  for (const std::string& f : files) {
+    std::string ngc = dir + "/" + fs::path(f).stem().string() + ".ngc";
+    RunResult plan = run(quote(clpost_bin()) + " plan --format json -m linuxcnc-lathe " + quote(f));
+    ASSERT_EQ(plan.exit_code, 0) << plan.err;
+    RunResult post =
+        run(quote(clpost_bin()) + " -m linuxcnc-lathe -o " + quote(ngc) + " " + quote(f));
+    ASSERT_EQ(post.exit_code, 0) << post.err;
+    RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -t " +
+                      quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+    ASSERT_EQ(r.exit_code, 0) << f << ": rs274: " << r.err << "\n" << read_file(ngc);
+    const std::string nc = read_file(ngc);
+    g76 += count_lines_starting(nc, "G76 ");
+    std::vector<Seg> want = planned_all(plan.out);
+    std::vector<Seg> got = synced(r.out);
+    ASSERT_EQ(got.size(), want.size()) << f << "\n" << nc;
+    const double tol =
+        plan.out.find("\"units\": \"in\"") != std::string::npos ? 0.001 / 25.4 + 0.00005 : 0.001;
+    for (size_t i = 0; i < want.size(); ++i) {
+      EXPECT_NEAR(got[i].from.x, want[i].from.x, tol) << f << " segment " << i + 1;
+      EXPECT_NEAR(got[i].from.z, want[i].from.z, tol) << f << " segment " << i + 1;
+      EXPECT_NEAR(got[i].to.x, want[i].to.x, tol) << f << " segment " << i + 1;
+      EXPECT_NEAR(got[i].to.z, want[i].to.z, tol) << f << " segment " << i + 1;
+    }
+  }
+  // finish 3, inch 1, internal 1, options 4, pullouts 2, linuxcnc-lathe 5 (see the goldens).
+  EXPECT_EQ(g76, 16);
   fs::remove_all(dir);
 }
 

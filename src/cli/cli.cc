@@ -4,15 +4,24 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "cli/batch.h"
+#include "cli/batch_report.h"
 #include "cli/data_dirs.h"
 #include "cli/post_file.h"
 #include "emitters/emitter.h"
 #include "machine/machine_loader.h"
 #include "planner/plan_format.h"
+#include "support/output_file.h"
 
 #ifndef CLPOST_VERSION
 #define CLPOST_VERSION "0"
@@ -40,9 +49,13 @@ constexpr const char* kFooter = R"(Examples:
   clpost -m generic-lathe --set block_numbers.enabled=false part.cl
   clpost check *.cl                       parse and validate, write nothing
   clpost plan --format json thread.cl     the thread pass plan
+  clpost -m generic-lathe -d out/ -j 4 --keep-going *.cl   batch: out/<stem>.nc for each
+  clpost -d out/ -r cl-files/ --report report.json          a directory tree, with a report
   clpost machines                         list the shipped machines
 
-Exit status: 0 ok, 1 errors in the input, 2 usage or machine-file errors.)";
+Exit status: 0 ok, 1 errors in the input, 2 usage or machine-file errors.
+A batch (-d) exits 1 when any file failed, 2 when it could not start (duplicate output names,
+an output directory that cannot be written).)";
 
 struct MachineOpts {
   std::string machine = "generic-lathe";
@@ -64,6 +77,99 @@ bool load(const MachineOpts& o, Machine& m) {
   return false;
 }
 
+struct BatchOpts {
+  std::string out_dir;
+  bool recursive = false;
+  unsigned jobs = 0;  // 0: the machine's cores
+  bool keep_going = false;
+  bool quiet = false;
+  std::string report;
+
+  bool used(const CLI::App& app) const {
+    for (const char* name : {"-r", "-j", "--keep-going", "--quiet", "--report"})
+      if (app.count(name) > 0) return true;
+    return false;
+  }
+};
+
+void add_batch_opts(CLI::App& app, BatchOpts& b) {
+  app.add_option("-d,--output-dir", b.out_dir,
+                 "Batch: post every input to OUTDIR/<stem><machine extension>")
+      ->type_name("OUTDIR");
+  app.add_flag("-r,--recursive", b.recursive,
+               "Batch: post the CL files in directories, recursively");
+  app.add_option("-j,--jobs", b.jobs, "Batch: files posted at once (default: the machine's cores)")
+      ->check(CLI::Range(1u, 1024u));
+  app.add_flag("--keep-going", b.keep_going,
+               "Batch: post every file even after a failure (exit status 1 all the same)");
+  app.add_flag("-q,--quiet", b.quiet, "Batch: print only the failed files");
+  app.add_option("--report", b.report, "Batch: write per-file results as JSON")
+      ->type_name("FILE.json");
+}
+
+// Problems found before anything is posted (usage, the output directory) exit 2; failed files
+// exit 1.
+int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict,
+                      const std::vector<std::string>& args) {
+  namespace fs = std::filesystem;
+  const auto t0 = std::chrono::steady_clock::now();
+  Machine m;
+  if (!load(mo, m)) return kExitUsage;
+  std::vector<std::string> files;
+  std::vector<BatchItem> items;
+  std::string err;
+  if (!collect_inputs(args, b.recursive, files, err) ||
+      !plan_outputs(files, b.out_dir, m.extension, items, err)) {
+    print_err(fmt::format("clpost: error: {}\n", err));
+    return kExitUsage;
+  }
+  std::error_code ec;
+  fs::create_directories(b.out_dir, ec);
+  if (ec || !fs::is_directory(b.out_dir, ec)) {
+    print_err(fmt::format("clpost: error: cannot create the output directory '{}': {}\n", b.out_dir,
+                          ec ? ec.message() : "not a directory"));
+    return kExitUsage;
+  }
+  if (::access(b.out_dir.c_str(), W_OK | X_OK) != 0) {
+    print_err(fmt::format("clpost: error: cannot write to the output directory '{}': {}\n",
+                          b.out_dir, std::strerror(errno)));
+    return kExitUsage;
+  }
+
+  BatchSettings settings;
+  settings.jobs = b.jobs != 0 ? b.jobs : std::max(1u, std::thread::hardware_concurrency());
+  settings.keep_going = b.keep_going;
+  settings.post = PostOptions{strict};
+  const bool bar = !b.quiet && ::isatty(STDERR_FILENO) == 1;
+  size_t done = 0, failed = 0;
+  auto on_result = [&](const FileResult& r) {
+    ++done;
+    if (r.status == FileStatus::kError) ++failed;
+    std::string text;
+    if (bar) text += "\r\033[K";
+    if (!b.quiet || r.status == FileStatus::kError) text += file_line(r);
+    if (bar) text += progress_bar(done, items.size(), failed);
+    print_err(text);
+  };
+  std::vector<FileResult> results = run_batch(items, m, settings, on_result);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const BatchSummary summary = summarize(results, seconds);
+  if (bar) print_err("\r\033[K");
+  if (!b.quiet) print_err(summary_line(summary));
+  int rc = summary.failed > 0 ? kExitInput : kExitOk;
+  if (!b.report.empty()) {
+    const std::string json =
+        batch_report_json(BatchReportInfo{m.name, b.out_dir, settings.jobs}, summary, results);
+    OutputFile report;
+    if (!report.open(b.report, err) || (report.write(json), !report.commit(err))) {
+      print_err(fmt::format("clpost: error: cannot write the report: {}\n", err));
+      rc = kExitInput;
+    }
+  }
+  return rc;
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
@@ -73,12 +179,16 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(0, 1);
 
   MachineOpts post_opts;
-  std::string input, output;
+  std::vector<std::string> inputs;
+  std::string output;
   bool strict = false;
+  BatchOpts batch;
   add_machine_opts(app, post_opts);
   app.add_option("-o,--output", output, "Output file (default: standard output)");
   app.add_flag("--strict", strict, "Unknown CL statements are errors, not warnings");
-  app.add_option("input", input, "CL file to post ('-' for standard input)");
+  add_batch_opts(app, batch);
+  app.add_option("inputs", inputs,
+                 "CL file to post ('-' for standard input); with -d: files and directories");
 
   CLI::App* machines = app.add_subcommand("machines", "List the shipped machines");
 
@@ -117,7 +227,7 @@ int run_cli(int argc, char** argv) {
         rc = kExitUsage;
         continue;
       }
-      print_out(fmt::format("{:<18} {:<5} {:<34} {}\n", mi.name, m.extension, threading_summary(m),
+      print_out(fmt::format("{:<18} {:<5} {:<40} {}\n", mi.name, m.extension, threading_summary(m),
                             m.description));
     }
     return rc;
@@ -169,14 +279,29 @@ int run_cli(int argc, char** argv) {
     return rc;
   }
 
-  if (input.empty()) {
+  if (inputs.empty()) {
     print_err(app.help());
     print_err("\nclpost: error: no input file (use '-' for standard input)\n");
     return kExitUsage;
   }
+  if (!batch.out_dir.empty() || batch.used(app)) {
+    if (batch.out_dir.empty()) {
+      print_err("clpost: error: -r, -j, --keep-going, --quiet and --report need -d OUTDIR\n");
+      return kExitUsage;
+    }
+    if (!output.empty()) {
+      print_err("clpost: error: -o and -d cannot be used together\n");
+      return kExitUsage;
+    }
+    return run_batch_command(post_opts, batch, strict, inputs);
+  }
+  if (inputs.size() > 1) {
+    print_err("clpost: error: several inputs need an output directory: -d OUTDIR\n");
+    return kExitUsage;
+  }
   Machine m;
   if (!load(post_opts, m)) return kExitUsage;
-  PostRequest req{input, output.empty() ? "-" : output, &m, PostOptions{strict}, nullptr};
+  PostRequest req{inputs[0], output.empty() ? "-" : output, &m, PostOptions{strict}, nullptr};
   PostOutcome r = post_file(req);
   print_err(r.diagnostics);
   return r.ok ? kExitOk : kExitInput;

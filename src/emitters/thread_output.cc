@@ -5,6 +5,11 @@
 
 #include "emitters/emitter.h"
 #include "emitters/emulation_emitter.h"
+#include "emitters/fanuc_emitter.h"
+#include "emitters/haas_emitter.h"
+#include "emitters/heidenhain_emitter.h"
+#include "emitters/linuxcnc_emitter.h"
+#include "emitters/siemens_emitter.h"
 
 namespace clpost {
 
@@ -13,11 +18,15 @@ std::unique_ptr<Emitter> make_cycle_emitter(ThreadCycle c) {
     case ThreadCycle::kNone:
       return nullptr;
     case ThreadCycle::kCycle99:
+      return std::make_unique<Cycle99Emitter>();
     case ThreadCycle::kFanucG76:
+      return std::make_unique<FanucG76Emitter>();
     case ThreadCycle::kHaasG76:
+      return std::make_unique<HaasG76Emitter>();
     case ThreadCycle::kHeidenhainG31:
+      return std::make_unique<HeidenhainG31Emitter>();
     case ThreadCycle::kLinuxcncG76:
-      return nullptr;  // not yet written: the strategy falls back
+      return std::make_unique<LinuxcncG76Emitter>();
   }
   return nullptr;
 }
@@ -27,7 +36,7 @@ std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l) {
     case ThreadLoop::kG33:
       return std::make_unique<EmulationEmitter>("G33 loop");
     case ThreadLoop::kG92:
-      return nullptr;  // not yet written
+      return std::make_unique<G92Emitter>();
   }
   return nullptr;
 }

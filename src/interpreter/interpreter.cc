@@ -65,8 +65,17 @@ bool Interpreter::number_arg(const Statement& st, size_t i, std::string_view wha
     error(st, a.loc, fmt::format("expected {} but found '{}'", what, a.text));
     return false;
   }
+  if (!in_range(st, a, what)) return false;
   out = a.number;
   return true;
+}
+
+bool Interpreter::in_range(const Statement& st, const Arg& a, std::string_view what) {
+  if (std::abs(a.number) <= kMaxValue) return true;
+  error(st, a.loc,
+        fmt::format("{} '{}' is out of range: CL values must be between -{} and {}", what, a.text,
+                    kMaxValue, kMaxValue));
+  return false;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -102,7 +111,9 @@ void Interpreter::statement(const Statement& st) {
     bool closing =
         (w == "THREAD" && !st.args.empty() && st.args[0].is("OFF")) ||
         (w == "OP" && st.args.size() >= 2 && st.args[0].is("THREAD") && st.args[1].is("NOMORE"));
-    if (w != "GOTO" && w != "RAPID" && w != "FEDRAT" && !closing) {
+    // A THREAD/ON (or THREAD/TURN...) inside THREAD/ON: thread_stmt says THREAD/OFF is missing.
+    const bool nested_thread = seq_ == Seq::kMulti && w == "THREAD";
+    if (w != "GOTO" && w != "RAPID" && w != "FEDRAT" && !closing && !nested_thread) {
       if (seq_ == Seq::kSingle) {
         error(st, st.loc,
               fmt::format(
@@ -283,6 +294,7 @@ void Interpreter::fedrat_stmt(const Statement& st) {
               fmt::format("FEDRAT/ takes one feed value; found a second number '{}'", a.text));
         return;
       }
+      if (!in_range(st, a, "feed")) return;
       value = a.number;
       have_value = true;
     } else if (a.is("MMPM")) {
@@ -338,6 +350,7 @@ void Interpreter::spindl_stmt(const Statement& st) {
               fmt::format("SPINDL/ takes one speed; found a second number '{}'", a.text));
         return;
       }
+      if (!in_range(st, a, "spindle speed")) return;
       value = a.number, value_loc = a.loc;
     } else if (a.is("RPM")) {
       css = false;
@@ -360,6 +373,7 @@ void Interpreter::spindl_stmt(const Statement& st) {
         error(st, a.loc, "MAXRPM needs a speed limit");
         return;
       }
+      if (!in_range(st, st.args[i + 1], "MAXRPM")) return;
       max_rpm = st.args[++i].number;
     } else if (a.is("RANGE")) {
       if (i + 1 < st.args.size() && st.args[i + 1].is_number()) ++i;
@@ -425,10 +439,17 @@ void Interpreter::loadtl_stmt(const Statement& st, size_t first) {
   int offset = static_cast<int>(tool);
   for (size_t i = first + 1; i + 1 < st.args.size(); ++i) {
     if ((st.args[i].is("ADJUST") || st.args[i].is("OSETNO") || st.args[i].is("OFFSET")) &&
-        st.args[i + 1].is_number())
-      offset = static_cast<int>(st.args[i + 1].number);
+        st.args[i + 1].is_number()) {
+      const Arg& o = st.args[i + 1];
+      if (o.number < 0 || o.number != std::floor(o.number) || o.number > 9999) {
+        error(st, o.loc, fmt::format("tool offset must be a whole number 0..9999, got {}", o.text));
+        return;
+      }
+      offset = static_cast<int>(o.number);
+    }
   }
   ensure_started();
+  tool_offset_ = offset;
   prog_.tool_change(static_cast<int>(tool), offset, "");
   // A tool change cancels what the control knew of the position.
 }
@@ -498,6 +519,7 @@ void Interpreter::cycle_stmt(const Statement& st) {
     in_cycle_ = false;
     return;
   }
+  if (!st.args.empty() && st.args[0].is("UNDCUT")) return undercut_stmt(st);
   in_cycle_ = true;  // its hole positions are not posted as plain moves
   std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
   error(st, st.loc,

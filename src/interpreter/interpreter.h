@@ -71,6 +71,7 @@ class Interpreter {
   void couple_stmt(const Statement& st);
   void op_stmt(const Statement& st);
   void cycle_stmt(const Statement& st);
+  void undercut_stmt(const Statement& st);  // CYCLE/UNDCUT (undercut.cc)
   void skipped(const Statement& st, std::string_view why);
   void unknown(const Statement& st);
 
@@ -92,7 +93,14 @@ class Interpreter {
   void warning(const Statement& st, SourceLoc loc, std::string msg);
   void note_once(const Statement& st, std::string_view key, std::string msg);
   bool number_arg(const Statement& st, size_t i, std::string_view what, double& out);
+  bool in_range(const Statement& st, const Arg& a, std::string_view what);
 
+ public:
+  // The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything
+  // larger is a units mistake or garbage, and would not fit an NC address anyway.
+  static constexpr double kMaxValue = 1e6;
+
+ private:
   const Machine& m_;
   NcProgram& prog_;
   Diagnostics& diags_;
@@ -122,6 +130,7 @@ class Interpreter {
   std::vector<std::string> noted_;  // words already noted once
   size_t y_warnings_ = 0;
   bool in_cycle_ = false;  // between an unsupported CYCLE/ and CYCLE/OFF
+  int tool_offset_ = -1;   // offset of the last LOADTL (-1: no tool loaded yet)
   size_t axis_notes_ = 0;
 
   // Threading

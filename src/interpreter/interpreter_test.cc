@@ -257,3 +257,244 @@ TEST(InterpreterThreads, UnterminatedSequencesAreErrorsAtTheirStart) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+TEST(InterpreterThreads, PerAxisFeedLimits) {
+  // Taper from radius 10 at Z2 to radius 12 at Z-18, lead 2 at 1000 rpm: Z moves
+  // 2 x 1000 = 2000 per minute, X 2000 x 2/20 = 200 (radius).
+  const std::string cl =
+      "SPINDL/1000,RPM,CLW\nRAPID\nGOTO/14,0,4\nTHREAD/TAPER,MMPR,2\nRAPID\nGOTO/10,0,2\n"
+      "GOTO/12,0,-18\nFINI\n";
+  Posted ok = post(cl, generic({"limits.max_feed_x=200", "limits.max_feed_z=2000"}));
+  EXPECT_EQ(ok.errors, 0u) << ok.diags;
+  Posted x = post(cl, generic({"limits.max_feed_x=150"}));
+  EXPECT_EQ(x.diags,
+            "t.cl:4:1: error: thread feed too fast for machine 'generic-lathe': the X axis moves "
+            "200 per minute (lead 2 x 1000 rpm), above its limit 150 (limits.max_feed_x)\n"
+            "  THREAD/TAPER,MMPR,2\n"
+            "  ^\n");
+  Posted z = post(cl, generic({"limits.max_feed_z=1999"}));
+  EXPECT_EQ(z.diags,
+            "t.cl:4:1: error: thread feed too fast for machine 'generic-lathe': the Z axis moves "
+            "2000 per minute (lead 2 x 1000 rpm), above its limit 1999 (limits.max_feed_z)\n"
+            "  THREAD/TAPER,MMPR,2\n"
+            "  ^\n");
+}
+
+}  // namespace
+}  // namespace clpost
+
+// ---- hostile and odd input ----------------------------------------------------------------------
+
+namespace clpost {
+namespace {
+
+struct OddRun {
+  std::string nc;
+  std::string diags;
+  size_t errors = 0;
+  size_t kept = 0;
+  PostStats stats;
+};
+
+OddRun run_cl(const std::string& cl) {
+  Machine m = generic();
+  OddRun r;
+  Diagnostics d("t.cl");
+  StringSink sink;
+  NcProgram prog(m, sink);
+  Interpreter in(m, prog, d, {});
+  ClReader reader(std::string_view(cl), d);
+  Statement st;
+  while (reader.next(st)) in.statement(st);
+  in.end_of_input(reader.line());
+  r.nc = sink.out;
+  r.diags = d.render_all();
+  r.errors = d.error_count();
+  r.kept = d.kept().size();
+  r.stats = in.stats();
+  return r;
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+constexpr const char* kThreadStart = "SPINDL/500,RPM,CLW\nRAPID\nGOTO/15,0,5\n";
+
+TEST(OddInput, NanAndInfAreWordsNotNumbers) {
+  OddRun r = run_cl("FEDRAT/0.1,MMPR\nGOTO/nan,0,1\nGOTO/1,0,inf\nGOTO/1,0,-inf\nFINI\n");
+  EXPECT_EQ(r.diags,
+            "t.cl:2:6: error: expected X but found 'NAN'\n"
+            "  GOTO/nan,0,1\n"
+            "       ^\n"
+            "t.cl:3:10: error: expected Z but found 'INF'\n"
+            "  GOTO/1,0,inf\n"
+            "           ^\n"
+            "t.cl:4:10: error: invalid number '-inf'\n"
+            "  GOTO/1,0,-inf\n"
+            "           ^\n");
+  EXPECT_EQ(r.stats.motions, 0u);
+}
+
+TEST(OddInput, CoordinatesOfABillionAreOutOfRange) {
+  OddRun r = run_cl(
+      "FEDRAT/0.1,MMPR\nGOTO/1e9,0,0\nGOTO/0,0,-1000000000\nFROM/1e9,0,0\nGOTO/1000000,0,-1e6\n"
+      "FINI\n");
+  EXPECT_EQ(r.diags,
+            "t.cl:2:6: error: X '1e9' is out of range: CL values must be between -1000000 "
+            "and 1000000\n"
+            "  GOTO/1e9,0,0\n"
+            "       ^\n"
+            "t.cl:3:10: error: Z '-1000000000' is out of range: CL values must be between "
+            "-1000000 and 1000000\n"
+            "  GOTO/0,0,-1000000000\n"
+            "           ^\n"
+            "t.cl:4:6: error: X '1e9' is out of range: CL values must be between -1000000 "
+            "and 1000000\n"
+            "  FROM/1e9,0,0\n"
+            "       ^\n");
+  // The limit itself is a coordinate like any other (X is a diameter).
+  EXPECT_EQ(r.nc, std::string(kHeader) + "G1 X2000000. Z-1000000. G95 F0.1\nM30\n%\n");
+}
+
+TEST(OddInput, FeedSpeedAndOffsetOutOfRange) {
+  OddRun r = run_cl(
+      "FEDRAT/1e300,MMPM\nSPINDL/1e7,RPM\nSPINDL/SMM,100,MAXRPM,1e12\nLOADTL/1,ADJUST,1e300\n"
+      "LOADTL/1,ADJUST,-2\nDELAY/1e9\nFINI\n");
+  EXPECT_EQ(r.errors, 6u) << r.diags;
+  EXPECT_NE(r.diags.find("t.cl:1:8: error: feed '1e300' is out of range"), std::string::npos)
+      << r.diags;
+  EXPECT_NE(r.diags.find("t.cl:2:8: error: spindle speed '1e7' is out of range"), std::string::npos)
+      << r.diags;
+  EXPECT_NE(r.diags.find("t.cl:3:23: error: MAXRPM '1e12' is out of range"), std::string::npos)
+      << r.diags;
+  EXPECT_NE(r.diags.find("t.cl:4:17: error: tool offset must be a whole number 0..9999, got 1e300"),
+            std::string::npos)
+      << r.diags;
+  EXPECT_NE(r.diags.find("t.cl:5:17: error: tool offset must be a whole number 0..9999, got -2"),
+            std::string::npos)
+      << r.diags;
+  EXPECT_NE(r.diags.find("t.cl:6:7: error: a dwell time in seconds '1e9' is out of range"),
+            std::string::npos)
+      << r.diags;
+  EXPECT_EQ(r.nc, std::string(kHeader) + "M30\n%\n");
+}
+
+TEST(OddInput, TenThousandUnterminatedThreadOns) {
+  std::string cl = kThreadStart;
+  for (int i = 0; i < 10000; ++i) cl += "THREAD/ON,DEPTH,1,CUTS,2,MMPR,1.5\nGOTO/10,0,2\n";
+  OddRun r = run_cl(cl);
+  // Each THREAD/ON after the first is an error, and the first one never ends.
+  EXPECT_EQ(r.errors, 10000u);
+  EXPECT_EQ(r.kept, Diagnostics::kMaxKept);
+  EXPECT_EQ(r.diags.substr(0, r.diags.find('\n') + 1),
+            "t.cl:6:1: error: THREAD/ON inside the thread started at line 4: THREAD/OFF "
+            "missing\n");
+  // 10000 errors and the missing-FINI warning, 200 of them shown.
+  const std::string last = "t.cl: note: 9801 more diagnostics not shown\n";
+  ASSERT_GT(r.diags.size(), last.size());
+  EXPECT_EQ(r.diags.substr(r.diags.size() - last.size()), last);
+  EXPECT_EQ(count(r.nc, "G33"), 0u);
+  EXPECT_EQ(r.stats.threads, 0u);
+}
+
+TEST(OddInput, TenThousandNestedThreadOnsAndOffs) {
+  std::string cl = kThreadStart;
+  for (int i = 0; i < 10000; ++i) cl += "THREAD/ON,DEPTH,1,CUTS,2,MMPR,1.5\n";
+  cl += "GOTO/10,0,2\nGOTO/10,0,-20\n";
+  for (int i = 0; i < 10000; ++i) cl += "THREAD/OFF\n";
+  cl += "FINI\n";
+  OddRun r = run_cl(cl);
+  // The first ON and the first OFF make one good thread; 9999 ONs and 9999 OFFs are errors.
+  EXPECT_EQ(r.errors, 19998u);
+  EXPECT_EQ(r.stats.threads, 1u);
+  EXPECT_EQ(r.stats.passes, 2u);
+  EXPECT_EQ(r.diags.substr(0, r.diags.find('\n') + 1),
+            "t.cl:5:1: error: THREAD/ON inside the thread started at line 4: THREAD/OFF "
+            "missing\n");
+  const std::string last = "t.cl: note: 19798 more diagnostics not shown\n";
+  EXPECT_EQ(r.diags.substr(r.diags.size() - last.size()), last);
+}
+
+TEST(OddInput, ThreadWith200PassesIsCutAnd201IsRefused) {
+  OddRun ok = run_cl(std::string(kThreadStart) +
+                     "THREAD/ON,DEPTH,2,CUTS,200,MMPR,1.5\nGOTO/10,0,2\nGOTO/10,0,-20\nTHREAD/OFF\n"
+                     "FINI\n");
+  EXPECT_EQ(ok.diags, "");
+  EXPECT_EQ(ok.stats.threads, 1u);
+  EXPECT_EQ(ok.stats.passes, 200u);
+  EXPECT_EQ(count(ok.nc, "G33"), 200u);
+  OddRun bad =
+      run_cl(std::string(kThreadStart) +
+             "THREAD/ON,DEPTH,2,CUTS,201,MMPR,1.5\nGOTO/10,0,2\nGOTO/10,0,-20\nTHREAD/OFF\n"
+             "FINI\n");
+  EXPECT_EQ(bad.diags,
+            "t.cl:4:24: error: CUTS count 201 is more than the 200 passes a thread may have\n"
+            "  THREAD/ON,DEPTH,2,CUTS,201,MMPR,1.5\n"
+            "                         ^\n");
+  EXPECT_EQ(count(bad.nc, "G33"), 0u);
+  // 199 roughing passes and 2 finish passes are 201 too.
+  OddRun fin = run_cl(std::string(kThreadStart) +
+                      "THREAD/ON,DEPTH,2,CUTS,199,FINCUT,2,0.01,MMPR,1.5\nGOTO/10,0,2\n"
+                      "GOTO/10,0,-20\nTHREAD/OFF\nFINI\n");
+  EXPECT_EQ(fin.errors, 1u);
+  EXPECT_NE(fin.diags.find("the thread needs 201 passes (199 roughing + 2 finish)"),
+            std::string::npos)
+      << fin.diags;
+  EXPECT_EQ(count(fin.nc, "G33"), 0u);
+}
+
+TEST(OddInput, CutsZeroOrNegative) {
+  for (const char* cuts : {"0", "-3", "-0.5"}) {
+    OddRun r = run_cl(std::string(kThreadStart) + "THREAD/ON,DEPTH,1,CUTS," + cuts +
+                      ",MMPR,1.5\nGOTO/10,0,2\nGOTO/10,0,-20\nTHREAD/OFF\nFINI\n");
+    EXPECT_EQ(r.diags, std::string("t.cl:4:24: error: CUTS count must be a positive whole number; "
+                                   "got ") +
+                           cuts + "\n  THREAD/ON,DEPTH,1,CUTS," + cuts +
+                           ",MMPR,1.5\n                         ^\n");
+    EXPECT_EQ(count(r.nc, "G33"), 0u) << cuts;
+    EXPECT_EQ(count(r.nc, "G1 X20. Z-20."), 0u) << cuts;  // the GOTOs are not posted as moves
+  }
+}
+
+// Fuzzer find: COUPLE/ON with no position before it read before its path (UBSan) and cut the
+// GOTOs anyway.
+TEST(OddInput, CoupleWithoutAStartPointCutsNothing) {
+  OddRun r = run_cl(
+      "SPINDL/500,RPM,CLW\nCOUPLE/ON,MMPR,1.5\nGOTO/12,0,-20\nGOTO/13,0,-21\n"
+      "COUPLE/OFF\nFINI\n");
+  EXPECT_EQ(r.diags,
+            "t.cl:2:1: error: COUPLE/ON needs a start point: no GOTO or FROM before it\n"
+            "  COUPLE/ON,MMPR,1.5\n"
+            "  ^\n");
+  EXPECT_EQ(count(r.nc, "G33"), 0u);
+  EXPECT_EQ(r.stats.threads, 0u);
+  EXPECT_EQ(r.stats.passes, 0u);
+  // The same for a pitch the machine cannot cut: one error, nothing cut.
+  OddRun v = run_cl(std::string(kThreadStart) +
+                    "COUPLE/ON,MMPR,1.5,INCR,0.1\nGOTO/12,0,-20\nCOUPLE/OFF\nFINI\n");
+  EXPECT_EQ(v.errors, 1u) << v.diags;
+  EXPECT_EQ(count(v.nc, "G33"), 0u);
+  EXPECT_EQ(v.stats.threads, 0u);
+}
+
+TEST(OddInput, MillionsOfErrorsKeepMemoryBounded) {
+  // 300 000 feed moves before any FEDRAT/: every one is an error, 200 are shown.
+  std::string cl;
+  for (int i = 0; i < 300000; ++i) cl += "GOTO/1,0,1\n";
+  OddRun r = run_cl(cl);
+  EXPECT_EQ(r.errors, 300000u);
+  EXPECT_EQ(r.kept, Diagnostics::kMaxKept);
+  EXPECT_EQ(count(r.diags, "\n"), 3 * Diagnostics::kMaxKept + 1);
+  EXPECT_EQ(r.diags.substr(0, 60), "t.cl:1:1: error: feed move before any FEDRAT/: the feed is u");
+  const std::string last = "t.cl: note: 299801 more diagnostics not shown\n";
+  EXPECT_EQ(r.diags.substr(r.diags.size() - last.size()), last);
+}
+
+}  // namespace
+}  // namespace clpost

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "interpreter/interpreter.h"
 
@@ -108,6 +109,7 @@ void Interpreter::couple_stmt(const Statement& st) {
       return;
     }
     seq_ = Seq::kNone;
+    if (!couple_.pitch.set) return;  // COUPLE/ON had an error
     ++stats_.threads;
     if (on_thread_) on_thread_(couple_);
     end_thread_spindle();
@@ -137,14 +139,20 @@ void Interpreter::couple_stmt(const Statement& st) {
   seq_lines_ = SavedLines::of(st);
   seq_ = Seq::kCouple;
   seq_loc_ = st.loc;
-  if (!check_pitch(st, p)) return;
+  couple_started_ = false;
+  // On an error the sequence is still entered, so that its GOTOs are not posted as ordinary
+  // moves, but none of it is cut: thread_goto skips GOTOs while the pitch is not set.
+  if (!check_pitch(st, p)) {
+    couple_.pitch.set = false;
+    return;
+  }
   if (!pos_) {
     error(st, st.loc, "COUPLE/ON needs a start point: no GOTO or FROM before it");
+    couple_.pitch.set = false;
     return;
   }
   couple_.path.push_back(cl2(*pos_));
   couple_.p1 = cl2(*pos_);
-  couple_started_ = false;
 }
 
 bool Interpreter::check_pitch(const Statement& st, const PitchSpec& p) {
@@ -231,6 +239,7 @@ void Interpreter::single_pass_plan(ThreadPlan& plan) {
   plan.kind = std::abs(d.x) < 1e-9   ? ThreadKind::kTurn
               : std::abs(d.z) < 1e-9 ? ThreadKind::kFace
                                      : ThreadKind::kTaper;
+  plan.lead_along_z = std::abs(d.z) >= std::abs(d.x);
   ThreadPass pass;
   pass.n = 1;
   pass.approach = pass.from = plan.p1;
@@ -273,6 +282,19 @@ bool Interpreter::begin_thread_spindle(const ThreadPlan& plan, const SavedLines&
                     "above its maximum feed {}",
                     m_.name, lead, rpm, feed, m_.max_feed));
   }
+  // Each axis moves its share of the lead: the lead axis all of it, the other one in proportion
+  // to the thread's slope (a taper's X, a face-taper's Z).
+  double dx = std::abs(plan.p2.x - plan.p1.x), dz = std::abs(plan.p2.z - plan.p1.z);
+  double fz = plan.lead_along_z ? feed : (dx > 0 ? feed * dz / dx : 0);
+  double fx = plan.lead_along_z ? (dz > 0 ? feed * dx / dz : 0) : feed;
+  for (auto [axis, f, limit] :
+       {std::tuple{'X', fx, m_.max_feed_x}, std::tuple{'Z', fz, m_.max_feed_z}}) {
+    if (limit > 0 && f > limit + 1e-9)
+      return fail(
+          fmt::format("thread feed too fast for machine '{}': the {} axis moves {} per "
+                      "minute (lead {} x {} rpm), above its limit {} (limits.max_feed_{})",
+                      m_.name, axis, f, lead, rpm, limit, static_cast<char>(axis + 32)));
+  }
   thread_rpm_ = rpm;
   return true;
 }
@@ -289,7 +311,7 @@ void Interpreter::emit_thread(ThreadPlan& plan, const SavedLines& lines) {
   ++stats_.threads;
   stats_.passes += plan.passes.size();
   if (on_thread_) on_thread_(plan);
-  prog_.comment(fmt::format("thread line {}: {} passes, pitch {}, depth {}", plan.loc.line,
+  prog_.comment(fmt::format("thread line {}: {} passes, pitch {:.6g}, depth {:.6g}", plan.loc.line,
                             plan.passes.size(), plan.pitch.pitch, plan.depth));
   EmitContext ctx{diags_, lines, thread_rpm_, feed_, feed_mode_};
   emitter_->emit(plan, prog_, ctx);

@@ -48,7 +48,9 @@ struct Machine {
 
   // Limits (0 = none)
   double max_rpm = 0;
-  double max_feed = 0;  // per minute, output units
+  double max_feed = 0;    // per minute, output units
+  double max_feed_x = 0;  // per axis (X as a radius), per minute; 0 = max_feed
+  double max_feed_z = 0;
 
   // Threading
   ThreadStrategy thread_strategy = ThreadStrategy::kEmulate;
@@ -67,6 +69,14 @@ struct Machine {
   bool extra_spring_passes = false;   // a cycle may add full-depth passes the plan lacks
   double thread_tolerance = 0;        // largest cut difference that counts as exact, CL units
                                       // (0 = one least increment of the Z format)
+  // Fanuc / Haas G76 (fanuc_law.h, haas_law.h); the pass-end rule is unverified.
+  bool cycle_shifted_end = false;    // threading.cycle_pass_end: shifted (else fixed: every pass
+                                     // ends at the cycle's Z)
+  bool accept_pass_end = false;      // a fixed pass end may differ from the plan's (noted)
+  double chamfer_angle = 45;         // the control's thread chamfer angle (Fanuc 5131, Haas 96)
+  double haas_finish_allowance = 0;  // Haas setting 86, machine units
+  double haas_min_cut = 0;           // Haas setting 99, machine units
+  double haas_chamfer = 0;           // Haas setting 95, in leads
 
   // Output
   std::string extension = ".nc";

@@ -144,6 +144,21 @@ const std::map<std::string, std::vector<std::string>>& template_fields() {
       {"spindle_css", {"speed", "max_rpm", "direction"}},
       {"spindle_stop", {}},
       {"dwell", {"seconds", "revolutions"}},
+      {"cycle99",
+       {"spl", "dm1", "fpl", "dm2", "app", "rop", "tdep", "fal", "iang", "nsp", "nrc", "nid", "pit",
+        "vari", "numth", "vrt", "pita", "psys"}},
+      {"cycle96", {"diath", "axsa", "form"}},
+      {"fanuc_g76",
+       {"m", "chamfer", "angle", "min_cut", "allowance", "x", "z", "taper", "height", "first_cut",
+        "lead"}},
+      {"haas_g76",
+       {"x", "z", "taper", "height", "first_cut", "angle", "mode", "start_angle", "lead"}},
+      {"g92", {"x", "z", "taper", "lead", "start_angle"}},
+      {"g92_next", {"x", "z", "taper", "lead", "start_angle"}},
+      {"linuxcnc_g76", {"p", "z", "i", "j", "k", "r", "q", "h"}},
+      {"linuxcnc_g76_taper", {"p", "z", "i", "j", "k", "r", "q", "h", "e", "l"}},
+      {"heidenhain_g31",
+       {"f", "u", "ic", "v", "h", "a", "d", "q", "c", "bd", "b", "p", "k", "x1", "z1", "x2", "z2"}},
   };
   return kFields;
 }
@@ -276,6 +291,12 @@ const std::map<std::string, Setter>& scalar_keys() {
     k["limits.max_feed"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
       return get_number(c, n, "limits.max_feed", 0, 1e7, m.max_feed);
     };
+    k["limits.max_feed_x"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "limits.max_feed_x", 0, 1e7, m.max_feed_x);
+    };
+    k["limits.max_feed_z"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "limits.max_feed_z", 0, 1e7, m.max_feed_z);
+    };
     k["threading.strategy"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
       return get_choice<ThreadStrategy>(c, n, "threading.strategy",
                                         {{"cycle", ThreadStrategy::kCycle},
@@ -337,6 +358,25 @@ const std::map<std::string, Setter>& scalar_keys() {
     };
     k["threading.tolerance"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
       return get_number(c, n, "threading.tolerance", 0, 1, m.thread_tolerance);
+    };
+    k["threading.cycle_pass_end"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_choice<bool>(c, n, "threading.cycle_pass_end",
+                              {{"fixed", false}, {"shifted", true}}, m.cycle_shifted_end);
+    };
+    k["threading.accept_pass_end"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_bool(c, n, "threading.accept_pass_end", m.accept_pass_end);
+    };
+    k["threading.chamfer_angle"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.chamfer_angle", 1, 89, m.chamfer_angle);
+    };
+    k["threading.haas_finish_allowance"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.haas_finish_allowance", 0, 10, m.haas_finish_allowance);
+    };
+    k["threading.haas_min_cut"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.haas_min_cut", 0, 10, m.haas_min_cut);
+    };
+    k["threading.haas_chamfer"] = [](Ctx& c, const YAML::Node& n, Machine& m) {
+      return get_number(c, n, "threading.haas_chamfer", 0, 99, m.haas_chamfer);
     };
     return k;
   }();

@@ -31,7 +31,19 @@ void write_template(NcWriter& w, const Machine& m, const std::string& name, cons
 
 }  // namespace
 
-NcProgram::NcProgram(const Machine& m, Sink& out) : m_(m), w_(m, out) {}
+NcProgram::NcProgram(const Machine& m, Sink& out)
+    : m_(m),
+      w_(m, out),
+      fmt_x_(m.format_for("X")),
+      fmt_z_(m.format_for("Z")),
+      fmt_f_(m.format_for("F")),
+      fmt_i_(m.format_for("I")),
+      fmt_k_(m.format_for("K")),
+      code_rapid_(m.code("rapid")),
+      code_linear_(m.code("linear")),
+      code_arc_cw_(m.code("arc_cw")),
+      code_arc_ccw_(m.code("arc_ccw")),
+      code_thread_(m.code("thread")) {}
 
 void NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
   Args a;
@@ -114,19 +126,20 @@ void NcProgram::program_stop(bool optional) {
   w_.code(m_.code(optional ? "optional_stop" : "stop")).end_block();
 }
 
-void NcProgram::motion_code(const std::string& key) {
-  const std::string& c = m_.code(key);
-  if (!m_.modal_codes || c != motion_) w_.code(c);
-  motion_ = c;
+void NcProgram::motion_code(const std::string& c) {
+  if (!m_.modal_codes || c != motion_) {
+    w_.code(c);
+    motion_ = c;
+  }
 }
 
 void NcProgram::axes(LathePoint p, bool force_both) {
-  double x = rounded(x_out(p.r), m_.format_for("X"));
-  double z = rounded(p.z, m_.format_for("Z"));
+  double x = rounded(x_out(p.r), fmt_x_);
+  double z = rounded(p.z, fmt_z_);
   bool write_x = force_both || !m_.modal_words || !last_x_ || *last_x_ != x;
   bool write_z = force_both || !m_.modal_words || !last_z_ || *last_z_ != z;
-  if (write_x) w_.word("X", x_out(p.r));
-  if (write_z) w_.word("Z", p.z);
+  if (write_x) w_.word("X", x_out(p.r), fmt_x_);
+  if (write_z) w_.word("Z", p.z, fmt_z_);
   last_x_ = x;
   last_z_ = z;
   pos_ = p;
@@ -138,21 +151,21 @@ void NcProgram::feed_words() {
     written_feed_mode_ = feed_mode_;
     written_feed_.reset();
   }
-  double f = rounded(feed_, m_.format_for("F"));
+  double f = rounded(feed_, fmt_f_);
   if (!m_.modal_words || !written_feed_ || *written_feed_ != f) {
-    w_.word("F", feed_);
+    w_.word("F", feed_, fmt_f_);
     written_feed_ = f;
   }
 }
 
 void NcProgram::rapid(LathePoint p) {
-  motion_code("rapid");
+  motion_code(code_rapid_);
   axes(p, false);
   w_.end_block();
 }
 
 void NcProgram::linear(LathePoint p) {
-  motion_code("linear");
+  motion_code(code_linear_);
   axes(p, false);
   feed_words();
   w_.end_block();
@@ -160,11 +173,11 @@ void NcProgram::linear(LathePoint p) {
 
 void NcProgram::arc(LathePoint p, LathePoint center, bool ccw) {
   LathePoint from = pos_.value_or(p);
-  motion_code(ccw ? "arc_ccw" : "arc_cw");
+  motion_code(ccw ? code_arc_ccw_ : code_arc_cw_);
   axes(p, false);
   // Arc centres are incremental from the start point, as radii (I along X, K along Z).
-  w_.word("I", center.r - from.r);
-  w_.word("K", center.z - from.z);
+  w_.word("I", center.r - from.r, fmt_i_);
+  w_.word("K", center.z - from.z, fmt_k_);
   feed_words();
   w_.end_block();
 }
@@ -178,13 +191,15 @@ void NcProgram::thread(LathePoint p, double lead, std::optional<double> start_an
 
 void NcProgram::thread(LathePoint p, const ThreadLead& l) {
   LathePoint from = pos_.value_or(p);
-  bool along_x = std::fabs(x_out(p.r) - x_out(from.r)) > std::fabs(p.z - from.z) &&
+  // The lead is along the axis that travels further (radius against Z, as the controls
+  // measure the thread's angle).
+  bool along_x = std::fabs(p.r - from.r) > std::fabs(p.z - from.z) &&
                  !m_.thread_lead_address_x.empty();
   const std::string& lead_addr = along_x ? m_.thread_lead_address_x : m_.thread_lead_address;
   if (l.lead_change != 0) {
-    motion_code(l.lead_change > 0 ? "thread_increasing" : "thread_decreasing");
+    motion_code(m_.code(l.lead_change > 0 ? "thread_increasing" : "thread_decreasing"));
   } else {
-    motion_code("thread");
+    motion_code(code_thread_);
   }
   axes(p, false);
   if (l.tpi > 0 && !m_.tpi_address.empty()) {

@@ -86,13 +86,24 @@ class NcProgram {
   void forget_modal();
 
  private:
-  void motion_code(const std::string& key);
+  void motion_code(const std::string& code);
   void axes(LathePoint p, bool force_both);
   void feed_words();
   double x_out(double r) const { return m_.diameter_output ? 2 * r : r; }
 
   const Machine& m_;
   NcWriter w_;
+  // Looked up once: the formats and codes of every move.
+  const NumberFormat& fmt_x_;
+  const NumberFormat& fmt_z_;
+  const NumberFormat& fmt_f_;
+  const NumberFormat& fmt_i_;
+  const NumberFormat& fmt_k_;
+  const std::string& code_rapid_;
+  const std::string& code_linear_;
+  const std::string& code_arc_cw_;
+  const std::string& code_arc_ccw_;
+  const std::string& code_thread_;
   std::optional<LathePoint> pos_;
   std::string motion_;  // last motion code written
   std::optional<double> last_x_, last_z_;

@@ -5,7 +5,7 @@ N20 (THREADS-INCH)
 N30 T0505
 N40 G97 S700 M3
 N50 G0 X0.7 Z0.2
-N60 (thread line 10: 5 passes, pitch 0.07692307692307693, depth 0.0472)
+N60 (thread line 10: 5 passes, pitch 0.0769231, depth 0.0472)
 N70 (pass 1 depth 0.0211 rough)
 N80 G1 X0.633 Z0.088 G95 F0.008
 N90 X0.458

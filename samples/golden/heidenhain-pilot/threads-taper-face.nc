@@ -1,0 +1,48 @@
+%1.nc
+[METRIC]
+MACHINING
+[THREADS-TAPER-FACE]
+N 10 T5
+N 20 G97 S500 M3
+N 30 G0 X26. Z6.
+[thread line 11: 5 passes, pitch 1.814, depth 1.1]
+[G31 not used: G31's V0 law does not give the planned depths: pass 1: starts at X19.9989 Z1.7315, plan X19.9979 Z1.7161. G33 loop instead]
+[pass 1 depth 0.4919 rough]
+N 40 G1 X24.126 Z1.716 G95 F0.2
+N 50 X19.998
+N 60 G33 X18.663 Z-19.649 F1.814
+N 70 G0 X22.786 Z-19.714
+[pass 2 depth 0.6957 rough]
+N 80 X24.118 Z1.599
+N 90 G1 X19.583 F0.2
+N 100 G33 X18.248 Z-19.767 F1.814
+N 110 G0 X22.779 Z-19.837
+[pass 3 depth 0.8521 rough]
+N 120 X24.113 Z1.508
+N 130 G1 X19.264 F0.2
+N 140 G33 X17.929 Z-19.857 F1.814
+N 150 G0 X22.773 Z-19.933
+[pass 4 depth 0.9839 rough]
+N 160 X24.108 Z1.432
+N 170 G1 X18.996 F0.2
+N 180 G33 X17.66 Z-19.933 F1.814
+N 190 G0 X22.768 Z-20.013
+[pass 5 depth 1.1000 rough]
+N 200 X24.104 Z1.365
+N 210 G1 X18.759 F0.2
+N 220 G33 X17.424 Z-20. F1.814
+N 230 G0 X22.763 Z-20.083
+N 240 X24.14 Z1.951
+N 250 X84. Z4.
+[thread line 18: 4 passes, pitch 2, depth 1.2]
+[G31 infeed law and flank offsets as clpost assumes them, unverified]
+N 260 G1 X80. Z1.732 F0.2
+N 270 G31 F2. U1.2 IC4 V1 H1 A30. D1 Q0 C0. BD0 B0. P0. K0.
+N 280 G0 X80. Z0.
+N 290 G1 X40. Z0.
+N 300 G80
+N 310 G0 X80. Z1.732
+N 320 X120. Z50.
+N 330 M5
+N 340 M30
+END

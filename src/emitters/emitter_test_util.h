@@ -1,0 +1,75 @@
+#pragma once
+// Test helpers for the cycle emitters: a pass plan from one THREAD/ON line and its GOTOs (through
+// the planner, with the machine's defaults), and what an emitter writes for it.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "emitters/emitter.h"
+#include "machine/machine_loader.h"
+#include "planner/planner_test_util.h"
+#include "support/sink.h"
+
+namespace clpost::testing {
+
+inline Machine shipped_machine(const std::string& name, std::vector<std::string> sets = {}) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  return m;
+}
+
+// THREAD/ON `on` (line 2) with the tool at `p0` and the GOTOs `gotos`, planned for `m`. The
+// approach is fed (the CL had a feed in force), as in the shipped samples.
+inline ThreadPlan plan_for(const Machine& m, const std::string& on, Vec2 p0,
+                           const std::vector<Vec2>& gotos, bool feed_approach = true,
+                           LengthUnit units = LengthUnit::kMm) {
+  TestStatement st(on, 2);
+  Diagnostics d("t.cl");
+  MultiCase c = make_multi(st, units, p0, gotos, d);
+  EXPECT_TRUE(c.parsed) << d.render_all();
+  c.in.feed_approach = feed_approach;
+  PlannerSettings s;
+  s.default_option = m.default_option;
+  s.default_tool_angle = m.default_tool_angle;
+  s.start_angle_word = m.start_angle_word;
+  s.variable_lead = m.variable_lead;
+  s.machine_name = m.name;
+  ThreadPlan plan;
+  EXPECT_TRUE(plan_multi_thread(c.in, s, plan, d)) << d.render_all();
+  plan.loc = {2, 1};
+  return plan;
+}
+
+struct Emitted {
+  bool ok = false;
+  std::string nc;
+  std::string diags;
+};
+
+// What `e` writes for `plan` (the thread statement is "THREAD/ON..." at line 2).
+inline Emitted emit_with(Emitter& e, const Machine& m, const ThreadPlan& plan) {
+  Emitted out;
+  StringSink sink;
+  NcProgram prog(m, sink);
+  prog.set_feed(0.2, FeedMode::kPerRev);  // FEDRAT/0.2,MMPR before the thread
+  Diagnostics d("t.cl");
+  SavedLines lines;
+  lines.first_line = 2;
+  lines.lines.push_back("THREAD/ON");
+  EmitContext ctx{d, lines, 500, 0.2, FeedMode::kPerRev};
+  out.ok = e.emit(plan, prog, ctx);
+  out.nc = sink.out;
+  out.diags = d.render_all();
+  return out;
+}
+
+// What the machine's thread output (strategy, fallback) writes for `plan`.
+inline Emitted emit_on(const Machine& m, const ThreadPlan& plan) {
+  std::unique_ptr<Emitter> e = make_emitter(m);
+  return emit_with(*e, m, plan);
+}
+
+}  // namespace clpost::testing

@@ -1,0 +1,437 @@
+#include "emitters/fanuc_emitter.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+
+#include "planner/vec2_math.h"
+#include "writer/number_format.h"
+
+namespace clpost {
+
+using namespace vec2_math;
+
+namespace g76 {
+
+namespace {
+
+double increment(const Machine& m, std::string_view f) {
+  const NumberFormat& nf = m.format_for(f);
+  return std::pow(10.0, -nf.decimals) / (nf.scale > 0 ? nf.scale : 1);
+}
+
+}  // namespace
+
+double as_read(const Machine& m, std::string_view f, double v) {
+  const NumberFormat& nf = m.format_for(f);
+  std::string s;
+  append_number(s, v, nf);
+  return std::strtod(s.c_str(), nullptr) / (nf.scale > 0 ? nf.scale : 1);
+}
+
+double read_up(const Machine& m, std::string_view f, double v) {
+  double r = as_read(m, f, v);
+  if (r < v - 1e-9) r = as_read(m, f, r + increment(m, f));
+  return r;
+}
+
+double read_down(const Machine& m, std::string_view f, double v) {
+  double r = as_read(m, f, v);
+  if (r > v + 1e-9) r = as_read(m, f, r - increment(m, f));
+  return r;
+}
+
+Vec2 point_as_read(const Machine& m, Vec2 p) {
+  const double k = m.diameter_output ? 2 : 1;
+  return {as_read(m, "X", k * p.x) / k, as_read(m, "Z", p.z)};
+}
+
+std::string describe_pullout(const ThreadPlan& plan) {
+  if (!plan.pullout) return "none";
+  return fmt::format("X {:.4g}, Z {:.4g}", plan.pullout->x, plan.pullout->z);
+}
+
+std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view cycle,
+                            CyclePlan& out) {
+  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
+    return fmt::format("not a multi-pass thread: {} is a multi-pass cycle", cycle);
+  if (plan.kind == ThreadKind::kFace || !plan.lead_along_z)
+    return fmt::format("face thread: {} threads along Z", cycle);
+  const Vec2 d = plan.p2 - plan.p1;
+  out = CyclePlan{};
+  out.t = (1 / length(d)) * d;
+  out.outward = plan.side == ThreadSide::kExternal ? 1 : -1;
+  out.slope = d.x / d.z;
+  out.cos_t = std::fabs(out.t.z);
+  double c = std::fmod(std::fabs(plan.cutang), 180.0);
+  if (c > 1e-9 && c < 180 - 1e-9)
+    return fmt::format(
+        "CUTANG {:g}: {} infeeds from a radial line (along the flank at half the "
+        "tool angle)",
+        plan.cutang, cycle);
+  // The flank angle every pass is shifted by; -1 when the passes do not share one (alternating).
+  std::optional<double> flank;
+  bool one_angle = true;
+  for (const ThreadPass& p : plan.passes) {
+    if (p.start != start) continue;
+    out.heights.push_back(p.depth / out.cos_t);
+    out.shifts.push_back(p.shift);
+    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end});
+    if (p.depth <= 1e-12) continue;
+    const double a = deg(std::atan(p.shift / p.depth));
+    if (flank && std::fabs(*flank - a) > 1e-6) one_angle = false;
+    if (!flank) flank = a;
+  }
+  if (out.heights.empty()) return fmt::format("start {} has no pass", start + 1);
+  out.flank = !one_angle ? -1 : flank.value_or(0);
+  const double dirz = out.t.z < 0 ? -1 : 1;
+  if (plan.pullout) {
+    const Vec2 v = *plan.pullout;
+    const double along = v.z * dirz, up = v.x * out.outward;
+    if (along <= 1e-9 || up <= 1e-9)
+      return fmt::format("pull-out ({}) is not a chamfer along the thread: {} has none",
+                         describe_pullout(plan), cycle);
+    out.chamfer = along;
+    out.chamfer_angle = deg(std::atan2(up, along));
+  }
+  // The cycle start: the clear line at the start's P1 Z (the first pass's start less its shift).
+  const ThreadPass* first = nullptr;
+  const ThreadPass* deepest = nullptr;
+  for (const ThreadPass& p : plan.passes) {
+    if (p.start != start) continue;
+    if (!first) first = &p;
+    if (!deepest || p.depth >= deepest->depth - 1e-12) deepest = &p;
+  }
+  const double a_z = first->from.z - first->shift * out.t.z;
+  const Vec2 e = plan.end_position;
+  out.start = {e.x + out.slope * (a_z - e.z), a_z};
+  const double z_end = deepest->pullout_end.z;
+  const double h_max = deepest->depth / out.cos_t;
+  out.end = {plan.p1.x + out.slope * (z_end - plan.p1.z) - out.outward * h_max, z_end};
+  return {};
+}
+
+bool at_end(const NcProgram& prog, Vec2 p) {
+  std::optional<LathePoint> at = prog.position();
+  return at && std::fabs(at->r - p.x) < 1e-9 && std::fabs(at->z - p.z) < 1e-9;
+}
+
+double move_ends_to_deepest(const CyclePlan& cp, std::vector<Cut>& cuts) {
+  const double s_max = *std::max_element(cp.shifts.begin(), cp.shifts.end());
+  double most = 0;
+  for (size_t i = 0; i < cuts.size() && i < cp.shifts.size(); ++i) {
+    const double k = s_max - cp.shifts[i];
+    cuts[i].to = cuts[i].to + k * cp.t;
+    cuts[i].end = cuts[i].end + k * cp.t;
+    most = std::max(most, k);
+  }
+  return most;
+}
+
+}  // namespace g76
+
+namespace {
+
+using g76::as_read;
+using g76::at_end;
+using g76::read_down;
+using g76::read_up;
+
+std::string text(const Machine& m, std::string_view f, double v) {
+  std::string s;
+  append_number(s, v, m.format_for(f));
+  return s;
+}
+
+std::string_view depth_format(const ThreadPlan& plan) {
+  return plan.units == LengthUnit::kInch ? "g76_depth_in" : "g76_depth";
+}
+
+constexpr const char* kFanucTemplate = "fanuc_g76";
+constexpr const char* kAllowance = "g76_allowance";
+
+struct FanucBlock {
+  FanucG76Words w;
+  Vec2 start;  // A as written
+};
+
+// The words that cut `plan` (single start) with G76, or a mismatch in `f`.
+std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
+  auto fail = [&](std::string why) -> std::optional<FanucBlock> {
+    f.mismatch = std::move(why);
+    return std::nullopt;
+  };
+  if (plan.pitch.lead_change != 0) return fail("variable lead: G76 cuts a constant lead");
+  if (plan.pitch.starts > 1)
+    return fail(fmt::format("{} starts: G76 has no start-angle word (G92 with Q cuts them)",
+                            plan.pitch.starts));
+  if (plan.option == 0)
+    return fail("OPTION 0, steps shrinking by a constant amount: G76 cuts depths Q x root n");
+  if (plan.option == 3 || plan.option == 4)
+    return fail(fmt::format("OPTION {}, constant depth: G76 cuts depths Q x root n", plan.option));
+  if (plan.option == 2) return fail("OPTION 2 alternates flanks: G76 infeeds along one flank");
+  g76::CyclePlan cp;
+  std::string why = g76::read_cycle_plan(plan, 0, "G76", cp);
+  if (!why.empty()) return fail(why);
+  const double a = plan.tool_angle;
+  if (std::fabs(a - std::round(a)) > 1e-9 || !fanuc_g76_tool_angle_ok(static_cast<int>(a)))
+    return fail(fmt::format("tool angle {:g}: G76 takes 80, 60, 55, 30, 29 or 0", a));
+  if (cp.flank < 0 || std::fabs(cp.flank - a / 2) > 1e-6)
+    return fail(
+        fmt::format("the passes are not shifted along the flank at {:g} deg: G76 infeeds "
+                    "at half the tool angle",
+                    a / 2));
+  FanucBlock b;
+  FanucG76Words& w = b.w;
+  w.tool_angle = static_cast<int>(a);
+  w.lead = as_read(m, "F", plan.lead);
+  if (cp.chamfer > 0) {
+    if (std::fabs(cp.chamfer_angle - m.chamfer_angle) > 1e-6)
+      return fail(
+          fmt::format("pull-out ({}) is not G76's {:g} deg chamfer "
+                      "(threading.chamfer_angle)",
+                      g76::describe_pullout(plan), m.chamfer_angle));
+    const double r = cp.chamfer / (0.1 * plan.lead);
+    if (std::fabs(r - std::round(r)) > 1e-6 || std::round(r) < 1 || std::round(r) > 99)
+      return fail(
+          fmt::format("chamfer {:g} is not a whole number of tenths of the lead {:g} "
+                      "(r 01-99 of G76)",
+                      cp.chamfer, plan.lead));
+    w.chamfer = static_cast<int>(std::round(r));
+  }
+  if (!m.templates.count(kFanucTemplate))
+    return fail(fmt::format("machine '{}' has no template '{}'", m.name, kFanucTemplate));
+
+  const std::string_view df = depth_format(plan);
+  const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
+  w.height = as_read(m, df, h_max);
+  size_t at_k = 0;
+  while (at_k < cp.heights.size() && cp.heights[cp.heights.size() - 1 - at_k] >= h_max - 1e-9)
+    ++at_k;
+  const size_t below = cp.heights.size() - at_k;
+  bool extra = false;
+  if (below == 0) {
+    // Roughing reaches k in its first pass (d = 0), then m passes at k.
+    w.allowance = 0;
+    w.first_cut = w.height;
+    w.finish_passes = static_cast<int>(at_k) - 1;
+    if (w.finish_passes == 0) {
+      if (!m.extra_spring_passes)
+        return fail(
+            "one pass at full depth: G76 cuts at least two (roughing to k - d, then m >= "
+            "1 at k) and threading.extra_spring_passes is off");
+      w.finish_passes = 1;
+      extra = true;
+    }
+  } else {
+    // Roughing stops at k - d = the deepest pass below k; m = the passes at k.
+    w.allowance = read_up(m, kAllowance, w.height - cp.heights[below - 1]);
+    w.first_cut = read_up(m, df, cp.heights[0]);
+    w.finish_passes = static_cast<int>(at_k);
+  }
+  if (w.finish_passes > 99)
+    return fail(fmt::format("{} passes at full depth: G76 m is 01-99", w.finish_passes));
+  // Δdmin: the smallest increment of the roughing, rounded down, so that it never raises one.
+  {
+    FanucG76Words probe = w;
+    probe.min_cut = 0;
+    probe.finish_passes = 0;
+    std::vector<double> rough = fanuc_g76_depths(probe);
+    double least = -1, prev = 0;
+    for (size_t i = 0; i + 1 < rough.size(); ++i) {
+      const double inc = rough[i] - prev;
+      least = least < 0 ? inc : std::min(least, inc);
+      prev = rough[i];
+    }
+    w.min_cut = least > 0 ? read_down(m, df, least) : 0;
+  }
+  const double k = m.diameter_output ? 2 : 1;
+  w.x = as_read(m, "X", k * cp.end.x);
+  w.z = as_read(m, "Z", cp.end.z);
+  b.start = g76::point_as_read(m, cp.start);
+  w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "R", cp.slope * (b.start.z - w.z)) : 0;
+
+  CycleLaw law{m.diameter_output, m.cycle_shifted_end, m.chamfer_angle};
+  std::vector<Cut> cuts = expand_fanuc_g76(w, b.start, law);
+  std::vector<Cut> want = cp.cuts;
+  if (extra) want.push_back(want.back());
+  const CutCompareOptions opt{cut_tolerance(m), false};
+  std::string diff = compare_cuts(cuts, want, opt);
+  if (!diff.empty() && !m.cycle_shifted_end) {
+    std::vector<Cut> moved = want;
+    const double most = g76::move_ends_to_deepest(cp, moved);
+    if (extra) moved.back() = moved[moved.size() - 2];
+    // A difference beyond the pass ends is what to report.
+    const std::string rest = compare_cuts(cuts, moved, opt);
+    if (!rest.empty()) diff = rest;
+    if (rest.empty()) {
+      if (!m.accept_pass_end)
+        return fail(
+            fmt::format("G76 ends every pass at Z{}; the plan ends the shallower passes "
+                        "up to {:.4f} earlier (threading.accept_pass_end is off)",
+                        text(m, "Z", w.z), most));
+      f.notes.push_back(
+          fmt::format("G76 ends every pass at Z{}; the plan ends the shallower "
+                      "passes up to {:.4f} earlier (threading.accept_pass_end)",
+                      text(m, "Z", w.z), most));
+      diff.clear();
+    }
+  }
+  if (!diff.empty()) return fail("G76 would cut " + diff);
+  if (extra)
+    f.notes.push_back("G76 adds one spring pass at full depth (threading.extra_spring_passes)");
+  return b;
+}
+
+// --- G92 ---
+
+struct G92Plan {
+  std::vector<G92Pass> passes;
+};
+
+std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
+  auto fail = [&](std::string why) -> std::optional<G92Plan> {
+    f.mismatch = std::move(why);
+    return std::nullopt;
+  };
+  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
+    return fail("not a multi-pass thread");
+  if (plan.pitch.lead_change != 0) return fail("variable lead: G92 cuts a constant lead");
+  if (plan.kind == ThreadKind::kFace || !plan.lead_along_z)
+    return fail("face thread: G92 threads along Z");
+  if (plan.pullout)
+    return fail(
+        fmt::format("pull-out ({}): G92 cuts the control's own chamfer (a parameter), "
+                    "not the plan's",
+                    g76::describe_pullout(plan)));
+  for (const char* t : {"g92", "g92_next"})
+    if (!m.templates.count(t))
+      return fail(fmt::format("machine '{}' has no template '{}'", m.name, t));
+  const Vec2 d = plan.p2 - plan.p1;
+  const double slope = d.x / d.z;
+  const Vec2 e = plan.end_position;
+  const double k = m.diameter_output ? 2 : 1;
+  const bool by_angle = plan.starts_by_angle && plan.pitch.starts > 1;
+  G92Plan g;
+  for (const ThreadPass& p : plan.passes) {
+    G92Pass q;
+    q.start = g76::point_as_read(m, {e.x + slope * (p.from.z - e.z), p.from.z});
+    q.words.x = as_read(m, "X", k * p.to.x);
+    q.words.z = as_read(m, "Z", p.to.z);
+    q.words.taper = std::fabs(slope) > 1e-12 ? as_read(m, "R", p.from.x - p.to.x) : 0;
+    q.words.lead = as_read(m, "F", plan.lead);
+    if (by_angle) q.words.start_angle = as_read(m, "thread_angle", p.start_angle);
+    g.passes.push_back(q);
+  }
+  std::vector<Cut> cuts =
+      expand_g92(g.passes, m.diameter_output, plan.p1, plan.p2, plan.pitch.starts);
+  std::string diff = compare_cuts(cuts, plan_cuts(plan), {cut_tolerance(m), false});
+  if (!diff.empty()) return fail("G92 would cut " + diff);
+  return g;
+}
+
+}  // namespace
+
+Fit FanucG76Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
+  Fit f;
+  fanuc_words(plan, m, f);
+  return f;
+}
+
+bool FanucG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
+  const Machine& m = prog.machine();
+  Fit f;
+  std::optional<FanucBlock> b = fanuc_words(plan, m, f);
+  if (!b) {
+    ctx.diags.error(
+        plan.loc, ctx.lines.text(plan.loc.line),
+        fmt::format("machine '{}': G76 cannot cut this thread: {}", m.name, f.mismatch));
+    return false;
+  }
+  const FanucG76Words& w = b->w;
+  const std::string_view df = depth_format(plan);
+  prog.rapid(LathePoint{b->start.x, b->start.z});
+  TemplateArgs a;
+  a.push_back(fmt::arg("m", fmt::format("{:02}", w.finish_passes)));
+  a.push_back(fmt::arg("chamfer", fmt::format("{:02}", w.chamfer)));
+  a.push_back(fmt::arg("angle", fmt::format("{:02}", w.tool_angle)));
+  a.push_back(fmt::arg("min_cut", prog.num(df, w.min_cut)));
+  a.push_back(fmt::arg("allowance", prog.num(kAllowance, w.allowance)));
+  a.push_back(fmt::arg("x", prog.num("X", w.x)));
+  a.push_back(fmt::arg("z", prog.num("Z", w.z)));
+  a.push_back(fmt::arg("taper", w.taper != 0 ? " R" + prog.num("R", w.taper) : std::string()));
+  a.push_back(fmt::arg("height", prog.num(df, w.height)));
+  a.push_back(fmt::arg("first_cut", prog.num(df, w.first_cut)));
+  a.push_back(fmt::arg("lead", prog.num("F", w.lead)));
+  prog.emit_template(kFanucTemplate, a);
+  prog.cycle_ended_at(LathePoint{b->start.x, b->start.z});
+  const Vec2 e = g76::point_as_read(m, plan.end_position);
+  if (!at_end(prog, e)) prog.rapid(LathePoint{plan.end_position.x, plan.end_position.z});
+  return true;
+}
+
+Fit G92Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
+  Fit f;
+  g92_words(plan, m, f);
+  return f;
+}
+
+bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
+  const Machine& m = prog.machine();
+  Fit f;
+  std::optional<G92Plan> g = g92_words(plan, m, f);
+  if (!g) {
+    ctx.diags.error(
+        plan.loc, ctx.lines.text(plan.loc.line),
+        fmt::format("machine '{}': G92 cannot cut this thread: {}", m.name, f.mismatch));
+    return false;
+  }
+  const double k = m.diameter_output ? 2 : 1;
+  bool modal = false;      // a G92 is in force (a G0 ends it)
+  G92Words last;           // its words
+  std::optional<Vec2> at;  // where the tool is (known after the first block)
+  for (const G92Pass& p : g->passes) {
+    if (!at) {
+      prog.rapid(LathePoint{p.start.x, p.start.z});
+    } else if (at->x != p.start.x || at->z != p.start.z) {
+      // The flank shift (or the next start): a rapid to the new start point ends the G92 mode.
+      NcWriter& w = prog.writer();
+      w.code(m.code("rapid"));
+      if (at->x != p.start.x) w.word("X", k * p.start.x);
+      if (at->z != p.start.z) w.word("Z", p.start.z);
+      w.end_block();
+      modal = false;
+    }
+    const G92Words& q = p.words;
+    const std::string angle =
+        q.start_angle ? " Q" + prog.num("thread_angle", *q.start_angle) : std::string();
+    TemplateArgs a;
+    a.push_back(fmt::arg("x", prog.num("X", q.x)));
+    if (!modal) {
+      a.push_back(fmt::arg("z", prog.num("Z", q.z)));
+      a.push_back(fmt::arg("taper", q.taper != 0 ? " R" + prog.num("R", q.taper) : std::string()));
+      a.push_back(fmt::arg("lead", prog.num("F", q.lead)));
+      a.push_back(fmt::arg("start_angle", angle));
+      prog.emit_template("g92", a);
+    } else {
+      a.push_back(fmt::arg("z", q.z != last.z ? " Z" + prog.num("Z", q.z) : std::string()));
+      a.push_back(
+          fmt::arg("taper", q.taper != last.taper ? " R" + prog.num("R", q.taper) : std::string()));
+      a.push_back(fmt::arg("lead", std::string()));
+      a.push_back(fmt::arg("start_angle", angle));
+      prog.emit_template("g92_next", a);
+    }
+    last = q;
+    modal = true;
+    at = p.start;
+    prog.cycle_ended_at(LathePoint{p.start.x, p.start.z});
+  }
+  const Vec2 e = g76::point_as_read(m, plan.end_position);
+  if (!at_end(prog, e)) prog.rapid(LathePoint{plan.end_position.x, plan.end_position.z});
+  return true;
+}
+
+}  // namespace clpost

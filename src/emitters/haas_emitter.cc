@@ -1,0 +1,206 @@
+#include "emitters/haas_emitter.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "emitters/fanuc_emitter.h"
+#include "writer/number_format.h"
+
+namespace clpost {
+
+HaasSettings haas_settings(const Machine& m, LengthUnit plan_units) {
+  double f = 1;
+  if (m.default_units == "mm" && plan_units == LengthUnit::kInch) f = 1 / 25.4;
+  if (m.default_units == "in" && plan_units == LengthUnit::kMm) f = 25.4;
+  HaasSettings s;
+  s.finish_allowance = m.haas_finish_allowance * f;
+  s.min_cut = m.haas_min_cut * f;
+  s.chamfer = m.haas_chamfer;
+  s.chamfer_angle = m.chamfer_angle;
+  return s;
+}
+
+namespace {
+
+using g76::as_read;
+using g76::at_end;
+using g76::read_up;
+
+constexpr const char* kTemplate = "haas_g76";
+
+std::string text(const Machine& m, std::string_view f, double v) {
+  std::string s;
+  append_number(s, v, m.format_for(f));
+  return s;
+}
+
+struct HaasBlock {
+  HaasG76Words w;
+  Vec2 start;  // A as written
+};
+
+std::optional<std::vector<HaasBlock>> haas_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
+  auto fail = [&](std::string why) -> std::optional<std::vector<HaasBlock>> {
+    f.mismatch = std::move(why);
+    return std::nullopt;
+  };
+  if (plan.pitch.lead_change != 0) return fail("variable lead: G76 cuts a constant lead");
+  if (plan.option == 0)
+    return fail(
+        "OPTION 0, steps shrinking by a constant amount: Haas G76 cuts D x root n "
+        "with P1 or n x D with P3");
+  if (plan.option == 2 || plan.option == 4)
+    return fail(
+        fmt::format("OPTION {} alternates flanks: the control's alternating infeed P{} "
+                    "is not documented in our sources, unverified",
+                    plan.option, plan.option));
+  const double a = plan.tool_angle;
+  if (std::fabs(a - std::round(a)) > 1e-9 || a > 120)
+    return fail(fmt::format("tool angle {:g}: A takes whole degrees 0-120", a));
+  if (!m.templates.count(kTemplate))
+    return fail(fmt::format("machine '{}' has no template '{}'", m.name, kTemplate));
+  const HaasSettings s = haas_settings(m, plan.units);
+  const CycleLaw law{m.diameter_output, m.cycle_shifted_end, s.chamfer_angle};
+  const int starts = std::max(1, plan.pitch.starts);
+  const bool by_angle = plan.starts_by_angle && starts > 1;
+  const CutCompareOptions opt{cut_tolerance(m), true};
+  const double xk = m.diameter_output ? 2 : 1;
+  std::vector<HaasBlock> blocks;
+  std::vector<Cut> cuts, want, moved;
+  double most = 0;
+  for (int k = 0; k < starts; ++k) {
+    g76::CyclePlan cp;
+    std::string why = g76::read_cycle_plan(plan, k, "G76", cp);
+    if (!why.empty()) return fail(why);
+    if (cp.flank < 0 || std::fabs(cp.flank - a / 2) > 1e-6)
+      return fail(
+          fmt::format("the passes are not shifted along the flank at {:g} deg: G76 infeeds "
+                      "at half the tool angle A",
+                      a / 2));
+    const double chamfer = s.chamfer * plan.lead;
+    if (cp.chamfer == 0 && chamfer > 0)
+      return fail(
+          fmt::format("the plan has no pull-out; the control chamfers {:g} leads (setting "
+                      "95, threading.haas_chamfer)",
+                      s.chamfer));
+    if (cp.chamfer > 0 && chamfer == 0)
+      return fail(
+          fmt::format("pull-out ({}): the control's chamfer (setting 95, "
+                      "threading.haas_chamfer) is 0",
+                      g76::describe_pullout(plan)));
+    if (cp.chamfer > 0 && (std::fabs(cp.chamfer - chamfer) > 1e-6 ||
+                           std::fabs(cp.chamfer_angle - s.chamfer_angle) > 1e-6))
+      return fail(
+          fmt::format("pull-out ({}) is not the control's chamfer of {:g} leads at {:g} deg "
+                      "(settings 95/96)",
+                      g76::describe_pullout(plan), s.chamfer, s.chamfer_angle));
+    const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
+    size_t at_k = 0;
+    while (at_k < cp.heights.size() && cp.heights[cp.heights.size() - 1 - at_k] >= h_max - 1e-9)
+      ++at_k;
+    if (at_k > 1)
+      return fail(
+          fmt::format("{} passes at full depth: Haas G76 cuts one (no spring passes)", at_k));
+    const size_t below = cp.heights.size() - 1;
+    const double gap = below > 0 ? h_max - cp.heights[below - 1] : h_max;
+    const bool finish = plan.passes.back().kind == PassKind::kFinish;
+    if (s.finish_allowance == 0 && finish)
+      return fail(
+          fmt::format("finish allowance {:.4g} (FINCUT): the control's setting 86 "
+                      "(threading.haas_finish_allowance) is 0",
+                      gap));
+    if (s.finish_allowance > 0 && std::fabs(gap - s.finish_allowance) > 1e-6)
+      return fail(
+          fmt::format("the last step {:.4g} is not the control's finish allowance {:.4g} "
+                      "(setting 86, threading.haas_finish_allowance)",
+                      gap, s.finish_allowance));
+    HaasBlock b;
+    HaasG76Words& w = b.w;
+    w.mode = plan.option == 3 ? 3 : 1;
+    w.tool_angle = static_cast<int>(std::round(a));
+    w.lead = as_read(m, "F", plan.lead);
+    w.height = as_read(m, "K", h_max);
+    w.first_cut = read_up(m, "D", cp.heights[0]);
+    w.x = as_read(m, "X", xk * cp.end.x);
+    w.z = as_read(m, "Z", cp.end.z);
+    b.start = g76::point_as_read(m, cp.start);
+    w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "I", cp.slope * (b.start.z - w.z)) : 0;
+    if (by_angle) w.start_angle = as_read(m, "thread_angle", k * 360.0 / starts);
+    std::vector<Cut> c = expand_haas_g76(w, b.start, s, law, starts);
+    cuts.insert(cuts.end(), c.begin(), c.end());
+    want.insert(want.end(), cp.cuts.begin(), cp.cuts.end());
+    std::vector<Cut> mv = cp.cuts;
+    most = std::max(most, g76::move_ends_to_deepest(cp, mv));
+    moved.insert(moved.end(), mv.begin(), mv.end());
+    blocks.push_back(b);
+  }
+  std::string diff = compare_cuts(cuts, want, opt);
+  std::string rest = diff.empty() || m.cycle_shifted_end ? diff : compare_cuts(cuts, moved, opt);
+  if (!rest.empty()) diff = rest;  // a difference beyond the pass ends is what to report
+  if (!diff.empty() && rest.empty()) {
+    const std::string z = text(m, "Z", blocks.front().w.z);
+    if (!m.accept_pass_end)
+      return fail(
+          fmt::format("G76 ends every pass at Z{}; the plan ends the shallower passes up "
+                      "to {:.4f} earlier (threading.accept_pass_end is off)",
+                      z, most));
+    f.notes.push_back(
+        fmt::format("G76 ends every pass at Z{}; the plan ends the shallower "
+                    "passes up to {:.4f} earlier (threading.accept_pass_end)",
+                    z, most));
+    diff.clear();
+  }
+  if (!diff.empty()) return fail("G76 would cut " + diff);
+  if (starts > 1)
+    f.notes.push_back(
+        fmt::format("G76 cuts the {} starts one after the other (the plan "
+                    "interleaves them)",
+                    starts));
+  return blocks;
+}
+
+}  // namespace
+
+Fit HaasG76Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
+  Fit f;
+  haas_words(plan, m, f);
+  return f;
+}
+
+bool HaasG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
+  const Machine& m = prog.machine();
+  Fit f;
+  std::optional<std::vector<HaasBlock>> blocks = haas_words(plan, m, f);
+  if (!blocks) {
+    ctx.diags.error(
+        plan.loc, ctx.lines.text(plan.loc.line),
+        fmt::format("machine '{}': G76 cannot cut this thread: {}", m.name, f.mismatch));
+    return false;
+  }
+  for (const HaasBlock& b : *blocks) {
+    const HaasG76Words& w = b.w;
+    prog.rapid(LathePoint{b.start.x, b.start.z});
+    TemplateArgs a;
+    a.push_back(fmt::arg("x", prog.num("X", w.x)));
+    a.push_back(fmt::arg("z", prog.num("Z", w.z)));
+    a.push_back(fmt::arg("taper", w.taper != 0 ? " I" + prog.num("I", w.taper) : std::string()));
+    a.push_back(fmt::arg("height", prog.num("K", w.height)));
+    a.push_back(fmt::arg("first_cut", prog.num("D", w.first_cut)));
+    a.push_back(fmt::arg("angle", fmt::format("{}", w.tool_angle)));
+    a.push_back(fmt::arg("mode", fmt::format("{}", w.mode)));
+    a.push_back(fmt::arg("start_angle", w.start_angle
+                                            ? " Q" + prog.num("thread_angle", *w.start_angle)
+                                            : std::string()));
+    a.push_back(fmt::arg("lead", prog.num("F", w.lead)));
+    prog.emit_template(kTemplate, a);
+    prog.cycle_ended_at(LathePoint{b.start.x, b.start.z});
+  }
+  const Vec2 e = g76::point_as_read(m, plan.end_position);
+  if (!at_end(prog, e)) prog.rapid(LathePoint{plan.end_position.x, plan.end_position.z});
+  return true;
+}
+
+}  // namespace clpost
