@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs every test: the release build, then the same suite under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Installs what is missing first (rs274 included, so the LinuxCNC
-# checks run rather than skip).
+# UndefinedBehaviorSanitizer, then a 30-second libFuzzer run of each fuzz target (scripts/fuzz.sh).
+# Installs what is missing first (rs274 included, so the LinuxCNC checks run rather than skip).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh test
@@ -17,3 +17,6 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCLPOST_SANITIZE=ON 
 cmake --build build-asan -j "$jobs"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --output-on-failure -j "$jobs")
+
+echo "== fuzz smoke run (libFuzzer, 30 s per target)"
+scripts/fuzz.sh 30

@@ -32,6 +32,7 @@ PostOutcome post_file(const PostRequest& req) {
     diags.error({}, {}, fmt::format("cannot open: {}", std::strerror(errno)));
     out.errors = 1;
     out.diagnostics = diags.render_all();
+    out.kept = diags.kept();
     return out;
   }
   OutputFile file;
@@ -45,6 +46,7 @@ PostOutcome post_file(const PostRequest& req) {
       if (in != stdin) std::fclose(in);
       out.errors = diags.error_count();
       out.diagnostics = diags.render_all();
+      out.kept = diags.kept();
       return out;
     }
     sink = &file;
@@ -58,7 +60,7 @@ PostOutcome post_file(const PostRequest& req) {
     while (reader.next(st)) interp.statement(st);
     if (interp.stats().statements == 0 && !diags.has_errors()) {
       diags.error({}, {}, "no CL statements in the file");
-    } else {
+    } else if (!reader.gave_up()) {
       interp.end_of_input(reader.line());
     }
     out.stats = interp.stats();
@@ -81,6 +83,7 @@ PostOutcome post_file(const PostRequest& req) {
   out.warnings = diags.warning_count();
   out.ok = !diags.has_errors();
   out.diagnostics = diags.render_all();
+  out.kept = diags.kept();
   return out;
 }
 

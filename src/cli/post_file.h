@@ -3,6 +3,7 @@
 // the file has an error). Used by the CLI's post, check and plan commands and by the batch.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "interpreter/interpreter.h"
 #include "machine/machine.h"
@@ -21,7 +22,8 @@ struct PostOutcome {
   bool ok = false;  // no errors (output written when one was asked for)
   size_t errors = 0;
   size_t warnings = 0;
-  std::string diagnostics;  // rendered, ready for stderr
+  std::string diagnostics;       // rendered, ready for stderr
+  std::vector<Diagnostic> kept;  // the same as data (batch report); at most kMaxKept
   PostStats stats;
   LengthUnit units = LengthUnit::kMm;
   size_t bytes_in = 0;

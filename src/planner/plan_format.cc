@@ -82,6 +82,20 @@ size_t utf8_length(std::string_view s, size_t i) {
   return n;
 }
 
+std::string json_num(double v) {
+  return std::isfinite(v) ? num_text(v) : "null";
+}
+
+std::string json_point(Vec2 p) {
+  return fmt::format("{{\"x\": {}, \"z\": {}}}", json_num(p.x), json_num(p.z));
+}
+
+std::string text_point(Vec2 p) {
+  return fmt::format("(X {}, Z {})", num_text(p.x), num_text(p.z));
+}
+
+}  // namespace
+
 std::string json_string(std::string_view s) {
   std::string out = "\"";
   for (size_t i = 0; i < s.size();) {
@@ -113,20 +127,6 @@ std::string json_string(std::string_view s) {
   out += '"';
   return out;
 }
-
-std::string json_num(double v) {
-  return std::isfinite(v) ? num_text(v) : "null";
-}
-
-std::string json_point(Vec2 p) {
-  return fmt::format("{{\"x\": {}, \"z\": {}}}", json_num(p.x), json_num(p.z));
-}
-
-std::string text_point(Vec2 p) {
-  return fmt::format("(X {}, Z {})", num_text(p.x), num_text(p.z));
-}
-
-}  // namespace
 
 std::string plan_to_json(const std::string& file, LengthUnit units,
                          const std::vector<ThreadPlan>& plans) {

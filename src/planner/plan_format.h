@@ -2,6 +2,7 @@
 // Pass plans as text: the JSON of `clpost plan --format json` (threading.md section 10) and a
 // table for people.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "planner/thread_plan.h"
@@ -21,6 +22,10 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
 // returns and where it ends.
 std::string plan_to_text(const std::string& file, LengthUnit units,
                          const std::vector<ThreadPlan>& plans);
+
+// A JSON string literal, quotes included (invalid UTF-8 becomes U+FFFD). Also used by the batch
+// report.
+std::string json_string(std::string_view s);
 
 // Names used in both formats.
 const char* form_name(ThreadForm f);

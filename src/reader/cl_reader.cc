@@ -53,6 +53,7 @@ struct ClReader::Impl {
   std::vector<LineSource::Line> lines;  // of the statement being read
   size_t errors = 0;
   bool done = false;
+  bool gave_up = false;  // done before the end of the input
   bool at_start = true;  // no non-blank line seen yet
 };
 
@@ -61,6 +62,7 @@ void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string mes
   if (++errors >= kMaxErrors && !done) {
     diags.note(SourceLoc{}, {}, "too many errors, stopping");
     done = true;
+    gave_up = true;
   }
 }
 
@@ -72,6 +74,7 @@ void ClReader::Impl::fail(Status s) {
     error(SourceLoc{}, {}, "error reading input: " + src.read_error());
   }
   done = true;
+  gave_up = true;
 }
 
 bool ClReader::Impl::next(Statement& out) {
@@ -235,6 +238,9 @@ size_t ClReader::bytes_read() const {
 }
 uint32_t ClReader::line() const {
   return impl_->src.line_number();
+}
+bool ClReader::gave_up() const {
+  return impl_->gave_up;
 }
 
 }  // namespace clpost

@@ -31,6 +31,9 @@ class ClReader {
   size_t bytes_read() const;
   // Number of the last physical line read.
   uint32_t line() const;
+  // Reading stopped before the end of the input (binary data, a read error, too many errors):
+  // the rest of the file was not read, so nothing should be said about how it ends.
+  bool gave_up() const;
 
   // Limits on hostile input.
   static constexpr size_t kMaxStatementBytes = 1 << 20;  // a logical statement, continuations in

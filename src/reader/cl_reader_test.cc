@@ -524,6 +524,23 @@ TEST(ClReader, BinaryAfterFirstChunkStopsThere) {
   EXPECT_EQ(dump(r).find("FINI"), std::string::npos);
 }
 
+TEST(ClReader, GaveUpOnlyWhenStoppedBeforeTheEnd) {
+  auto gave_up = [](std::string_view text) {
+    Diagnostics diags("t.cl");
+    ClReader reader(text, diags);
+    Statement s;
+    while (reader.next(s)) {
+    }
+    return reader.gave_up();
+  };
+  EXPECT_FALSE(gave_up(""));
+  EXPECT_FALSE(gave_up("GOTO/1\nGOTO/1,,2\nFINI\n"));  // an error, but read to the end
+  EXPECT_TRUE(gave_up(std::string("GOTO/1\n\0\0\0", 10)));
+  std::string many;
+  for (int i = 0; i < 150; ++i) many += "GOTO/1,,2\n";
+  EXPECT_TRUE(gave_up(many));
+}
+
 const std::string kTooLong = "error: statement too long (more than 1048576 bytes)\n";
 
 TEST(ClReader, StatementTooLongOneLine) {

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
+#include <cstdint>
+#include <string>
+
 namespace clpost::reader {
 namespace {
 
@@ -50,6 +55,35 @@ TEST(Number, LooksNumeric) {
   EXPECT_FALSE(looks_numeric("10_SVERL_63_N2"));
   EXPECT_FALSE(looks_numeric("1ST"));
   EXPECT_FALSE(looks_numeric("nan"));
+}
+
+TEST(Number, SameValueAsFromCharsForEveryPlainDecimal) {
+  // Plain decimals take a fast path (mantissa / 10^k); it must agree with from_chars bit for bit.
+  uint64_t x = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < 300000; ++i) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    const int whole_digits = static_cast<int>(x % 9);
+    const int frac_digits = static_cast<int>((x >> 8) % 12);
+    std::string text = (x >> 20) % 2 ? "-" : "";
+    uint64_t d = x >> 24;
+    for (int k = 0; k < whole_digits; ++k, d /= 10) text += static_cast<char>('0' + d % 10);
+    text += '.';
+    for (int k = 0; k < frac_digits; ++k, d /= 7) text += static_cast<char>('0' + d % 10);
+    if (whole_digits + frac_digits == 0) text += '5';
+    double expected = 0;
+    const char* first = text.data();
+    std::from_chars(first, text.data() + text.size(), expected);
+    double v = 0;
+    ASSERT_EQ(parse_number(text, v), NumberStatus::kOk) << text;
+    ASSERT_EQ(std::bit_cast<uint64_t>(v), std::bit_cast<uint64_t>(expected)) << text;
+  }
+  for (std::string_view text : {"0.1", "-0.0", "-0.0000", "37.9125", "999999999999999.9",
+                                "0.000000000000000000001", "123456789012345", "1234567890123456"}) {
+    double expected = 0, v = 0;
+    std::from_chars(text.data(), text.data() + text.size(), expected);
+    ASSERT_EQ(parse_number(text, v), NumberStatus::kOk) << text;
+    EXPECT_EQ(std::bit_cast<uint64_t>(v), std::bit_cast<uint64_t>(expected)) << text;
+  }
 }
 
 }  // namespace

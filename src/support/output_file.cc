@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
@@ -28,6 +29,12 @@ bool write_all(int fd, const char* data, size_t size, int& err) {
   }
   return true;
 }
+
+// Paths that are never renamed over, whatever stat() says of them: /dev/stdout, for one, is a
+// link to whatever standard output is, a regular file included.
+bool is_system_path(const std::string& path) {
+  return path.starts_with("/dev/") || path.starts_with("/proc/");
+}
 }  // namespace
 
 OutputFile::~OutputFile() {
@@ -37,25 +44,57 @@ OutputFile::~OutputFile() {
 bool OutputFile::open(const std::string& path, std::string& error) {
   abort();
   path_ = path;
+  target_.clear();
   failed_ = false;
+  errno_ = 0;
   bytes_ = 0;
   buffer_.clear();
   buffer_.reserve(kBufferSize);
-  struct stat st {};
-  bool exists = path != "-" && ::stat(path.c_str(), &st) == 0;
-  if (path == "-" || (exists && !S_ISREG(st.st_mode))) {
-    spooled_ = true;
+  if (path == "-") {
     std::FILE* tmp = std::tmpfile();
     if (tmp == nullptr) {
       error = fmt::format("cannot create a temporary file: {}", std::strerror(errno));
       return false;
     }
     fd_ = ::dup(fileno(tmp));
+    const int err = errno;
     std::fclose(tmp);  // the anonymous file lives on through fd_
-    return fd_ >= 0;
+    if (fd_ < 0) {
+      error = fmt::format("cannot create a temporary file: {}", std::strerror(err));
+      return false;
+    }
+    owns_fd_ = true;
+    mode_ = Mode::kSpool;
+    return true;
   }
-  spooled_ = false;
-  std::filesystem::path p(path);
+  if (path == "/dev/stdout" || path == "/dev/stderr") {
+    fd_ = path == "/dev/stdout" ? STDOUT_FILENO : STDERR_FILENO;
+    owns_fd_ = false;
+    mode_ = Mode::kDirect;
+    return true;
+  }
+  // A symbolic link is followed, so that the file it points to is replaced, not the link.
+  std::string target = path;
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    if (char* real = ::realpath(path.c_str(), nullptr)) {
+      target = real;
+      std::free(real);
+    }
+  }
+  const bool exists = ::stat(target.c_str(), &st) == 0;
+  if ((exists && !S_ISREG(st.st_mode)) || is_system_path(path) || is_system_path(target)) {
+    // Never created: a device that is not there is an error, not a new file in /dev.
+    fd_ = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd_ < 0) {
+      error = fmt::format("cannot open '{}': {}", path, std::strerror(errno));
+      return false;
+    }
+    owns_fd_ = true;
+    mode_ = Mode::kDirect;
+    return true;
+  }
+  std::filesystem::path p(target);
   std::string dir = p.has_parent_path() ? p.parent_path().string() : ".";
   std::string templ = dir + "/." + p.filename().string() + ".XXXXXX";
   fd_ = ::mkstemp(templ.data());
@@ -63,7 +102,10 @@ bool OutputFile::open(const std::string& path, std::string& error) {
     error = fmt::format("cannot write '{}': {}", path, std::strerror(errno));
     return false;
   }
+  owns_fd_ = true;
+  mode_ = Mode::kAtomic;
   temp_ = templ;
+  target_ = target;
   // mkstemp makes 0600 files; give the program the permissions of the file it replaces, or the
   // usual ones for a new file.
   ::fchmod(fd_, exists ? (st.st_mode & 07777) : 0644);
@@ -81,7 +123,7 @@ bool OutputFile::flush_buffer() {
 }
 
 void OutputFile::write(std::string_view text) {
-  if (fd_ < 0) return;
+  if (fd_ < 0 || failed_) return;
   bytes_ += text.size();
   if (buffer_.size() + text.size() > kBufferSize) flush_buffer();
   if (text.size() >= kBufferSize) {
@@ -91,25 +133,38 @@ void OutputFile::write(std::string_view text) {
   buffer_.append(text);
 }
 
+void OutputFile::close_fd() {
+  if (fd_ >= 0 && owns_fd_) ::close(fd_);
+  fd_ = -1;
+  owns_fd_ = false;
+}
+
 bool OutputFile::commit(std::string& error) {
   if (fd_ < 0) {
     error = "output is not open";
     return false;
   }
-  std::string target = path_ == "-" ? "standard output" : "'" + path_ + "'";
+  const std::string target = mode_ == Mode::kSpool ? "standard output" : "'" + path_ + "'";
   if (!flush_buffer()) {
     error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
     abort();
     return false;
   }
-  if (spooled_) {
-    int out = path_ == "-" ? STDOUT_FILENO : ::open(path_.c_str(), O_WRONLY | O_APPEND);
-    if (out < 0) {
-      error = fmt::format("cannot open {}: {}", target, std::strerror(errno));
-      abort();
-      return false;
+  if (mode_ == Mode::kDirect) {
+    bool ok = true;
+    if (owns_fd_) {
+      ok = ::close(fd_) == 0 || errno == EINTR;
+      if (!ok) errno_ = errno;
+      fd_ = -1;
+      owns_fd_ = false;
     }
+    mode_ = Mode::kClosed;
+    if (!ok) error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
+    return ok;
+  }
+  if (mode_ == Mode::kSpool) {
     bool ok = ::lseek(fd_, 0, SEEK_SET) == 0;
+    if (!ok) errno_ = errno;
     char buf[kBufferSize];
     while (ok) {
       ssize_t n = ::read(fd_, buf, sizeof buf);
@@ -119,11 +174,10 @@ bool OutputFile::commit(std::string& error) {
         if (!ok) errno_ = errno;
         break;
       }
-      ok = write_all(out, buf, static_cast<size_t>(n), errno_);
+      ok = write_all(STDOUT_FILENO, buf, static_cast<size_t>(n), errno_);
     }
-    if (path_ != "-") ::close(out);
-    ::close(fd_);
-    fd_ = -1;
+    close_fd();
+    mode_ = Mode::kClosed;
     if (!ok) error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
     return ok;
   }
@@ -132,24 +186,31 @@ bool OutputFile::commit(std::string& error) {
     abort();
     return false;
   }
-  ::close(fd_);
+  const bool closed = ::close(fd_) == 0 || errno == EINTR;
+  const int close_errno = errno;
   fd_ = -1;
-  if (::rename(temp_.c_str(), path_.c_str()) != 0) {
+  owns_fd_ = false;
+  if (!closed) {
+    error = fmt::format("cannot write {}: {}", target, std::strerror(close_errno));
+    abort();
+    return false;
+  }
+  if (::rename(temp_.c_str(), target_.c_str()) != 0) {
     error = fmt::format("cannot write {}: {}", target, std::strerror(errno));
-    ::unlink(temp_.c_str());
-    temp_.clear();
+    abort();
     return false;
   }
   temp_.clear();
+  mode_ = Mode::kClosed;
   return true;
 }
 
 void OutputFile::abort() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
+  close_fd();
   if (!temp_.empty()) ::unlink(temp_.c_str());
   temp_.clear();
   buffer_.clear();
+  mode_ = Mode::kClosed;
 }
 
 }  // namespace clpost

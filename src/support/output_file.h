@@ -1,10 +1,15 @@
 #pragma once
-// An output that never leaves a partial or failed program behind.
+// An output that never leaves a partial or failed program behind in a file.
 // - A regular file (or a path that does not exist yet) is written to a temporary file in the
 //   same directory and renamed over the target by commit(); abort() or destruction removes it.
-// - Standard output ("-") and other non-regular targets (devices, pipes) are never renamed
-//   over: the text is spooled to an anonymous temporary file and copied to the target by
-//   commit(), so an error found late still leaves nothing behind.
+//   A symbolic link to a regular file is followed: its target is replaced, the link stays.
+// - Standard output ("-") is spooled to an anonymous temporary file and copied to standard
+//   output by commit(), so a program with an error found late puts nothing on standard output.
+// - A device, a pipe or anything else that is not a regular file (`/dev/null`, `/dev/full`,
+//   `/dev/stdout`, a FIFO, a serial port; every path under /dev/ and /proc/) is never renamed
+//   over: it is opened and written directly, streaming in 64 KiB blocks, so memory stays bounded.
+//   What was written before an error cannot be taken back; write errors (ENOSPC on /dev/full)
+//   are reported by write() failing silently and commit() returning false.
 #include <string>
 #include <string_view>
 
@@ -22,20 +27,27 @@ class OutputFile : public Sink {
   // "-" is standard output. Returns false with a message in `error`.
   bool open(const std::string& path, std::string& error);
   void write(std::string_view text) override;
-  // Flushes and publishes the output. Returns false (and leaves nothing) on a write error.
+  // Flushes and publishes the output. Returns false (and leaves nothing, except what was already
+  // streamed to a device) on a write error.
   bool commit(std::string& error);
-  // Drops everything written so far.
+  // Drops everything written so far (a device keeps what it was already sent).
   void abort();
 
   size_t bytes() const { return bytes_; }
+  // The target is written directly (a device or a pipe), not through a temporary file.
+  bool direct() const { return mode_ == Mode::kDirect; }
 
  private:
+  enum class Mode { kClosed, kAtomic, kSpool, kDirect };
   bool flush_buffer();
+  void close_fd();
 
-  std::string path_;      // target
-  std::string temp_;      // temporary path (regular targets)
-  int fd_ = -1;           // temporary file
-  bool spooled_ = false;  // target is stdout or a device: copy at commit
+  std::string path_;    // target as given (messages)
+  std::string target_;  // kAtomic: the file renamed over (a symbolic link resolved)
+  std::string temp_;    // kAtomic: temporary path
+  Mode mode_ = Mode::kClosed;
+  int fd_ = -1;  // temporary file, spool, or the device
+  bool owns_fd_ = false;
   bool failed_ = false;
   int errno_ = 0;
   size_t bytes_ = 0;

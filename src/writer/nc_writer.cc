@@ -1,6 +1,7 @@
 #include "writer/nc_writer.h"
 
 #include <cctype>
+#include <charconv>
 
 #include "writer/number_format.h"
 
@@ -8,6 +9,7 @@ namespace clpost {
 
 NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_(m.block_start) {
   block_.reserve(256);
+  line_.reserve(256);
 }
 
 NcWriter& NcWriter::code(std::string_view c) {
@@ -18,9 +20,13 @@ NcWriter& NcWriter::code(std::string_view c) {
 }
 
 NcWriter& NcWriter::word(std::string_view address, double value) {
+  return word(address, value, m_.format_for(address));
+}
+
+NcWriter& NcWriter::word(std::string_view address, double value, const NumberFormat& format) {
   if (!block_.empty()) block_ += ' ';
   block_.append(address);
-  append_number(block_, value, m_.format_for(address));
+  append_number(block_, value, format);
   return *this;
 }
 
@@ -30,18 +36,24 @@ NcWriter& NcWriter::text(std::string_view raw) {
 
 void NcWriter::end_block() {
   if (block_.empty()) return;
-  std::string line;
-  bool unnumbered = false;
-  for (const std::string& prefix : m_.block_skip)
-    if (!prefix.empty() && block_.starts_with(prefix)) unnumbered = true;
-  if (m_.block_numbers && !unnumbered) {
-    line = m_.block_address + std::to_string(next_number_) + ' ';
-    next_number_ += m_.block_step;
-    if (next_number_ > m_.block_max) next_number_ = m_.block_start;
+  line_.clear();
+  if (m_.block_numbers) {
+    bool unnumbered = false;
+    for (const std::string& prefix : m_.block_skip)
+      if (!prefix.empty() && block_.starts_with(prefix)) unnumbered = true;
+    if (!unnumbered) {
+      char digits[16];
+      char* end = std::to_chars(digits, digits + sizeof digits, next_number_).ptr;
+      line_ += m_.block_address;
+      line_.append(digits, end);
+      line_ += ' ';
+      next_number_ += m_.block_step;
+      if (next_number_ > m_.block_max) next_number_ = m_.block_start;
+    }
   }
-  out_.write(line);
-  out_.write(block_);
-  out_.write(m_.line_ending);
+  line_ += block_;
+  line_ += m_.line_ending;
+  out_.write(line_);
   block_.clear();
 }
 

@@ -17,6 +17,8 @@ class NcWriter {
   NcWriter& code(std::string_view c);
   // Appends address + number in the address's format.
   NcWriter& word(std::string_view address, double value);
+  // The same with the format given (looked up once by the caller: the hot path).
+  NcWriter& word(std::string_view address, double value, const NumberFormat& format);
   // Appends text as it is (a separating blank is added).
   NcWriter& text(std::string_view raw);
   // Writes the block (with a block number when enabled); an empty block writes nothing.
@@ -32,6 +34,7 @@ class NcWriter {
   const Machine& m_;
   Sink& out_;
   std::string block_;
+  std::string line_;  // block number, block and line ending: one write per block
   int next_number_;
 };
 

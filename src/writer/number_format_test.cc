@@ -1,6 +1,11 @@
 #include "writer/number_format.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace clpost {
 namespace {
@@ -48,6 +53,65 @@ TEST(NumberFormat, RoundedMatchesWhatIsWritten) {
   EXPECT_DOUBLE_EQ(rounded(1.23456, f), 1.235);
   NumberFormat micrometres{0, false, false, true, 1000};
   EXPECT_DOUBLE_EQ(rounded(0.1504, micrometres), 150);
+}
+
+// append_number before its hand-made fast path: every digit from fmt's "{:.{}f}".
+std::string reference(double value, const NumberFormat& f) {
+  char buf[64];
+  auto r = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", value * f.scale, f.decimals);
+  std::string_view s(buf, std::min(r.size, sizeof buf));
+  bool negative = !s.empty() && s[0] == '-';
+  if (negative) s.remove_prefix(1);
+  size_t dot = s.find('.');
+  std::string_view whole = dot == std::string_view::npos ? s : s.substr(0, dot);
+  std::string_view frac = dot == std::string_view::npos ? std::string_view() : s.substr(dot + 1);
+  if (!f.trailing_zeros)
+    while (!frac.empty() && frac.back() == '0') frac.remove_suffix(1);
+  bool zero = whole.find_first_not_of('0') == std::string_view::npos &&
+              frac.find_first_not_of('0') == std::string_view::npos;
+  std::string out;
+  if (negative && !zero) out += '-';
+  if (f.leading_zero || whole != "0" || frac.empty()) out.append(whole);
+  if (!frac.empty()) {
+    out += '.';
+    out.append(frac);
+  } else if (f.decimals > 0 && f.decimal_point) {
+    out += '.';
+  }
+  return out;
+}
+
+TEST(NumberFormat, SameDigitsAsFmtEverywhere) {
+  // Halves at the rounding digit (exact ties and near ties), CL-style 4-decimal values written
+  // with 3 decimals, large and tiny values, every format variant.
+  std::vector<double> values = {
+      0.5,    1.5,     2.5,       0.0005,        1.0005,      1.0865,       2.0865, 0.125,  0.375,
+      -0.125, -2.5,    1e-9,      -1e-9,         123456.7895, 1e15,         -1e16,  4.5e17, 0.0,
+      -0.0,   99.9995, 0.1 + 0.2, 1.00049999999, 37.9125 * 2, -82.04599999, 2.675,  1.005,  1.115};
+  uint64_t x = 88172645463325252ull;  // xorshift64: deterministic
+  for (int i = 0; i < 200000; ++i) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    const double scale = std::pow(10.0, static_cast<int>(x % 7)) / 1000.0;
+    const double v = (static_cast<double>(x >> 11) / 9007199254740992.0 - 0.5) * 2000.0 * scale;
+    values.push_back(v);
+    values.push_back(std::round(v * 1e4) / 1e4);  // 4 decimals, like CL files
+    values.push_back(std::round(v * 2e3) / 2e3);  // ties at the third decimal
+  }
+  for (int decimals : {0, 1, 2, 3, 4, 6}) {
+    for (bool trailing : {false, true}) {
+      for (bool lead : {false, true}) {
+        NumberFormat f{decimals, trailing, !trailing, lead, decimals == 0 ? 1000.0 : 1.0};
+        for (double v : values) ASSERT_EQ(fmt_num(v, f), reference(v, f)) << v << " " << decimals;
+      }
+    }
+  }
+}
+
+TEST(NumberFormat, NotFiniteValuesAsFmtWritesThem) {
+  NumberFormat f;
+  EXPECT_EQ(fmt_num(INFINITY, f), reference(INFINITY, f));
+  EXPECT_EQ(fmt_num(-INFINITY, f), reference(-INFINITY, f));
+  EXPECT_EQ(fmt_num(NAN, f), reference(NAN, f));
 }
 
 }  // namespace

@@ -1,0 +1,75 @@
+#pragma once
+// Deterministic benchmark CL text (no clock, no random seed): a turning program of roughing
+// passes (RAPID in, up to 200 feed moves along Z with a small X wobble, retract) with a THREAD/ON
+// sequence every `thread_every` GOTO lines. Used by gen_cl (files) and clpost_bench (memory).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <iterator>
+#include <string>
+#include <string_view>
+
+namespace clpost::bench {
+
+// Appends the program to `buf`, calling `flush(buf)` (which empties it) whenever it holds more
+// than about 1 MiB, so that a file of any size is written in bounded memory.
+template <typename Flush>
+void turning_program(std::string& buf, Flush&& flush, std::string_view name, long gotos,
+                     long thread_every) {
+  auto out = std::back_inserter(buf);
+  auto maybe_flush = [&] {
+    if (buf.size() > (1 << 20)) flush(buf);
+  };
+  fmt::format_to(out, "$$ clpost benchmark: {} GOTO lines\nPARTNO {}\n", gotos, name);
+  buf += "UNITS/MM\nLOADTL/1,ADJUST,1\nSPINDL/1200,RPM,CLW\nCOOLNT/FLOOD\nFEDRAT/0.25,MMPR\n";
+  buf += "RAPID\nGOTO/40.0000,0.0000,5.0000\n";
+  long written = 1;
+  long pass = 0;
+  long since_thread = 0;
+  while (written < gotos) {
+    if (thread_every > 0 && since_thread >= thread_every) {
+      since_thread = 0;
+      buf +=
+          "LOADTL/7,ADJUST,7\nSPINDL/600,RPM,CLW\nRAPID\nGOTO/15.0000,0.0000,5.0000\n"
+          "THREAD/ON,DEPTH,1.534,CUTS,4,FINCUT,1,0.1,OPTION,1,MMPR,2.5,CHAMFR,2.5\n"
+          "GOTO/10.0000,0.0000,2.0000\nGOTO/10.0000,0.0000,-30.0000\nTHREAD/OFF\n"
+          "LOADTL/1,ADJUST,1\nSPINDL/1200,RPM,CLW\nFEDRAT/0.25,MMPR\n";
+      written += 3;
+      continue;
+    }
+    const double x = 38.0 - static_cast<double>(pass % 80) * 0.35;
+    fmt::format_to(out, "RAPID\nGOTO/{:.4f},0.0000,2.0000\n", x);
+    ++written;
+    const long moves = std::min<long>(200, gotos - written);
+    for (long i = 0; i < moves; ++i) {
+      const double z = 1.0 - static_cast<double>(i) * 0.4173;
+      const double xi = x - 0.0125 * static_cast<double>((i * 7 + pass) % 13);
+      fmt::format_to(out, "GOTO/{:.4f},0.0000,{:.4f}\n", xi, z);
+    }
+    written += moves;
+    since_thread += moves + 1;
+    if (written < gotos) {
+      fmt::format_to(out, "GOTO/{:.4f},0.0000,-82.0000\n", x + 1.0);
+      ++written;
+    }
+    ++pass;
+    maybe_flush();
+  }
+  buf += "RAPID\nGOTO/50.0000,0.0000,50.0000\nCOOLNT/OFF\nSPINDL/OFF\nEND\nFINI\n";
+  flush(buf);
+}
+
+// The whole program in memory (benchmarks of small inputs).
+inline std::string turning_program_text(long gotos, long thread_every) {
+  std::string all, buf;
+  turning_program(
+      buf,
+      [&](std::string& b) {
+        all += b;
+        b.clear();
+      },
+      "BENCH", gotos, thread_every);
+  return all;
+}
+
+}  // namespace clpost::bench

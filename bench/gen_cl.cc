@@ -1,0 +1,77 @@
+// Writes benchmark CL files (bench/cl_generator.h): one large turning program, or many small ones.
+//
+//   gen_cl large OUT.cl [GOTOS [THREAD_EVERY]]   GOTOS GOTO lines (default 1000000), a THREAD/ON
+//                                                sequence every THREAD_EVERY of them (3000)
+//   gen_cl small DIR [COUNT [GOTOS]]             COUNT files DIR/part-NNNN.cl (1000) of GOTOS
+//                                                GOTO lines each (2000), a thread every 1500
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "cl_generator.h"
+
+namespace {
+
+bool write_program(const std::string& path, std::string_view name, long gotos, long every) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) {
+    fmt::print(stderr, "gen_cl: cannot write {}: {}\n", path, std::strerror(errno));
+    return false;
+  }
+  bool ok = true;
+  std::string buf;
+  clpost::bench::turning_program(
+      buf,
+      [&](std::string& b) {
+        ok = ok && std::fwrite(b.data(), 1, b.size(), f) == b.size();
+        b.clear();
+      },
+      name, gotos, every);
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok) fmt::print(stderr, "gen_cl: cannot write {}\n", path);
+  return ok;
+}
+
+bool parse_long(const char* s, long& v) {
+  const char* end = s + std::strlen(s);
+  auto [p, ec] = std::from_chars(s, end, v);
+  return ec == std::errc() && p == end && v >= 0;
+}
+
+int usage() {
+  std::fputs(
+      "usage: gen_cl large OUT.cl [GOTOS [THREAD_EVERY]]\n"
+      "       gen_cl small DIR [COUNT [GOTOS]]\n",
+      stderr);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) return usage();
+  const std::string_view mode = argv[1];
+  if (mode == "large") {
+    long gotos = 1000000, every = 3000;
+    if ((argc > 3 && !parse_long(argv[3], gotos)) || (argc > 4 && !parse_long(argv[4], every)))
+      return usage();
+    return write_program(argv[2], "BENCH-LARGE", gotos, every) ? 0 : 1;
+  }
+  if (mode == "small") {
+    long count = 1000, gotos = 2000;
+    if ((argc > 3 && !parse_long(argv[3], count)) || (argc > 4 && !parse_long(argv[4], gotos)))
+      return usage();
+    for (long n = 0; n < count; ++n) {
+      if (!write_program(fmt::format("{}/part-{:04}.cl", argv[2], n), fmt::format("BENCH-{:04}", n),
+                         gotos, 1500))
+        return 1;
+    }
+    return 0;
+  }
+  return usage();
+}

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, ASan + UBSan, in build-fuzz/) and runs each for SECONDS
+# (default 60), one job at a time, printing how many inputs each one ran. Exits 1 on the first
+# crash, leak, timeout (> 1 s for one input) or out-of-memory (> 2 GB); the input that did it is
+# left in build-fuzz/artifacts/ and the fuzzer's log in build-fuzz/logs/.
+#
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: cl_post_fuzzer machine_yaml_fuzzer
+#
+# Each target's corpus grows in build-fuzz/corpus/<target>/ from run to run. Seeds are made fresh
+# every run from samples/, fuzz/seeds/, the shipped machines and posts, and the real CAM files in
+# ../shared/realcl/ when that folder is there (read in place, never copied into the tree).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+secs=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(cl_post_fuzzer machine_yaml_fuzzer)
+build=${CLPOST_FUZZ_BUILD:-build-fuzz}
+
+scripts/deps.sh test
+cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCLPOST_FUZZ=ON -DCLPOST_TESTS=OFF >/dev/null
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+
+# Seeds: small files only (libFuzzer cuts inputs to -max_len anyway).
+seed() {  # seed <target> <files...>
+  local dir="$build/seeds/$1"
+  shift
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  local f
+  for f in "$@"; do
+    [ -f "$f" ] && [ "$(stat -c %s "$f")" -le 65536 ] || continue
+    cp "$f" "$dir/$(printf '%s' "$f" | tr '/ ' '__')"
+  done
+}
+realcl=()
+if [ -d ../shared/realcl ]; then
+  while IFS= read -r -d '' f; do realcl+=("$f"); done \
+    < <(find ../shared/realcl -type f ! -name '*.md' -print0)
+fi
+mapfile -t samples < <(find samples -type f \( -name "*.apt" -o -name "*.cls" -o -name "*.ncl" \) | sort)
+seed cl_post_fuzzer "${samples[@]}" fuzz/seeds/cl/* "${realcl[@]}"
+seed machine_yaml_fuzzer machines/*.yaml posts/*.yaml fuzz/seeds/yaml/*
+
+mkdir -p "$build/artifacts" "$build/logs"
+status=0
+summary=""
+for t in "${targets[@]}"; do
+  case "$t" in
+    cl_post_fuzzer) dict=fuzz/cl.dict ;;
+    machine_yaml_fuzzer) dict=fuzz/yaml.dict ;;
+    *) echo "fuzz.sh: unknown target '$t'" >&2; exit 2 ;;
+  esac
+  corpus="$build/corpus/$t"
+  log="$build/logs/$t.log"
+  mkdir -p "$corpus"
+  echo "== $t: $secs s"
+  rc=0
+  "$build/fuzz/$t" "$corpus" "$build/seeds/$t" -dict="$dict" -max_total_time="$secs" \
+    -timeout=1 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
+    -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1 || rc=$?
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  cov=$(grep -E '^#[0-9]+' "$log" | tail -1 | sed -n 's/.* cov: \([0-9]*\).*/\1/p')
+  line="$t: ${runs:-?} executions in $secs s, coverage ${cov:-?} edges, corpus $(ls "$corpus" | wc -l) files"
+  if [ "$rc" -ne 0 ]; then
+    line="$line: FAILED (exit $rc, log $log)"
+    status=1
+    grep -E 'ERROR: |SUMMARY: |Test unit written to|runtime error' "$log" | head -20 >&2 || true
+  fi
+  echo "$line"
+  summary+="$line"$'\n'
+done
+echo "== fuzz summary"
+printf '%s' "$summary"
+exit $status

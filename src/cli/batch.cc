@@ -1,0 +1,243 @@
+#include "cli/batch.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <system_error>
+#include <thread>
+
+namespace clpost {
+
+namespace fs = std::filesystem;
+
+bool is_cl_file_name(const std::string& name) {
+  static constexpr std::string_view kExtensions[] = {".cl",   ".cls",       ".apt",   ".ncl",
+                                                     ".clsf", ".aptsource", ".cldata"};
+  const fs::path ext = fs::path(name).extension();
+  std::string e = ext.string();
+  for (char& c : e) c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  return std::find(std::begin(kExtensions), std::end(kExtensions), e) != std::end(kExtensions);
+}
+
+bool collect_inputs(const std::vector<std::string>& args, bool recursive,
+                    std::vector<std::string>& files, std::string& error) {
+  files.clear();
+  for (const std::string& arg : args) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(arg, ec);
+    if (arg == "-") {
+      error = "standard input ('-') cannot be posted in a batch";
+      return false;
+    }
+    if (!fs::exists(st)) {
+      error = fmt::format("{}: no such file or directory", arg);
+      return false;
+    }
+    if (!fs::is_directory(st)) {
+      files.push_back(arg);
+      continue;
+    }
+    if (!recursive) {
+      error = fmt::format("{}: is a directory (use -r to post the CL files in it)", arg);
+      return false;
+    }
+    std::vector<std::string> found;
+    fs::recursive_directory_iterator it(arg, fs::directory_options::skip_permission_denied, ec);
+    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+      std::error_code fec;
+      if (it->is_regular_file(fec) && is_cl_file_name(it->path().filename().string()))
+        found.push_back(it->path().string());
+    }
+    if (ec) {
+      error = fmt::format("{}: cannot read the directory: {}", arg, ec.message());
+      return false;
+    }
+    if (found.empty()) {
+      error = fmt::format("{}: no CL files in the directory", arg);
+      return false;
+    }
+    std::sort(found.begin(), found.end());
+    files.insert(files.end(), found.begin(), found.end());
+  }
+  return true;
+}
+
+bool plan_outputs(const std::vector<std::string>& files, const std::string& out_dir,
+                  const std::string& extension, std::vector<BatchItem>& items, std::string& error) {
+  items.clear();
+  std::map<std::string, size_t> by_output;  // output path -> index of the input writing it
+  for (const std::string& in : files) {
+    std::string out = (fs::path(out_dir) / fs::path(in).stem()).string() + extension;
+    auto [it, fresh] = by_output.emplace(out, items.size());
+    if (!fresh) {
+      error = fmt::format("'{}' and '{}' would both be written to '{}'", items[it->second].input,
+                          in, out);
+      return false;
+    }
+    items.push_back(BatchItem{in, std::move(out)});
+  }
+  return true;
+}
+
+namespace {
+
+FileStatus status_of(const PostOutcome& o) {
+  if (!o.ok) return FileStatus::kError;
+  return o.warnings > 0 ? FileStatus::kWarnings : FileStatus::kOk;
+}
+
+void post_one(const BatchItem& item, const Machine& machine, const PostOptions& opts,
+              FileResult& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PostRequest req{item.input, item.output, &machine, opts, nullptr};
+  r.outcome = post_file(req);
+  r.status = status_of(r.outcome);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+std::vector<FileResult> run_batch(const std::vector<BatchItem>& items, const Machine& machine,
+                                  const BatchSettings& settings,
+                                  const std::function<void(const FileResult&)>& on_result) {
+  const size_t n = items.size();
+  std::vector<FileResult> results(n);
+  for (size_t i = 0; i < n; ++i) results[i].item = items[i];
+  std::vector<char> done(n, 0);
+  std::atomic<size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex mu;
+  size_t reported = 0;  // results[0, reported) were handed to on_result
+
+  auto report_ready = [&] {  // with `mu` held
+    while (reported < n && done[reported]) {
+      if (on_result) on_result(results[reported]);
+      ++reported;
+    }
+  };
+  auto worker = [&] {
+    for (;;) {
+      if (stop.load()) return;
+      const size_t i = next.fetch_add(1);
+      if (i >= n) return;
+      FileResult& r = results[i];
+      post_one(items[i], machine, settings.post, r);
+      if (r.status == FileStatus::kError && !settings.keep_going) stop.store(true);
+      std::lock_guard<std::mutex> lock(mu);
+      done[i] = 1;
+      report_ready();
+    }
+  };
+
+  const size_t jobs = std::clamp<size_t>(settings.jobs, 1, std::max<size_t>(n, 1));
+  if (jobs == 1) {
+    worker();
+  } else {
+    std::vector<std::thread> threads;
+    threads.reserve(jobs);
+    for (size_t t = 0; t < jobs; ++t) threads.emplace_back(worker);
+    for (std::thread& t : threads) t.join();
+  }
+  // Items never started (the batch stopped after a failure) are reported as not posted.
+  std::lock_guard<std::mutex> lock(mu);
+  std::fill(done.begin(), done.end(), 1);
+  report_ready();
+  return results;
+}
+
+BatchSummary summarize(const std::vector<FileResult>& results, double seconds) {
+  BatchSummary s;
+  s.files = results.size();
+  s.seconds = seconds;
+  for (const FileResult& r : results) {
+    switch (r.status) {
+      case FileStatus::kOk:
+        ++s.ok;
+        break;
+      case FileStatus::kWarnings:
+        ++s.with_warnings;
+        break;
+      case FileStatus::kError:
+        ++s.failed;
+        break;
+      case FileStatus::kNotPosted:
+        ++s.not_posted;
+        break;
+    }
+    s.errors += r.outcome.errors;
+    s.warnings += r.outcome.warnings;
+    s.bytes_in += r.outcome.bytes_in;
+    if (r.outcome.ok) s.bytes_out += r.outcome.bytes_out;
+  }
+  return s;
+}
+
+namespace {
+
+// The first line (`file:line:col: severity: message`) of the first kept diagnostic of a
+// severity.
+std::string first_diagnostic(const std::string& file, const PostOutcome& o, Severity sev) {
+  const Diagnostics renderer(file);
+  for (const Diagnostic& d : o.kept) {
+    if (d.severity != sev) continue;
+    std::string text = renderer.render(d);
+    return text.substr(0, text.find('\n'));
+  }
+  return {};
+}
+
+std::string plural(size_t n, std::string_view one, std::string_view many) {
+  return fmt::format("{} {}", n, n == 1 ? one : many);
+}
+
+}  // namespace
+
+std::string file_line(const FileResult& r) {
+  const PostOutcome& o = r.outcome;
+  switch (r.status) {
+    case FileStatus::kOk:
+      return fmt::format("ok        {}\n", r.item.input);
+    case FileStatus::kWarnings: {
+      std::string first = first_diagnostic(r.item.input, o, Severity::kWarning);
+      if (first.empty())
+        first = fmt::format("{}: {}", r.item.input, plural(o.warnings, "warning", "warnings"));
+      return fmt::format("warnings  {}{}\n", first,
+                         o.warnings > 1 ? fmt::format(" (+{} more)", o.warnings - 1) : "");
+    }
+    case FileStatus::kError: {
+      std::string first = first_diagnostic(r.item.input, o, Severity::kError);
+      if (first.empty())
+        first = fmt::format("{}: {}", r.item.input, plural(o.errors, "error", "errors"));
+      return fmt::format("error     {}{}\n", first,
+                         o.errors > 1 ? fmt::format(" (+{} more)", o.errors - 1) : "");
+    }
+    case FileStatus::kNotPosted:
+      break;
+  }
+  return fmt::format("skipped   {} (not posted after an earlier error; --keep-going posts it)\n",
+                     r.item.input);
+}
+
+std::string summary_line(const BatchSummary& s) {
+  return fmt::format(
+      "{}: {} ok, {} with warnings, {} failed, {} not posted; {}, {}; {} bytes in, {} bytes out; "
+      "{:.2f} s\n",
+      plural(s.files, "file", "files"), s.ok, s.with_warnings, s.failed, s.not_posted,
+      plural(s.errors, "error", "errors"), plural(s.warnings, "warning", "warnings"), s.bytes_in,
+      s.bytes_out, s.seconds);
+}
+
+std::string progress_bar(size_t done, size_t total, size_t failed, size_t width) {
+  const size_t filled = total == 0 ? width : done * width / total;
+  std::string bar(filled, '#');
+  bar.append(width - filled, '.');
+  return fmt::format("[{}] {}/{} files{}", bar, done, total,
+                     failed ? fmt::format(", {} failed", failed) : "");
+}
+
+}  // namespace clpost

@@ -1,0 +1,170 @@
+#include "support/output_file.h"
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace clpost {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  TempDir() {
+    std::string templ = (fs::temp_directory_path() / "clpost-output-XXXXXX").string();
+    path = ::mkdtemp(templ.data());
+  }
+  ~TempDir() { fs::remove_all(path); }
+  size_t entries() const {
+    return static_cast<size_t>(
+        std::distance(fs::directory_iterator(path), fs::directory_iterator()));
+  }
+  std::string path;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(OutputFile, RegularFileAppearsOnlyAtCommit) {
+  TempDir d;
+  const std::string path = d.path + "/part.nc";
+  OutputFile out;
+  std::string err;
+  ASSERT_TRUE(out.open(path, err)) << err;
+  EXPECT_FALSE(out.direct());
+  out.write("G0 X1.\n");
+  out.write(std::string(100000, 'x'));  // larger than the buffer: written through
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_EQ(d.entries(), 1u);  // the temporary file
+  ASSERT_TRUE(out.commit(err)) << err;
+  EXPECT_EQ(slurp(path), "G0 X1.\n" + std::string(100000, 'x'));
+  EXPECT_EQ(out.bytes(), 100007u);
+  EXPECT_EQ(d.entries(), 1u);
+  EXPECT_EQ(fs::status(path).permissions(), fs::perms::owner_read | fs::perms::owner_write |
+                                                fs::perms::group_read | fs::perms::others_read);
+}
+
+TEST(OutputFile, AbortLeavesTheOldFileAndNoTemporary) {
+  TempDir d;
+  const std::string path = d.path + "/part.nc";
+  std::ofstream(path) << "good program\n";
+  {
+    OutputFile out;
+    std::string err;
+    ASSERT_TRUE(out.open(path, err)) << err;
+    out.write("half a program");
+    out.abort();
+  }
+  {
+    OutputFile out;  // destroyed without commit
+    std::string err;
+    ASSERT_TRUE(out.open(path, err)) << err;
+    out.write("half a program");
+  }
+  EXPECT_EQ(slurp(path), "good program\n");
+  EXPECT_EQ(d.entries(), 1u);
+}
+
+TEST(OutputFile, MissingDirectoryIsAnErrorAtOpen) {
+  TempDir d;
+  const std::string path = d.path + "/no/such/dir/part.nc";
+  OutputFile out;
+  std::string err;
+  EXPECT_FALSE(out.open(path, err));
+  EXPECT_EQ(err, "cannot write '" + path + "': No such file or directory");
+  EXPECT_EQ(d.entries(), 0u);
+}
+
+TEST(OutputFile, MissingDeviceIsNotCreated) {
+  OutputFile out;
+  std::string err;
+  EXPECT_FALSE(out.open("/dev/clpost-no-such-device", err));
+  EXPECT_EQ(err, "cannot open '/dev/clpost-no-such-device': No such file or directory");
+  EXPECT_FALSE(fs::exists("/dev/clpost-no-such-device"));
+}
+
+TEST(OutputFile, DevNullIsWrittenDirectly) {
+  OutputFile out;
+  std::string err;
+  ASSERT_TRUE(out.open("/dev/null", err)) << err;
+  EXPECT_TRUE(out.direct());
+  out.write(std::string(300000, 'x'));
+  EXPECT_TRUE(out.commit(err)) << err;
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+TEST(OutputFile, DevFullIsAWriteErrorSmallOrLarge) {
+  for (size_t size : {size_t{10}, size_t{70000}, size_t{300000}}) {
+    OutputFile out;
+    std::string err;
+    ASSERT_TRUE(out.open("/dev/full", err)) << err;
+    EXPECT_TRUE(out.direct());
+    for (size_t i = 0; i < size; i += 10) out.write("G1 X1. Z2\n");
+    EXPECT_FALSE(out.commit(err)) << size;
+    EXPECT_EQ(err, "cannot write '/dev/full': No space left on device") << size;
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
+TEST(OutputFile, PipeIsStreamedNotRenamedOver) {
+  TempDir d;
+  const std::string fifo = d.path + "/fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const int rd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(rd, 0);
+  ::fcntl(rd, F_SETFL, 0);  // blocking reads from now on
+  std::string received;
+  size_t before_commit = 0;
+  OutputFile out;
+  std::string err;
+  ASSERT_TRUE(out.open(fifo, err)) << err;
+  EXPECT_TRUE(out.direct());
+  // 1 MB is far more than a pipe holds: the writer can only finish if it streams to a reader.
+  std::thread reader([&] {
+    char buf[4096];
+    ssize_t n;
+    while ((n = ::read(rd, buf, sizeof buf)) > 0) received.append(buf, static_cast<size_t>(n));
+  });
+  const std::string block(1000, 'y');
+  for (int i = 0; i < 1000; ++i) out.write(block);
+  before_commit = out.bytes();
+  EXPECT_TRUE(out.commit(err)) << err;
+  reader.join();
+  ::close(rd);
+  EXPECT_EQ(before_commit, 1000000u);
+  EXPECT_EQ(received.size(), 1000000u);
+  struct stat st {};
+  ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_EQ(d.entries(), 1u);
+}
+
+TEST(OutputFile, SymlinkToAFileReplacesTheFileAndKeepsTheLink) {
+  TempDir d;
+  fs::create_directory(d.path + "/real");
+  std::ofstream(d.path + "/real/part.nc") << "old\n";
+  fs::create_symlink("real/part.nc", d.path + "/link.nc");
+  OutputFile out;
+  std::string err;
+  ASSERT_TRUE(out.open(d.path + "/link.nc", err)) << err;
+  EXPECT_FALSE(out.direct());
+  out.write("new\n");
+  ASSERT_TRUE(out.commit(err)) << err;
+  EXPECT_TRUE(fs::is_symlink(d.path + "/link.nc"));
+  EXPECT_EQ(slurp(d.path + "/real/part.nc"), "new\n");
+  EXPECT_EQ(d.entries(), 2u);
+}
+
+}  // namespace
+}  // namespace clpost
