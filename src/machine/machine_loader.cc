@@ -163,7 +163,49 @@ const std::map<std::string, std::vector<std::string>>& template_fields() {
   return kFields;
 }
 
+// fmt writes as many characters as a field's width or precision says: `{tool:>1000000000}`
+// would make a 1 GB line. Widths and precisions are kept to two digits, and never taken from a
+// field (`{tool:{offset}}`). Returns what is wrong, or nothing.
+std::string oversized_field(std::string_view line) {
+  constexpr unsigned kMaxWidth = 99;
+  for (size_t i = 0; i < line.size(); ++i) {
+    if (line[i] != '{') continue;
+    if (i + 1 < line.size() && line[i + 1] == '{') {
+      ++i;
+      continue;
+    }
+    const size_t end = line.find('}', i);
+    if (end == std::string_view::npos) return {};  // fmt says what is wrong
+    const std::string_view field = line.substr(i + 1, end - i - 1);
+    i = end;
+    const size_t colon = field.find(':');
+    if (colon == std::string_view::npos) continue;
+    const std::string_view spec = field.substr(colon + 1);
+    if (spec.find('{') != std::string_view::npos)
+      return "a width or precision cannot be taken from a field";
+    for (size_t k = 0; k < spec.size();) {
+      if (spec[k] < '0' || spec[k] > '9') {
+        ++k;
+        continue;
+      }
+      unsigned value = 0;
+      size_t j = k;
+      for (; j < spec.size() && spec[j] >= '0' && spec[j] <= '9'; ++j)
+        value = std::min(value * 10 + static_cast<unsigned>(spec[j] - '0'), kMaxWidth + 1);
+      if (value > kMaxWidth)
+        return fmt::format("width or precision {} is too large (at most {})", spec.substr(k, j - k),
+                           kMaxWidth);
+      k = j;
+    }
+  }
+  return {};
+}
+
 bool check_template(Ctx& c, const YAML::Node& n, const std::string& name, const std::string& line) {
+  if (std::string problem = oversized_field(line); !problem.empty()) {
+    c.error(n, fmt::format("bad template line '{}' in '{}': {}", line, name, problem));
+    return false;
+  }
   fmt::dynamic_format_arg_store<fmt::format_context> args;
   for (const std::string& f : template_fields().at(name)) {
     // Whole numbers are passed as numbers (so "{tool:02}" works); the rest as formatted text.

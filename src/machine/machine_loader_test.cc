@@ -79,6 +79,33 @@ TEST(MachineLoader, BadTemplateFieldIsCaughtAtLoad) {
       "                  ^\n");
 }
 
+// Fuzzer find: a template field's width is how many characters fmt writes, so
+// `{tool:>1000000000}` made a 1 GB line at load time and again for every block.
+TEST(MachineLoader, HugeTemplateWidthIsCaughtAtLoad) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(apply_machine_yaml(
+      "m.yaml", "templates:\n  tool_change: [\"T{tool:>1000000000}\"]\n", false, m, errors));
+  EXPECT_EQ(errors,
+            "m.yaml:2:17: error: bad template line 'T{tool:>1000000000}' in 'tool_change': width "
+            "or precision 1000000000 is too large (at most 99)\n"
+            "    tool_change: [\"T{tool:>1000000000}\"]\n"
+            "                  ^\n");
+  errors.clear();
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "templates:\n  dwell: \"G4 P{seconds:.{seconds}}\"\n",
+                                  false, m, errors));
+  EXPECT_EQ(errors,
+            "m.yaml:2:10: error: bad template line 'G4 P{seconds:.{seconds}}' in 'dwell': a width "
+            "or precision cannot be taken from a field\n"
+            "    dwell: \"G4 P{seconds:.{seconds}}\"\n"
+            "           ^\n");
+  // Two digits are fine, a zero fill too; '{{' is a literal brace.
+  errors.clear();
+  EXPECT_TRUE(apply_machine_yaml(
+      "m.yaml", "templates:\n  tool_change: [\"{{T{tool:0>99}{offset:02}}}\"]\n", false, m, errors))
+      << errors;
+}
+
 TEST(MachineLoader, InvalidYamlHasALocation) {
   Machine m;
   std::string errors;
