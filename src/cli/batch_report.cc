@@ -4,25 +4,9 @@
 
 #include <iterator>
 
-#include "planner/plan_format.h"
+#include "support/json_text.h"
 
 namespace clpost {
-
-namespace {
-
-const char* severity_name(Severity s) {
-  switch (s) {
-    case Severity::kNote:
-      return "note";
-    case Severity::kWarning:
-      return "warning";
-    case Severity::kError:
-      return "error";
-  }
-  return "error";
-}
-
-}  // namespace
 
 const char* status_name(FileStatus s) {
   switch (s) {

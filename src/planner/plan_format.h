@@ -23,10 +23,6 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
 std::string plan_to_text(const std::string& file, LengthUnit units,
                          const std::vector<ThreadPlan>& plans);
 
-// A JSON string literal, quotes included (invalid UTF-8 becomes U+FFFD). Also used by the batch
-// report.
-std::string json_string(std::string_view s);
-
 // Names used in both formats.
 const char* form_name(ThreadForm f);
 const char* kind_name(ThreadKind k);

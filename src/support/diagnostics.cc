@@ -28,7 +28,7 @@ void Diagnostics::add(Severity severity, SourceLoc loc, std::string_view line_te
   kept_.push_back(Diagnostic{severity, loc, std::move(message), std::string(line_text)});
 }
 
-static std::string_view severity_name(Severity s) {
+std::string_view severity_name(Severity s) {
   switch (s) {
     case Severity::kNote:
       return "note";

@@ -12,6 +12,8 @@
 namespace clpost {
 
 enum class Severity { kNote, kWarning, kError };
+// "note", "warning", "error".
+std::string_view severity_name(Severity s);
 
 struct Diagnostic {
   Severity severity = Severity::kError;
