@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "emitters/written_value.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,8 +19,7 @@ std::vector<Cut> plan_cuts(const ThreadPlan& plan) {
 
 double cut_tolerance(const Machine& m) {
   if (m.thread_tolerance > 0) return m.thread_tolerance;
-  const NumberFormat& z = m.format_for("Z");
-  return std::pow(10.0, -z.decimals) / (z.scale > 0 ? z.scale : 1);
+  return least_increment(m, "Z");
 }
 
 namespace {

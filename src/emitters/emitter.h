@@ -16,6 +16,11 @@
 
 namespace clpost {
 
+// A plan point (CL frame: x a radius) as the lathe point NcProgram writes.
+inline LathePoint lp(Vec2 v) {
+  return LathePoint{v.x, v.z};
+}
+
 struct EmitContext {
   Diagnostics& diags;
   const SavedLines& lines;  // the thread's CL statement, for diagnostics
@@ -45,6 +50,12 @@ class Emitter {
   // Writes a multi-pass thread that fits. Returns false (with a diagnostic) when it cannot.
   virtual bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) = 0;
 };
+
+// For emit() handed a plan that does not fit (make_emitter's chain asks fit() first, so this is a
+// defence): the error "machine 'm': <emitter> cannot cut this thread: <why>" at the thread's
+// statement. Returns false, for `return unfit_error(...)`.
+bool unfit_error(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
+                 std::string_view emitter, std::string_view why);
 
 // The thread output for machine `m`: its strategy's emitter, falling back as the machine says
 // (an NC comment names the reason), or an error diagnostic with `fallback: error`.

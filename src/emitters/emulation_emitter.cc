@@ -7,9 +7,6 @@
 namespace clpost {
 
 namespace {
-LathePoint lp(Vec2 v) {
-  return LathePoint{v.x, v.z};
-}
 double dist(Vec2 a, Vec2 b) {
   return std::hypot(a.x - b.x, a.z - b.z);
 }

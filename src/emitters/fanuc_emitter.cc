@@ -16,38 +16,7 @@ using namespace vec2_math;
 
 namespace g76 {
 
-namespace {
-
-double increment(const Machine& m, std::string_view f) {
-  const NumberFormat& nf = m.format_for(f);
-  return std::pow(10.0, -nf.decimals) / (nf.scale > 0 ? nf.scale : 1);
-}
-
-}  // namespace
-
-double as_read(const Machine& m, std::string_view f, double v) {
-  const NumberFormat& nf = m.format_for(f);
-  std::string s;
-  append_number(s, v, nf);
-  return std::strtod(s.c_str(), nullptr) / (nf.scale > 0 ? nf.scale : 1);
-}
-
-double read_up(const Machine& m, std::string_view f, double v) {
-  double r = as_read(m, f, v);
-  if (r < v - 1e-9) r = as_read(m, f, r + increment(m, f));
-  return r;
-}
-
-double read_down(const Machine& m, std::string_view f, double v) {
-  double r = as_read(m, f, v);
-  if (r > v + 1e-9) r = as_read(m, f, r - increment(m, f));
-  return r;
-}
-
-Vec2 point_as_read(const Machine& m, Vec2 p) {
-  const double k = m.diameter_output ? 2 : 1;
-  return {as_read(m, "X", k * p.x) / k, as_read(m, "Z", p.z)};
-}
+namespace {}  // namespace
 
 std::string describe_pullout(const ThreadPlan& plan) {
   if (!plan.pullout) return "none";
@@ -135,10 +104,7 @@ double move_ends_to_deepest(const CyclePlan& cp, std::vector<Cut>& cuts) {
 
 namespace {
 
-using g76::as_read;
 using g76::at_end;
-using g76::read_down;
-using g76::read_up;
 
 std::string text(const Machine& m, std::string_view f, double v) {
   std::string s;
@@ -251,7 +217,7 @@ std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, 
   const double k = m.diameter_output ? 2 : 1;
   w.x = as_read(m, "X", k * cp.end.x);
   w.z = as_read(m, "Z", cp.end.z);
-  b.start = g76::point_as_read(m, cp.start);
+  b.start = point_as_read(m, cp.start);
   w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "R", cp.slope * (b.start.z - w.z)) : 0;
 
   CycleLaw law{m.diameter_output, m.cycle_shifted_end, m.chamfer_angle};
@@ -318,7 +284,7 @@ std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& 
   G92Plan g;
   for (const ThreadPass& p : plan.passes) {
     G92Pass q;
-    q.start = g76::point_as_read(m, {e.x + slope * (p.from.z - e.z), p.from.z});
+    q.start = point_as_read(m, {e.x + slope * (p.from.z - e.z), p.from.z});
     q.words.x = as_read(m, "X", k * p.to.x);
     q.words.z = as_read(m, "Z", p.to.z);
     q.words.taper = std::fabs(slope) > 1e-12 ? as_read(m, "R", p.from.x - p.to.x) : 0;
@@ -346,14 +312,11 @@ bool FanucG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCo
   Fit f;
   std::optional<FanucBlock> b = fanuc_words(plan, m, f);
   if (!b) {
-    ctx.diags.error(
-        plan.loc, ctx.lines.text(plan.loc.line),
-        fmt::format("machine '{}': G76 cannot cut this thread: {}", m.name, f.mismatch));
-    return false;
+    return unfit_error(plan, ctx, m, "G76", f.mismatch);
   }
   const FanucG76Words& w = b->w;
   const std::string_view df = depth_format(plan);
-  prog.rapid(LathePoint{b->start.x, b->start.z});
+  prog.rapid(lp(b->start));
   TemplateArgs a;
   a.push_back(fmt::arg("m", fmt::format("{:02}", w.finish_passes)));
   a.push_back(fmt::arg("chamfer", fmt::format("{:02}", w.chamfer)));
@@ -367,9 +330,9 @@ bool FanucG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCo
   a.push_back(fmt::arg("first_cut", prog.num(df, w.first_cut)));
   a.push_back(fmt::arg("lead", prog.num("F", w.lead)));
   prog.emit_template(kFanucTemplate, a);
-  prog.cycle_ended_at(LathePoint{b->start.x, b->start.z});
-  const Vec2 e = g76::point_as_read(m, plan.end_position);
-  if (!at_end(prog, e)) prog.rapid(LathePoint{plan.end_position.x, plan.end_position.z});
+  prog.cycle_ended_at(lp(b->start));
+  const Vec2 e = point_as_read(m, plan.end_position);
+  if (!at_end(prog, e)) prog.rapid(lp(plan.end_position));
   return true;
 }
 
@@ -384,10 +347,7 @@ bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext
   Fit f;
   std::optional<G92Plan> g = g92_words(plan, m, f);
   if (!g) {
-    ctx.diags.error(
-        plan.loc, ctx.lines.text(plan.loc.line),
-        fmt::format("machine '{}': G92 cannot cut this thread: {}", m.name, f.mismatch));
-    return false;
+    return unfit_error(plan, ctx, m, "G92", f.mismatch);
   }
   const double k = m.diameter_output ? 2 : 1;
   bool modal = false;      // a G92 is in force (a G0 ends it)
@@ -395,7 +355,7 @@ bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext
   std::optional<Vec2> at;  // where the tool is (known after the first block)
   for (const G92Pass& p : g->passes) {
     if (!at) {
-      prog.rapid(LathePoint{p.start.x, p.start.z});
+      prog.rapid(lp(p.start));
     } else if (at->x != p.start.x || at->z != p.start.z) {
       // The flank shift (or the next start): a rapid to the new start point ends the G92 mode.
       NcWriter& w = prog.writer();
@@ -427,10 +387,10 @@ bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext
     last = q;
     modal = true;
     at = p.start;
-    prog.cycle_ended_at(LathePoint{p.start.x, p.start.z});
+    prog.cycle_ended_at(lp(p.start));
   }
-  const Vec2 e = g76::point_as_read(m, plan.end_position);
-  if (!at_end(prog, e)) prog.rapid(LathePoint{plan.end_position.x, plan.end_position.z});
+  const Vec2 e = point_as_read(m, plan.end_position);
+  if (!at_end(prog, e)) prog.rapid(lp(plan.end_position));
   return true;
 }
 

@@ -26,6 +26,7 @@
 // Plans with a pull-out (G92's chamfer is a control parameter) and face threads do not fit.
 #include "emitters/emitter.h"
 #include "emitters/fanuc_law.h"
+#include "emitters/written_value.h"
 
 namespace clpost {
 
@@ -44,14 +45,6 @@ class G92Emitter : public Emitter {
 };
 
 namespace g76 {
-
-// `v` as the control reads it once written in format `f` (scale undone).
-double as_read(const Machine& m, std::string_view f, double v);
-// The same, rounded up (down) to the format's least increment.
-double read_up(const Machine& m, std::string_view f, double v);
-double read_down(const Machine& m, std::string_view f, double v);
-// A point as the G0 before a cycle writes it (X in the machine's X format, diameter or radius).
-Vec2 point_as_read(const Machine& m, Vec2 p);
 
 // A single-start (or one start's) turn plan read as a flank cycle.
 struct CyclePlan {

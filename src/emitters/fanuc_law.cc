@@ -48,23 +48,29 @@ bool fanuc_g76_tool_angle_ok(int a) {
   return a == 80 || a == 60 || a == 55 || a == 30 || a == 29 || a == 0;
 }
 
-std::vector<double> fanuc_g76_depths(const FanucG76Words& w) {
+std::vector<double> g76_rough_depths(double first_cut, double min_cut, double rough_to,
+                                     bool sqrt_law) {
   std::vector<double> out;
-  const double rough_to = w.height - w.allowance;
-  if (rough_to > 1e-12) {
-    if (w.first_cut <= 0 && w.min_cut <= 0) return {};
-    double prev = 0;
-    for (int n = 1;; ++n) {
-      if (n > 1000) return {};
-      double d = std::max(w.first_cut * std::sqrt(static_cast<double>(n)), prev + w.min_cut);
-      if (d >= rough_to - 1e-9) {
-        out.push_back(rough_to);
-        break;
-      }
-      out.push_back(d);
-      prev = d;
+  if (rough_to <= 1e-12) return out;
+  if (first_cut <= 0 && min_cut <= 0) return {};
+  double prev = 0;
+  for (int n = 1;; ++n) {
+    if (n > 1000) return {};
+    const double law = sqrt_law ? first_cut * std::sqrt(static_cast<double>(n)) : first_cut * n;
+    const double d = std::max(law, prev + min_cut);
+    if (d >= rough_to - 1e-9) {
+      out.push_back(rough_to);
+      return out;
     }
+    out.push_back(d);
+    prev = d;
   }
+}
+
+std::vector<double> fanuc_g76_depths(const FanucG76Words& w) {
+  const double rough_to = w.height - w.allowance;
+  std::vector<double> out = g76_rough_depths(w.first_cut, w.min_cut, rough_to, true);
+  if (out.empty() && rough_to > 1e-12) return {};
   for (int i = 0; i < w.finish_passes; ++i) out.push_back(w.height);
   return out;
 }

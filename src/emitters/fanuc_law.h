@@ -44,6 +44,12 @@ struct FlankCycle {
 std::vector<Cut> expand_flank_cycle(const FlankCycle& g, const std::vector<double>& heights,
                                     int start = 0);
 
+// The roughing depths of a G76-style cycle: first_cut·√n (or first_cut·n with `sqrt_law`
+// false), each increment at least `min_cut`, the pass that reaches `rough_to` cut at it and the
+// last. Empty when the words can never get there (no first cut and no minimum, or > 1000 passes).
+std::vector<double> g76_rough_depths(double first_cut, double min_cut, double rough_to,
+                                     bool sqrt_law);
+
 // Fanuc G76, two blocks: `G76 P<m><r><a> Q<Δdmin> R<d>` and `G76 X Z R<i> P<k> Q<Δd> F<L>`.
 struct FanucG76Words {
   int finish_passes = 1;  // m, 01–99: passes at k after roughing

@@ -25,9 +25,7 @@ HaasSettings haas_settings(const Machine& m, LengthUnit plan_units) {
 
 namespace {
 
-using g76::as_read;
 using g76::at_end;
-using g76::read_up;
 
 constexpr const char* kTemplate = "haas_g76";
 
@@ -126,7 +124,7 @@ std::optional<std::vector<HaasBlock>> haas_words(const ThreadPlan& plan, const M
     w.first_cut = read_up(m, "D", cp.heights[0]);
     w.x = as_read(m, "X", xk * cp.end.x);
     w.z = as_read(m, "Z", cp.end.z);
-    b.start = g76::point_as_read(m, cp.start);
+    b.start = point_as_read(m, cp.start);
     w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "I", cp.slope * (b.start.z - w.z)) : 0;
     if (by_angle) w.start_angle = as_read(m, "thread_angle", k * 360.0 / starts);
     std::vector<Cut> c = expand_haas_g76(w, b.start, s, law, starts);
@@ -175,14 +173,11 @@ bool HaasG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
   Fit f;
   std::optional<std::vector<HaasBlock>> blocks = haas_words(plan, m, f);
   if (!blocks) {
-    ctx.diags.error(
-        plan.loc, ctx.lines.text(plan.loc.line),
-        fmt::format("machine '{}': G76 cannot cut this thread: {}", m.name, f.mismatch));
-    return false;
+    return unfit_error(plan, ctx, m, "G76", f.mismatch);
   }
   for (const HaasBlock& b : *blocks) {
     const HaasG76Words& w = b.w;
-    prog.rapid(LathePoint{b.start.x, b.start.z});
+    prog.rapid(lp(b.start));
     TemplateArgs a;
     a.push_back(fmt::arg("x", prog.num("X", w.x)));
     a.push_back(fmt::arg("z", prog.num("Z", w.z)));
@@ -196,10 +191,10 @@ bool HaasG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
                                             : std::string()));
     a.push_back(fmt::arg("lead", prog.num("F", w.lead)));
     prog.emit_template(kTemplate, a);
-    prog.cycle_ended_at(LathePoint{b.start.x, b.start.z});
+    prog.cycle_ended_at(lp(b.start));
   }
-  const Vec2 e = g76::point_as_read(m, plan.end_position);
-  if (!at_end(prog, e)) prog.rapid(LathePoint{plan.end_position.x, plan.end_position.z});
+  const Vec2 e = point_as_read(m, plan.end_position);
+  if (!at_end(prog, e)) prog.rapid(lp(plan.end_position));
   return true;
 }
 

@@ -6,25 +6,10 @@
 namespace clpost {
 
 std::vector<double> haas_g76_depths(const HaasG76Words& w, const HaasSettings& s) {
-  std::vector<double> out;
   const double rough_to = w.height - s.finish_allowance;
   const bool sqrt_law = w.mode == 1 || w.mode == 2;
-  if (rough_to > 1e-12) {
-    if (w.first_cut <= 0 && s.min_cut <= 0) return {};
-    double prev = 0;
-    for (int n = 1;; ++n) {
-      if (n > 1000) return {};
-      const double law =
-          sqrt_law ? w.first_cut * std::sqrt(static_cast<double>(n)) : w.first_cut * n;
-      const double d = std::max(law, prev + s.min_cut);
-      if (d >= rough_to - 1e-9) {
-        out.push_back(rough_to);
-        break;
-      }
-      out.push_back(d);
-      prev = d;
-    }
-  }
+  std::vector<double> out = g76_rough_depths(w.first_cut, s.min_cut, rough_to, sqrt_law);
+  if (out.empty() && rough_to > 1e-12) return {};
   if (s.finish_allowance > 0) out.push_back(w.height);
   return out;
 }

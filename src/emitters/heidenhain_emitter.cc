@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "emitters/written_value.h"
 #include "planner/vec2_math.h"
 #include "writer/number_format.h"
 
@@ -17,22 +18,10 @@ using namespace vec2_math;
 
 constexpr const char* kTemplate = "heidenhain_g31";
 
-// `v` as the control reads it once written in format `f`.
-double as_read(const Machine& m, std::string_view f, double v) {
-  const NumberFormat& nf = m.format_for(f);
-  std::string s;
-  append_number(s, v, nf);
-  return std::strtod(s.c_str(), nullptr) / (nf.scale > 0 ? nf.scale : 1);
-}
-
 int code_int(const Machine& m, const char* key, int fallback) {
   const std::string& c = m.code(key);
   if (c.empty()) return fallback;
   return std::atoi(c.c_str());
-}
-
-LathePoint lp(Vec2 v) {
-  return LathePoint{v.x, v.z};
 }
 
 Vec2 clear_start(const ThreadPlan& plan) {
@@ -135,9 +124,7 @@ bool HeidenhainG31Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const E
   std::string why;
   std::optional<HeidenhainG31> w = words_for(plan, m, why);
   if (!w) {
-    ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
-                    fmt::format("machine '{}': G31 cannot cut this thread: {}", m.name, why));
-    return false;
+    return unfit_error(plan, ctx, m, "G31", why);
   }
   const double dm = m.diameter_output ? 2 : 1;
   // To the clear line above the thread start, then the cycle with its contour.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "emitters/written_value.h"
 #include "planner/vec2_math.h"
 #include "writer/number_format.h"
 
@@ -17,27 +18,6 @@ using namespace vec2_math;
 
 constexpr const char* kTemplate = "linuxcnc_g76";
 constexpr const char* kTaperTemplate = "linuxcnc_g76_taper";
-
-// `v` as the control reads it once written in format `f`.
-double as_read(const Machine& m, std::string_view f, double v) {
-  const NumberFormat& nf = m.format_for(f);
-  std::string s;
-  append_number(s, v, nf);
-  return std::strtod(s.c_str(), nullptr) / (nf.scale > 0 ? nf.scale : 1);
-}
-
-// One least increment of format `f`.
-double increment(const Machine& m, std::string_view f) {
-  const NumberFormat& nf = m.format_for(f);
-  return std::pow(10.0, -nf.decimals) / (nf.scale > 0 ? nf.scale : 1);
-}
-
-// The smallest value format `f` writes that is not below `v` (beyond floating noise).
-double read_up(const Machine& m, std::string_view f, double v) {
-  double r = as_read(m, f, v);
-  if (r < v - 1e-12 * std::max(1.0, std::fabs(v))) r = as_read(m, f, r + increment(m, f));
-  return r;
-}
 
 double deepest(const ThreadPlan& plan) {
   double d = 0;
@@ -85,7 +65,7 @@ std::optional<LinuxcncG76Block> choose(const ThreadPlan& plan, const Machine& m,
     // one more increment on J settles it.
     if (!diff.empty()) {
       LinuxcncG76Block t2 = t;
-      t2.words.j = as_read(m, "g76_depth", t.words.j + increment(m, "g76_depth"));
+      t2.words.j = as_read(m, "g76_depth", t.words.j + least_increment(m, "g76_depth"));
       if (compare(t2, plan, m).empty()) {
         t = t2;
         diff.clear();
@@ -111,10 +91,6 @@ std::optional<LinuxcncG76Block> choose(const ThreadPlan& plan, const Machine& m,
     f.mismatch =
         "G76's depth law, J times the R-th root of n, does not give the planned depths; " + first;
   return std::nullopt;
-}
-
-LathePoint lp(Vec2 v) {
-  return LathePoint{v.x, v.z};
 }
 
 }  // namespace
@@ -207,10 +183,7 @@ bool LinuxcncG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const Emi
   Fit f;
   std::optional<LinuxcncG76Block> b = choose(plan, m, f);
   if (!b) {
-    ctx.diags.error(
-        plan.loc, ctx.lines.text(plan.loc.line),
-        fmt::format("machine '{}': G76 cannot cut this thread: {}", m.name, f.mismatch));
-    return false;
+    return unfit_error(plan, ctx, m, "G76", f.mismatch);
   }
   const LinuxcncG76& w = b->words;
   // To the drive line above the thread start, fed or rapid as the CL had the approach.

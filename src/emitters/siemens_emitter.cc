@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "emitters/written_value.h"
 #include "planner/number_text.h"
 #include "planner/vec2_math.h"
 #include "writer/number_format.h"
@@ -19,13 +20,6 @@ namespace {
 constexpr std::string_view kDepthFormat = "cycle99_depth";  // APP ROP TDEP FAL _VRT
 constexpr std::string_view kAngleFormat = "cycle99_angle";  // IANG NSP
 constexpr std::string_view kLeadFormat = "cycle99_lead";    // PIT
-
-// `v` as the control reads it back after we write it in format `f`.
-double as_written(const Machine& m, std::string_view f, double v) {
-  const NumberFormat& nf = m.format_for(f);
-  double r = rounded(v, nf) / (nf.scale > 0 ? nf.scale : 1);
-  return r == 0 ? 0 : r;  // no -0
-}
 
 std::string vec_text(Vec2 v) {
   return fmt::format("(X {}, Z {})", num_text(v.x), num_text(v.z));
@@ -98,8 +92,8 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
     return fail("CYCLE99 needs a thread depth (TDEP); this thread is one pass on the contour");
   w.nrc = nrc;
   w.nid = nid;
-  w.tdep = as_written(m, kDepthFormat, full / cosv);
-  w.fal = finish >= 0 ? as_written(m, kDepthFormat, (finish - rough) / cosv) : 0;
+  w.tdep = as_read(m, kDepthFormat, full / cosv);
+  w.fal = finish >= 0 ? as_read(m, kDepthFormat, (finish - rough) / cosv) : 0;
 
   // --- Flank infeed: every pass's shift along t, beyond what the paraxial infeed gives. ---
   const ThreadPass& deepest = *ladder.back();
@@ -126,7 +120,7 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
         fmt::format("IANG {:.4f} is more than half the tool angle {} (CYCLE99 allows at "
                     "most {})",
                     iang, num_text(plan.tool_angle), num_text(plan.tool_angle / 2)));
-  w.iang = as_written(m, kAngleFormat, iang);
+  w.iang = as_read(m, kAngleFormat, iang);
 
   // --- Pull-out: only the run-out ROP (CHAMFR with a negative length). ---
   double sigma_max = 0;
@@ -148,8 +142,8 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
                       num_text(out), num_text(along), num_text(deg(std::atan2(out, along)))));
     rop = along;
   }
-  w.rop = as_written(m, kDepthFormat, rop);
-  w.app = as_written(m, kDepthFormat, m.run_in);
+  w.rop = as_read(m, kDepthFormat, rop);
+  w.app = as_read(m, kDepthFormat, m.run_in);
 
   // --- Start and end points: the full-depth cut's run-out ends at FPL. ---
   // Along t the deepest cut's end is FPL - ROP plus what its paraxial infeed moves along t.
@@ -158,10 +152,10 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
     return fail(fmt::format("threading.run_in {} is not shorter than the thread ({})",
                             num_text(m.run_in), num_text(end_t)));
   const Vec2 sp = p1 + w.app * t, fp = p1 + end_t * t;
-  w.spl = as_written(m, "Z", sp.z);
-  w.dm1 = as_written(m, "X", 2 * sp.x);
-  w.fpl = as_written(m, "Z", fp.z);
-  w.dm2 = as_written(m, "X", 2 * fp.x);
+  w.spl = as_read(m, "Z", sp.z);
+  w.dm1 = as_read(m, "X", 2 * sp.x);
+  w.fpl = as_read(m, "Z", fp.z);
+  w.dm2 = as_read(m, "X", 2 * fp.x);
 
   // --- Starts. ---
   const int starts = plan.pitch.starts;
@@ -183,10 +177,10 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
   const bool inch = plan.units == LengthUnit::kInch;
   if (plan.pitch.from_tpi || inch) {
     w.pita = 2;
-    w.pit = as_written(m, kLeadFormat, (inch ? 1.0 : 25.4) / plan.lead);
+    w.pit = as_read(m, kLeadFormat, (inch ? 1.0 : 25.4) / plan.lead);
   } else {
     w.pita = 1;
-    w.pit = as_written(m, kLeadFormat, plan.lead);
+    w.pit = as_read(m, kLeadFormat, plan.lead);
   }
   const double lead = cycle99_lead(w, inch);
   const double travel = plan.lead_along_z ? std::fabs(p2.z - p1.z) : std::fabs(p2.x - p1.x);
@@ -201,7 +195,7 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
   const bool section = plan.option == 1 || plan.option == 2;
   w.vari = internal ? (section ? kVariInternalConstantSection : kVariInternalConstantInfeed)
                     : (section ? kVariExternalConstantSection : kVariExternalConstantInfeed);
-  w.vrt = as_written(m, kDepthFormat, plan.clearance);
+  w.vrt = as_read(m, kDepthFormat, plan.clearance);
 
   // --- What the control cuts from these words, against the plan. ---
   Cycle99Expansion cut = expand_cycle99(w);

@@ -41,6 +41,13 @@ std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l) {
   return nullptr;
 }
 
+bool unfit_error(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
+                 std::string_view emitter, std::string_view why) {
+  ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
+                  fmt::format("machine '{}': {} cannot cut this thread: {}", m.name, emitter, why));
+  return false;
+}
+
 namespace {
 
 // Tries each emitter in order; the first that fits writes the thread. When the first one does

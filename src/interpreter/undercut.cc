@@ -280,7 +280,6 @@ void Interpreter::undercut_stmt(const Statement& st) {
       form_name(*form), num_text(*diam), num_text(*at),
       num_text(internal_form(*form) ? *diam + row->diameter_step : *diam - row->diameter_step),
       num_text(row->width), num_text(row->radius)));
-  auto lp = [](Vec2 v) { return LathePoint{v.x, v.z}; };
   prog_.rapid(lp(c.start));
   for (Vec2 p : c.to_fillet) prog_.linear(lp(p));
   prog_.arc(lp(c.fillet_end), lp(c.fillet_center), c.fillet_ccw);
