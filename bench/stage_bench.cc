@@ -82,19 +82,9 @@ MultiThreadInput thread_input() {
   return in;
 }
 
-PlannerSettings settings(const Machine& m) {
-  PlannerSettings s;
-  s.default_option = m.default_option;
-  s.default_tool_angle = m.default_tool_angle;
-  s.start_angle_word = m.start_angle_word;
-  s.variable_lead = m.variable_lead;
-  s.machine_name = m.name;
-  return s;
-}
-
 void BM_Planner(benchmark::State& state) {
   const MultiThreadInput in = thread_input();
-  const PlannerSettings ps = settings(generic_lathe());
+  const PlannerSettings ps = planner_settings(generic_lathe());
   for (auto _ : state) {
     Diagnostics diags("bench.cl");
     ThreadPlan plan;
@@ -110,7 +100,7 @@ void BM_Emitter(benchmark::State& state) {
   const MultiThreadInput in = thread_input();
   Diagnostics diags("bench.cl");
   ThreadPlan plan;
-  if (!plan_multi_thread(in, settings(m), plan, diags)) std::abort();
+  if (!plan_multi_thread(in, planner_settings(m), plan, diags)) std::abort();
   std::unique_ptr<Emitter> emitter = make_emitter(m);
   CountingSink sink;
   for (auto _ : state) {

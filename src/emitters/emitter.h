@@ -9,12 +9,16 @@
 #include <vector>
 
 #include "machine/machine.h"
+#include "planner/planner.h"
 #include "planner/thread_plan.h"
 #include "reader/statement.h"
 #include "support/diagnostics.h"
 #include "writer/nc_program.h"
 
 namespace clpost {
+
+// What the planner needs to know of machine `m` (its threading defaults and words).
+PlannerSettings planner_settings(const Machine& m);
 
 // A plan point (CL frame: x a radius) as the lathe point NcProgram writes.
 inline LathePoint lp(Vec2 v) {

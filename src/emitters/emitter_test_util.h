@@ -31,12 +31,7 @@ inline ThreadPlan plan_for(const Machine& m, const std::string& on, Vec2 p0,
   MultiCase c = make_multi(st, units, p0, gotos, d);
   EXPECT_TRUE(c.parsed) << d.render_all();
   c.in.feed_approach = feed_approach;
-  PlannerSettings s;
-  s.default_option = m.default_option;
-  s.default_tool_angle = m.default_tool_angle;
-  s.start_angle_word = m.start_angle_word;
-  s.variable_lead = m.variable_lead;
-  s.machine_name = m.name;
+  PlannerSettings s = planner_settings(m);
   ThreadPlan plan;
   EXPECT_TRUE(plan_multi_thread(c.in, s, plan, d)) << d.render_all();
   plan.loc = {2, 1};

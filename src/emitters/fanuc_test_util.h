@@ -35,12 +35,7 @@ inline Threaded thread_on(const Machine& m, const std::string& on, Vec2 p0,
   TestStatement st(on, 2);
   MultiCase c = make_multi(st, units, p0, gotos, d);
   EXPECT_TRUE(c.parsed) << d.render_all();
-  PlannerSettings ps;
-  ps.default_option = m.default_option;
-  ps.default_tool_angle = m.default_tool_angle;
-  ps.start_angle_word = m.start_angle_word;
-  ps.variable_lead = m.variable_lead;
-  ps.machine_name = m.name;
+  PlannerSettings ps = planner_settings(m);
   EXPECT_TRUE(plan_multi_thread(c.in, ps, t.plan, d)) << d.render_all();
   StringSink sink;
   NcProgram prog(m, sink);

@@ -36,12 +36,7 @@ std::unique_ptr<Case> plan(const Machine& m, const std::string& words, Vec2 p0,
   Diagnostics d("t.cl");
   testing::MultiCase mc = make_multi(c->on, units, p0, gotos, d);
   EXPECT_TRUE(mc.parsed) << d.render_all();
-  PlannerSettings s;
-  s.default_option = m.default_option;
-  s.default_tool_angle = m.default_tool_angle;
-  s.start_angle_word = m.start_angle_word;
-  s.variable_lead = m.variable_lead;
-  s.machine_name = m.name;
+  PlannerSettings s = planner_settings(m);
   c->ok = plan_multi_thread(mc.in, s, c->plan, d);
   c->diags = d.render_all();
   EXPECT_TRUE(c->ok) << c->diags;

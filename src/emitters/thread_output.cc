@@ -41,6 +41,16 @@ std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l) {
   return nullptr;
 }
 
+PlannerSettings planner_settings(const Machine& m) {
+  PlannerSettings s;
+  s.default_option = m.default_option;
+  s.default_tool_angle = m.default_tool_angle;
+  s.start_angle_word = m.start_angle_word;
+  s.variable_lead = m.variable_lead;
+  s.machine_name = m.name;
+  return s;
+}
+
 bool unfit_error(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
                  std::string_view emitter, std::string_view why) {
   ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),

@@ -28,11 +28,7 @@ Interpreter::Interpreter(const Machine& m, NcProgram& prog, Diagnostics& diags,
                          const PostOptions& opts)
     : m_(m), prog_(prog), diags_(diags), opts_(opts), emitter_(make_emitter(m)) {
   units_ = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
-  planner_settings_.default_option = m.default_option;
-  planner_settings_.default_tool_angle = m.default_tool_angle;
-  planner_settings_.start_angle_word = m.start_angle_word;
-  planner_settings_.variable_lead = m.variable_lead;
-  planner_settings_.machine_name = m.name;
+  planner_settings_ = planner_settings(m);
 }
 
 Interpreter::~Interpreter() = default;
