@@ -18,6 +18,7 @@
 #include "cli/batch_report.h"
 #include "cli/data_dirs.h"
 #include "cli/post_file.h"
+#include "cli/verify_command.h"
 #include "emitters/emitter.h"
 #include "machine/machine_loader.h"
 #include "planner/plan_format.h"
@@ -52,6 +53,8 @@ constexpr const char* kFooter = R"(Examples:
   clpost -m generic-lathe -d out/ -j 4 --keep-going *.cl   batch: out/<stem>.nc for each
   clpost -d out/ -r cl-files/ --report report.json          a directory tree, with a report
   clpost machines                         list the shipped machines
+  clpost -m fanuc-0i-t --verify -o part.nc part.cl     post, then check the program cuts the plan
+  clpost verify -m fanuc-0i-t part.nc --cl part.cl     check a program (edited by hand?)
 
 Exit status: 0 ok, 1 errors in the input, 2 usage or machine-file errors.
 A batch (-d) exits 1 when any file failed, 2 when it could not start (duplicate output names,
@@ -187,6 +190,10 @@ int run_cli(int argc, char** argv) {
   app.add_option("-o,--output", output, "Output file (default: standard output)");
   app.add_flag("--strict", strict, "Unknown CL statements are errors, not warnings");
   add_batch_opts(app, batch);
+  bool verify_post = false;
+  app.add_flag("--verify", verify_post,
+               "Read the program back through the control's laws and check it cuts the plan; "
+               "a program that does not is an error (nothing written)");
   app.add_option("inputs", inputs,
                  "CL file to post ('-' for standard input); with -d: files and directories");
 
@@ -207,6 +214,21 @@ int run_cli(int argc, char** argv) {
   add_machine_opts(*plan, plan_opts);
   plan->add_option("--format", plan_format, "text or json")->check(CLI::IsMember({"text", "json"}));
   plan->add_option("inputs", plan_inputs, "CL files")->required();
+
+  CLI::App* verify =
+      app.add_subcommand("verify", "Check that an NC program cuts the thread plan of a CL file");
+  MachineOpts verify_opts;
+  std::string verify_nc, verify_cl;
+  double verify_tolerance = 0;
+  add_machine_opts(*verify, verify_opts);
+  verify->add_option("program", verify_nc, "NC program in the machine's dialect ('-': stdin)")
+      ->required();
+  verify->add_option("--cl", verify_cl, "The CL file the plan comes from")->required();
+  verify
+      ->add_option("--tolerance", verify_tolerance,
+                   "Largest difference that counts as equal (default: the machine's "
+                   "threading.tolerance, else one least increment of Z)")
+      ->check(CLI::PositiveNumber);
 
   try {
     app.parse(argc, argv);
@@ -231,6 +253,15 @@ int run_cli(int argc, char** argv) {
                             m.description));
     }
     return rc;
+  }
+
+  if (*verify) {
+    Machine m;
+    if (!load(verify_opts, m)) return kExitUsage;
+    VerifyOutcome v = verify_files(verify_nc, verify_cl, m, verify_tolerance);
+    print_out(v.report);
+    print_err(v.diagnostics);
+    return v.ok ? kExitOk : kExitInput;
   }
 
   if (*check) {
@@ -293,6 +324,10 @@ int run_cli(int argc, char** argv) {
       print_err("clpost: error: -o and -d cannot be used together\n");
       return kExitUsage;
     }
+    if (verify_post) {
+      print_err("clpost: error: --verify posts one file at a time (no -d)\n");
+      return kExitUsage;
+    }
     return run_batch_command(post_opts, batch, strict, inputs);
   }
   if (inputs.size() > 1) {
@@ -302,7 +337,9 @@ int run_cli(int argc, char** argv) {
   Machine m;
   if (!load(post_opts, m)) return kExitUsage;
   PostRequest req{inputs[0], output.empty() ? "-" : output, &m, PostOptions{strict}, nullptr};
+  req.verify = verify_post;
   PostOutcome r = post_file(req);
+  print_err(r.verify_report);
   print_err(r.diagnostics);
   return r.ok ? kExitOk : kExitInput;
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "cli/verify_command.h"
 #include "reader/cl_reader.h"
 #include "support/output_file.h"
 #include "writer/nc_program.h"
@@ -17,6 +18,19 @@ class NullSink : public Sink {
  public:
   void write(std::string_view text) override { bytes += text.size(); }
   size_t bytes = 0;
+};
+// Keeps a copy of the program for --verify.
+class TeeSink : public Sink {
+ public:
+  TeeSink(Sink& to, std::string& copy) : to_(to), copy_(copy) {}
+  void write(std::string_view text) override {
+    to_.write(text);
+    copy_.append(text);
+  }
+
+ private:
+  Sink& to_;
+  std::string& copy_;
 };
 }  // namespace
 
@@ -51,10 +65,21 @@ PostOutcome post_file(const PostRequest& req) {
     }
     sink = &file;
   }
+  std::string program;  // --verify: the program as written
+  std::vector<ThreadPlan> plans;
+  TeeSink tee(*sink, program);
+  if (req.verify) sink = &tee;
   {
     NcProgram prog(*req.machine, *sink);
     Interpreter interp(*req.machine, prog, diags, req.options);
-    if (req.on_thread) interp.on_thread(req.on_thread);
+    if (req.verify) {
+      interp.on_thread([&](const ThreadPlan& p) {
+        if (req.on_thread) req.on_thread(p);
+        plans.push_back(p);
+      });
+    } else if (req.on_thread) {
+      interp.on_thread(req.on_thread);
+    }
     ClReader reader(in, diags);
     Statement st;
     while (reader.next(st)) interp.statement(st);
@@ -68,8 +93,20 @@ PostOutcome post_file(const PostRequest& req) {
     out.bytes_in = reader.bytes_read();
   }
   if (in != stdin) std::fclose(in);
+  std::string verify_diagnostics;
+  bool verify_failed = false;
+  if (req.verify && !diags.has_errors()) {
+    reader::LineSource src{std::string_view(program)};
+    const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
+    VerifyOutcome v = verify_program(src, name, plans, display_name(req.input), *req.machine,
+                                     req.verify_tolerance);
+    out.verify_report = std::move(v.report);
+    verify_diagnostics = std::move(v.diagnostics);
+    verify_failed = !v.ok;
+    out.errors += v.errors;
+  }
   if (writing) {
-    if (diags.has_errors()) {
+    if (diags.has_errors() || verify_failed) {
       file.abort();
     } else {
       std::string err;
@@ -79,10 +116,10 @@ PostOutcome post_file(const PostRequest& req) {
   } else {
     out.bytes_out = null_sink.bytes;
   }
-  out.errors = diags.error_count();
+  out.errors += diags.error_count();
   out.warnings = diags.warning_count();
-  out.ok = !diags.has_errors();
-  out.diagnostics = diags.render_all();
+  out.ok = !diags.has_errors() && !verify_failed;
+  out.diagnostics = diags.render_all() + verify_diagnostics;
   out.kept = diags.kept();
   return out;
 }

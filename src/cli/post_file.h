@@ -16,6 +16,10 @@ struct PostRequest {
   const Machine* machine = nullptr;
   PostOptions options;
   std::function<void(const ThreadPlan&)> on_thread;  // every thread plan
+  // --verify: read the program back through the control simulation and compare it with the
+  // plan (verify_command.h); a program that does not cut the plan is an error (no output).
+  bool verify = false;
+  double verify_tolerance = 0;  // 0: the machine's
 };
 
 struct PostOutcome {
@@ -28,6 +32,7 @@ struct PostOutcome {
   LengthUnit units = LengthUnit::kMm;
   size_t bytes_in = 0;
   size_t bytes_out = 0;
+  std::string verify_report;  // with PostRequest::verify
 };
 
 PostOutcome post_file(const PostRequest& req);

@@ -1,0 +1,213 @@
+#include "nc_reader/nc_lexer.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+
+namespace clpost {
+
+NcSyntax nc_syntax(const Machine& m) {
+  NcSyntax s;
+  s.block_address = m.block_address;
+  s.comment_open = m.comment_open;
+  s.comment_close = m.comment_close;
+  return s;
+}
+
+namespace {
+
+bool is_letter(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+}
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool is_blank(char c) {
+  return c == ' ' || c == '\t';
+}
+char upper(char c) {
+  return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (is_blank(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && (is_blank(s.back()) || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+// A number as the controls write it: [+-] digits [. digits], at least one digit.
+bool parse_number(std::string_view t, double& v) {
+  if (t.empty()) return false;
+  size_t i = 0;
+  if (t[0] == '+' || t[0] == '-') i = 1;
+  bool digit = false, point = false;
+  for (size_t j = i; j < t.size(); ++j) {
+    if (is_digit(t[j])) {
+      digit = true;
+    } else if (t[j] == '.' && !point) {
+      point = true;
+    } else {
+      return false;
+    }
+  }
+  if (!digit) return false;
+  std::string_view body = t.substr(t[0] == '+' ? 1 : 0);
+  auto r = std::from_chars(body.data(), body.data() + body.size(), v);
+  return r.ec == std::errc() && r.ptr == body.data() + body.size();
+}
+
+struct Lexer {
+  std::string_view s;
+  size_t i = 0;
+  NcBlock& b;
+  NcLexError& err;
+
+  uint32_t col(size_t at) const { return static_cast<uint32_t>(at + 1); }
+  bool fail(size_t at, std::string message) {
+    err.col = col(at);
+    err.message = std::move(message);
+    return false;
+  }
+  void skip_blanks() {
+    while (i < s.size() && is_blank(s[i])) ++i;
+  }
+
+  bool call(size_t start, std::string name) {
+    NcCall c;
+    c.name = std::move(name);
+    c.col = col(start);
+    ++i;  // '('
+    size_t arg_start = i;
+    bool quoted = false;
+    for (; i < s.size(); ++i) {
+      const char ch = s[i];
+      if (ch == '"') quoted = !quoted;
+      if (quoted) continue;
+      if (ch == ',' || ch == ')') {
+        std::string_view a = s.substr(arg_start, i - arg_start);
+        size_t lead = 0;
+        while (lead < a.size() && is_blank(a[lead])) ++lead;
+        c.args.emplace_back(trim(a));
+        c.cols.push_back(col(arg_start + lead));
+        arg_start = i + 1;
+        if (ch == ')') {
+          ++i;
+          b.calls.push_back(std::move(c));
+          return true;
+        }
+      }
+    }
+    return fail(start, fmt::format("'{}(' has no closing ')'", c.name));
+  }
+
+  bool word() {
+    const size_t start = i;
+    size_t j = i;
+    while (j < s.size() && is_letter(s[j])) ++j;
+    // A call: an identifier (letters, then letters or digits) and '('.
+    size_t k = j;
+    while (k < s.size() && (is_letter(s[k]) || is_digit(s[k]))) ++k;
+    size_t p = k;
+    while (p < s.size() && is_blank(s[p])) ++p;
+    if (p < s.size() && s[p] == '(' && k > j) {
+      std::string name;
+      for (size_t q = start; q < k; ++q) name += upper(s[q]);
+      i = p;
+      return call(start, std::move(name));
+    }
+    NcWord w;
+    w.col = col(start);
+    for (size_t q = start; q < j; ++q) w.address += upper(s[q]);
+    i = j;
+    if (i < s.size() && s[i] == '=') {
+      w.address += '=';
+      ++i;
+      skip_blanks();
+    }
+    size_t n = i;
+    if (n < s.size() && (s[n] == '+' || s[n] == '-')) ++n;
+    while (n < s.size() && (is_digit(s[n]) || s[n] == '.')) ++n;
+    if (n == i) {
+      if (w.address.back() == '=') return fail(start, fmt::format("'{}' has no value", w.address));
+      b.words.push_back(std::move(w));  // a bare word: DIAMON, MACHINING, END
+      return true;
+    }
+    // The number runs to the next blank, letter or comment; anything else in it is an error.
+    size_t end = n;
+    while (end < s.size() && !is_blank(s[end]) && !is_letter(s[end]) && s[end] != '(' &&
+           s[end] != '[' && s[end] != ';')
+      ++end;
+    w.text = std::string(s.substr(i, end - i));
+    if (!parse_number(w.text, w.value))
+      return fail(start, fmt::format("invalid number '{}{}'", w.address, w.text));
+    i = end;
+    b.words.push_back(std::move(w));
+    return true;
+  }
+
+  bool comment(const NcSyntax& syn, std::string_view open) {
+    const size_t start = i;
+    i += open.size();
+    if (syn.comment_close.empty()) {
+      b.comments.emplace_back(s.substr(i));
+      i = s.size();
+      return true;
+    }
+    size_t close = s.find(syn.comment_close, i);
+    if (close == std::string_view::npos)
+      return fail(start, fmt::format("comment has no closing '{}'", syn.comment_close));
+    b.comments.emplace_back(s.substr(i, close - i));
+    i = close + syn.comment_close.size();
+    return true;
+  }
+
+  bool run(const NcSyntax& syn) {
+    skip_blanks();
+    if (i < s.size() && s[i] == '%') {
+      b.program_delimiter = true;
+      return true;
+    }
+    if (i < s.size() && s[i] == '/') ++i;  // block delete: the block runs (switch off)
+    // Block number.
+    std::string_view addr = trim(syn.block_address);
+    if (!addr.empty() && s.substr(i, addr.size()) == addr) {
+      size_t j = i + addr.size();
+      while (j < s.size() && is_blank(s[j])) ++j;
+      if (j < s.size() && is_digit(s[j]) && (j > i + addr.size() || addr.size() == 1)) {
+        while (j < s.size() && is_digit(s[j])) ++j;
+        i = j;
+      }
+    }
+    const std::string_view open = trim(syn.comment_open);
+    while (true) {
+      skip_blanks();
+      if (i >= s.size()) return true;
+      const char c = s[i];
+      if (!open.empty() && s.substr(i, open.size()) == open) {
+        if (!comment(syn, open)) return false;
+      } else if (c == ';') {
+        b.comments.emplace_back(trim(s.substr(i + 1)));
+        return true;
+      } else if (is_letter(c)) {
+        if (!word()) return false;
+      } else {
+        return fail(i, fmt::format("unexpected '{}'", c));
+      }
+    }
+  }
+};
+
+}  // namespace
+
+bool lex_nc_line(std::string_view line, uint32_t line_no, const NcSyntax& syntax, NcBlock& block,
+                 NcLexError& error) {
+  block.line = line_no;
+  block.words.clear();
+  block.calls.clear();
+  block.comments.clear();
+  block.program_delimiter = false;
+  while (!line.empty() && (line.back() == '\r' || is_blank(line.back()))) line.remove_suffix(1);
+  Lexer lx{line, 0, block, error};
+  return lx.run(syntax);
+}
+
+}  // namespace clpost

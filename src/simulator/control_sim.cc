@@ -1,0 +1,376 @@
+#include "simulator/control_sim.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "nc_reader/nc_lexer.h"
+#include "simulator/sim_state.h"
+
+namespace clpost {
+namespace sim {
+
+Code parse_code(std::string_view text) {
+  Code c;
+  size_t i = 0;
+  while (i < text.size() &&
+         ((text[i] >= 'A' && text[i] <= 'Z') || (text[i] >= 'a' && text[i] <= 'z'))) {
+    c.address += static_cast<char>(text[i] >= 'a' ? text[i] - 'a' + 'A' : text[i]);
+    ++i;
+  }
+  if (i < text.size()) {
+    double v = 0;
+    auto r = std::from_chars(text.data() + i, text.data() + text.size(), v);
+    if (r.ec == std::errc() && r.ptr == text.data() + text.size()) {
+      c.number = v;
+    } else {
+      c.address = std::string(text);  // "[METRIC]": matched against the line itself
+    }
+  }
+  return c;
+}
+
+bool has_code(const NcBlock& b, const Code& c) {
+  if (c.empty()) return false;
+  for (const NcWord& w : b.words) {
+    if (w.address != c.address) continue;
+    if (!c.number && !w.has_value()) return true;
+    if (c.number && w.has_value() && std::fabs(w.value - *c.number) < 1e-9) return true;
+  }
+  return false;
+}
+
+Code template_code(const Machine& m, const std::string& name, size_t index) {
+  auto it = m.templates.find(name);
+  if (it == m.templates.end() || it->second.size() <= index) return {};
+  std::string_view t = it->second[index];
+  size_t end = t.find_first_of(" ({");
+  return parse_code(t.substr(0, end));
+}
+
+double State::value(const NcWord& w, std::string_view format) const {
+  const double scale = m.format_for(format).scale;
+  return scale != 0 ? w.value / scale : w.value;
+}
+
+void State::error(uint32_t col, std::string message) {
+  diags.error(SourceLoc{line, col}, line_text, std::move(message));
+  ok = false;
+}
+
+void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
+  if (opt.keep_moves) {
+    Move mv;
+    mv.kind = kind;
+    mv.from = pos;
+    mv.to = to;
+    mv.center = center;
+    mv.line = static_cast<int>(line);
+    mv.lead = lead;
+    out.path.moves.push_back(mv);
+  }
+  pos = to;
+}
+
+void State::cycle_cuts(const std::vector<Cut>& cuts, Vec2 start, Vec2 after,
+                       std::string_view source, double lead, std::optional<double> start_angle,
+                       bool fixed_end, bool keep_start_index) {
+  const int call = out.calls++;
+  pos = start;
+  for (const Cut& c : cuts) {
+    NcCut n;
+    n.from = c.from;
+    n.to = c.to;
+    n.end = c.end;
+    n.chain = {c.to};
+    if (c.end.x != c.to.x || c.end.z != c.to.z) n.chain.push_back(c.end);
+    n.lead = lead;
+    n.start = keep_start_index ? c.start : -1;
+    n.start_angle = start_angle;
+    n.line = line;
+    n.line_text = std::string(line_text);
+    n.source = std::string(source);
+    n.call = call;
+    n.fixed_end = fixed_end;
+    out.cuts.push_back(std::move(n));
+    // The cycle's own moves, as its figure draws them: along the start line to the pass, in,
+    // the cut, out to the start line, back.
+    move(MoveKind::kRapid, {start.x, c.from.z});
+    move(MoveKind::kRapid, c.from);
+    move(MoveKind::kThread, c.to, {}, lead);
+    if (c.end.x != c.to.x || c.end.z != c.to.z) move(MoveKind::kThread, c.end, {}, lead);
+    move(MoveKind::kRapid, {start.x, pos.z});
+    move(MoveKind::kRapid, start);
+  }
+  pos = after;
+  if (after.x != start.x || after.z != start.z) move(MoveKind::kRapid, after);
+  last_was_thread = false;
+  pullout_open = false;
+  motion = Motion::kNone;
+}
+
+}  // namespace sim
+
+namespace {
+
+using sim::Code;
+using sim::Motion;
+using sim::State;
+
+struct Codes {
+  Code rapid, linear, cw, ccw, thread, thread_inc, thread_dec, metric, inch, dwell;
+  std::string metric_line, inch_line;  // codes written as comments: "[METRIC]"
+};
+
+Codes codes_of(const Machine& m) {
+  Codes c;
+  c.rapid = sim::parse_code(m.code("rapid"));
+  c.linear = sim::parse_code(m.code("linear"));
+  c.cw = sim::parse_code(m.code("arc_cw"));
+  c.ccw = sim::parse_code(m.code("arc_ccw"));
+  c.thread = sim::parse_code(m.code("thread"));
+  c.thread_inc = sim::parse_code(m.code("thread_increasing"));
+  c.thread_dec = sim::parse_code(m.code("thread_decreasing"));
+  c.metric = sim::parse_code(m.code("metric"));
+  c.inch = sim::parse_code(m.code("inch"));
+  c.dwell = sim::template_code(m, "dwell");
+  const std::string& open = m.comment_open;
+  if (!open.empty() && m.code("metric").rfind(open, 0) == 0) c.metric_line = m.code("metric");
+  if (!open.empty() && m.code("inch").rfind(open, 0) == 0) c.inch_line = m.code("inch");
+  return c;
+}
+
+bool is_thread(Motion mo) {
+  return mo == Motion::kThread || mo == Motion::kThreadInc || mo == Motion::kThreadDec;
+}
+
+void thread_move(State& s, const NcBlock& b, Vec2 to, const Code& code) {
+  const Machine& m = s.m;
+  const bool along_x = std::fabs(to.x - s.pos.x) > std::fabs(to.z - s.pos.z);
+  const std::string& lead_addr =
+      along_x && !m.thread_lead_address_x.empty() ? m.thread_lead_address_x : m.thread_lead_address;
+  double lead = 0;
+  double lead_change = 0;
+  const NcWord* tpi = m.tpi_address.empty() ? nullptr : b.find(m.tpi_address);
+  if (tpi != nullptr && tpi->value > 0) {
+    lead = (s.out.units == LengthUnit::kInch ? 1.0 : 25.4) / s.value(*tpi);
+  } else if (const NcWord* l = b.find(lead_addr)) {
+    lead = s.value(*l);
+    if (lead_addr == "F") {
+      s.f_register = lead;
+    } else {
+      s.lead_register = lead;
+    }
+  } else if (lead_addr == "F") {
+    lead = s.f_register;
+  } else if (s.lead_register) {
+    lead = *s.lead_register;
+  } else {
+    s.error(b.words.empty() ? 1 : b.words.front().col,
+            fmt::format("synchronized move without a lead ({} word)", lead_addr));
+    return;
+  }
+  if (s.motion != Motion::kThread && lead_addr != "F") {
+    if (const NcWord* f = b.find("F")) {
+      lead_change = s.value(*f, "F");
+      if (s.motion == Motion::kThreadDec) lead_change = -lead_change;
+    }
+  }
+  std::optional<double> angle;
+  if (m.start_angle_word)
+    if (const NcWord* q = b.find(m.start_angle_address)) angle = s.value(*q);
+  if (s.last_was_thread && !s.out.cuts.empty()) {
+    NcCut& c = s.out.cuts.back();
+    c.chain.push_back(to);
+    c.end = to;
+  } else {
+    NcCut c;
+    c.from = s.pos;
+    c.to = to;
+    c.end = to;
+    c.chain = {to};
+    c.lead = lead;
+    c.lead_change = lead_change;
+    c.start_angle = angle;
+    c.line = s.line;
+    c.line_text = std::string(s.line_text);
+    c.source = code.address + (code.number ? fmt::format("{:g}", *code.number) : "");
+    s.out.cuts.push_back(std::move(c));
+  }
+  s.move(MoveKind::kThread, to, {}, lead);
+  s.last_was_thread = true;
+  s.pullout_open = true;
+}
+
+void run_block(State& s, const NcBlock& b, const Codes& c) {
+  const Machine& m = s.m;
+  // Heidenhain: G31's contour blocks and G80 belong to the cycle.
+  if (s.g31.set) {
+    sim::heidenhain_g31(s, b);
+    return;
+  }
+  if (!c.metric_line.empty() && s.line_text.find(c.metric_line) != std::string_view::npos)
+    s.out.units = LengthUnit::kMm;
+  if (!c.inch_line.empty() && s.line_text.find(c.inch_line) != std::string_view::npos)
+    s.out.units = LengthUnit::kInch;
+  if (b.words.empty() && b.calls.empty()) return;
+  if (sim::has_code(b, c.metric)) s.out.units = LengthUnit::kMm;
+  if (sim::has_code(b, c.inch)) s.out.units = LengthUnit::kInch;
+  if (sim::has_code(b, {"DIAMON", {}}) || sim::has_code(b, {"G", 7})) s.diameter = true;
+  if (sim::has_code(b, {"DIAMOF", {}}) || sim::has_code(b, {"G", 8})) s.diameter = false;
+  for (const NcWord& w : b.words) {
+    if ((w.address == "G" && w.has_value() && std::fabs(w.value - 91) < 1e-9) ||
+        ((w.address == "U" || w.address == "W") && m.thread_cycle != ThreadCycle::kHeidenhainG31))
+      return s.error(w.col, fmt::format("'{}{}': incremental positions are not supported by "
+                                        "verify (absolute G90 only)",
+                                        w.address, w.text));
+  }
+  if (sim::has_code(b, c.dwell)) return;  // G4 X/P/F is a time, not a position
+  // Cycles.
+  if (!b.calls.empty()) {
+    if (sim::cycle99_call(s, b)) return;
+    return;  // other calls (CYCLE96 undercuts) are not simulated
+  }
+  switch (m.thread_cycle) {
+    case ThreadCycle::kFanucG76:
+      if (sim::fanuc_g76(s, b)) return;
+      break;
+    case ThreadCycle::kHaasG76:
+      if (sim::haas_g76(s, b)) return;
+      break;
+    case ThreadCycle::kLinuxcncG76:
+      if (sim::linuxcnc_g76(s, b)) return;
+      break;
+    case ThreadCycle::kHeidenhainG31:
+      if (sim::heidenhain_g31(s, b)) return;
+      break;
+    default:
+      break;
+  }
+  if (m.thread_loop == ThreadLoop::kG92 && sim::g92_cycle(s, b)) return;
+
+  // Modal motion.
+  const Code* motion_code = nullptr;
+  struct Entry {
+    const Code* code;
+    Motion motion;
+  };
+  const Entry entries[] = {{&c.rapid, Motion::kRapid},
+                           {&c.linear, Motion::kLinear},
+                           {&c.cw, Motion::kArcCw},
+                           {&c.ccw, Motion::kArcCcw},
+                           {&c.thread, Motion::kThread},
+                           {&c.thread_inc, Motion::kThreadInc},
+                           {&c.thread_dec, Motion::kThreadDec}};
+  for (const Entry& e : entries)
+    if (sim::has_code(b, *e.code)) {
+      s.motion = e.motion;
+      motion_code = e.code;
+    }
+  if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);
+
+  const NcWord* x = b.find("X");
+  const NcWord* z = b.find("Z");
+  if (x == nullptr && z == nullptr) return;
+  Vec2 to = s.pos;
+  if (x) to.x = s.radius(*x);
+  if (z) to.z = s.value(*z);
+  const bool was_thread = s.last_was_thread;
+  const bool pullout_open = s.pullout_open;
+  s.last_was_thread = false;
+  s.pullout_open = false;
+  switch (s.motion) {
+    case Motion::kNone:
+      return s.error((x ? x : z)->col, "a position with no motion mode (G0, G1, ...) in force");
+    case Motion::kRapid:
+      s.move(MoveKind::kRapid, to);
+      return;
+    case Motion::kLinear:
+      if (pullout_open && !s.out.cuts.empty()) s.out.cuts.back().linear_pullout = to;
+      s.move(MoveKind::kFeed, to);
+      return;
+    case Motion::kArcCw:
+    case Motion::kArcCcw: {
+      const NcWord* i = b.find("I");
+      const NcWord* k = b.find("K");
+      if (i == nullptr && k == nullptr)
+        return s.error((x ? x : z)->col, "arc without a centre (I/K)");
+      const Vec2 center{s.pos.x + (i ? s.value(*i) : 0), s.pos.z + (k ? s.value(*k) : 0)};
+      s.move(s.motion == Motion::kArcCw ? MoveKind::kArcCw : MoveKind::kArcCcw, to, center);
+      return;
+    }
+    case Motion::kThread:
+    case Motion::kThreadInc:
+    case Motion::kThreadDec: {
+      s.last_was_thread = was_thread;
+      const Code& code = motion_code != nullptr           ? *motion_code
+                         : s.motion == Motion::kThread    ? c.thread
+                         : s.motion == Motion::kThreadInc ? c.thread_inc
+                                                          : c.thread_dec;
+      thread_move(s, b, to, code);
+      return;
+    }
+    case Motion::kG92:
+      return;
+  }
+}
+
+}  // namespace
+
+bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
+                 const SimOptions& options) {
+  using Status = reader::LineSource::Status;
+  constexpr size_t kMaxLine = 64 * 1024;
+  out = Simulation{};
+  out.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+  State s{m, diags, out, options};
+  s.diameter = m.diameter_output;
+  const NcSyntax syntax = nc_syntax(m);
+  const Codes codes = codes_of(m);
+  NcBlock block;
+  NcLexError lex_error;
+  while (true) {
+    src.mark();
+    reader::LineSource::Line l;
+    const Status st = src.next_line(kMaxLine, l);
+    if (st == Status::kEnd) break;
+    if (st == Status::kBinary) {
+      diags.error({}, {},
+                  fmt::format("not an NC text file (binary data at byte {})", src.binary_offset()));
+      return false;
+    }
+    if (st == Status::kReadError) {
+      diags.error({}, {}, src.read_error());
+      return false;
+    }
+    if (st == Status::kTooLong) {
+      diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
+      src.skip_line();
+      s.ok = false;
+      continue;
+    }
+    ++out.blocks;
+    s.line = l.number;
+    s.line_text = src.text(l);
+    if (!lex_nc_line(s.line_text, l.number, syntax, block, lex_error)) {
+      diags.error(SourceLoc{l.number, lex_error.col}, s.line_text, lex_error.message);
+      s.ok = false;
+    } else {
+      run_block(s, block, codes);
+    }
+    if (diags.error_count() > 100) {
+      diags.error(SourceLoc{l.number, 1}, {}, "too many errors; verify stopped here");
+      return false;
+    }
+  }
+  if (s.g31.set) {
+    diags.error(SourceLoc{s.g31.line, s.g31.col}, s.g31.line_text,
+                "G31 has no G80: the thread cycle's contour is not closed");
+    s.ok = false;
+  }
+  out.path.units = out.units;
+  return s.ok;
+}
+
+}  // namespace clpost

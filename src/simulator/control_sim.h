@@ -1,0 +1,54 @@
+#pragma once
+// Runs an NC program the way its control would (machine m's dialect): modal motion, units,
+// diameter mode, and every threading cycle clpost writes expanded with the control's documented
+// law (emitters/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
+// cuts (for `clpost verify`).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "machine/machine.h"
+#include "reader/line_source.h"
+#include "simulator/toolpath.h"
+#include "support/diagnostics.h"
+
+namespace clpost {
+
+// One synchronized cut: a G33/G32 move with its chained pull-out moves, one G92 cycle, or one
+// pass of a cycle's expansion. CL frame (x a radius), program units.
+struct NcCut {
+  Vec2 from;
+  Vec2 to;                  // end of the first synchronized move (the thread itself)
+  Vec2 end;                 // after the chained pull-out moves (== to when there are none)
+  std::vector<Vec2> chain;  // every synchronized move's end point, in order (to .. end)
+  std::optional<Vec2> linear_pullout;  // a G1 move right after the cut ends here
+  double lead = 0;                     // per revolution, program units
+  double lead_change = 0;              // G34 (+) / G35 (-) per revolution
+  int start = -1;                      // start index when a cycle says it (else -1)
+  std::optional<double> start_angle;   // degrees, when the block gives one
+  uint32_t line = 0;                   // the NC block (a cycle's call)
+  std::string line_text;               // that block's text, for diagnostics
+  std::string source;                  // "G33", "G92", "G76", "CYCLE99", "G31"
+  int call = -1;                       // cuts of one cycle call share it; -1 single block
+  bool fixed_end = false;  // G76 with threading.cycle_pass_end: fixed (every pass ends at Z)
+};
+
+struct Simulation {
+  LengthUnit units = LengthUnit::kMm;
+  Toolpath path;            // every move (only when SimOptions::keep_moves)
+  std::vector<NcCut> cuts;  // in cutting order
+  size_t blocks = 0;        // NC lines read
+  int calls = 0;            // cycle calls expanded
+};
+
+struct SimOptions {
+  bool keep_moves = true;
+};
+
+// Reads the program from `src` into `out`. Errors (text that is not NC, a word the control
+// would refuse, a cycle its law refuses) go to `diags` as `file:line:col: error: ...`; returns
+// false when there were any.
+bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
+                 const SimOptions& options = {});
+
+}  // namespace clpost

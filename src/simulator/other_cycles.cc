@@ -1,0 +1,222 @@
+// Threading cycles read back: LinuxCNC G76, HEIDENHAIN G31 ... G80 and SINUMERIK CYCLE99.
+// Laws: emitters/linuxcnc_law.h, emitters/heidenhain_law.h, emitters/siemens_law.h.
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "emitters/heidenhain_emitter.h"
+#include "emitters/heidenhain_law.h"
+#include "emitters/linuxcnc_law.h"
+#include "emitters/siemens_law.h"
+#include "simulator/sim_state.h"
+
+namespace clpost::sim {
+
+namespace {
+
+uint32_t first_col(const NcBlock& b) {
+  return b.words.empty() ? 1 : b.words.front().col;
+}
+
+double word_or(const State& s, const NcBlock& b, const char* address, std::string_view format,
+               double fallback) {
+  const NcWord* w = b.find(address);
+  return w != nullptr ? s.value(*w, format) : fallback;
+}
+
+}  // namespace
+
+bool linuxcnc_g76(State& s, const NcBlock& b) {
+  Code code = template_code(s.m, "linuxcnc_g76");
+  if (!has_code(b, code)) return false;
+  for (const char* a : {"P", "Z", "I", "J", "K"})
+    if (b.find(a) == nullptr) {
+      s.error(first_col(b), fmt::format("G76 without its {} word", a));
+      return true;
+    }
+  LinuxcncG76 w;
+  w.p = word_or(s, b, "P", "g76_lead", 0);
+  w.z = word_or(s, b, "Z", "Z", 0);
+  w.i = word_or(s, b, "I", "g76_depth", 0);
+  w.j = word_or(s, b, "J", "g76_depth", 0);
+  w.k = word_or(s, b, "K", "g76_depth", 0);
+  w.r = word_or(s, b, "R", "R", 1);
+  w.q = word_or(s, b, "Q", "g76_angle", 0);
+  w.h = static_cast<int>(std::lround(word_or(s, b, "H", "H", 0)));
+  w.e = word_or(s, b, "E", "g76_taper", 0);
+  w.l = static_cast<int>(std::lround(word_or(s, b, "L", "L", 0)));
+  std::string refused;
+  const std::vector<Cut> cuts = expand_linuxcnc_g76(w, s.pos, s.diameter, &refused);
+  if (!refused.empty()) {
+    s.error(first_col(b), refused);
+    return true;
+  }
+  const Vec2 start = s.pos;
+  s.cycle_cuts(cuts, start, {start.x, w.z}, "G76", w.p, std::nullopt, false, false);
+  return true;
+}
+
+bool heidenhain_g31(State& s, const NcBlock& b) {
+  const auto& tmpl = s.m.templates.find("heidenhain_g31");
+  if (tmpl == s.m.templates.end() || tmpl->second.empty()) return false;
+  PendingG31& g = s.g31;
+  if (!g.set) {
+    if (!has_code(b, template_code(s.m, "heidenhain_g31"))) return false;
+    g = PendingG31{};
+    g.set = true;
+    g.line = s.line;
+    g.col = first_col(b);
+    g.line_text = std::string(s.line_text);
+    g.block = b;
+    return true;
+  }
+  // The contour (G0 to its start, G1 to its end) and the closing G80.
+  const Code end = template_code(s.m, "heidenhain_g31", tmpl->second.size() - 1);
+  const NcWord* x = b.find("X");
+  const NcWord* z = b.find("Z");
+  if (x != nullptr || z != nullptr) {
+    Vec2 p = g.to.value_or(g.from.value_or(s.pos));
+    if (x) p.x = s.radius(*x);
+    if (z) p.z = s.value(*z);
+    if (!g.from) {
+      g.from = p;
+    } else {
+      g.to = p;
+    }
+  }
+  if (!has_code(b, end)) return true;
+  const NcBlock& c = g.block;
+  const uint32_t line = s.line;
+  s.line = g.line;
+  const std::string line_text = g.line_text;
+  const std::string_view saved_text = s.line_text;
+  s.line_text = line_text;
+  g.set = false;
+  if (!g.from || !g.to) {
+    s.error(g.col, "G31's contour needs a start (G0 X Z) and an end (G1 X Z) before G80");
+  } else {
+    HeidenhainG31 w;
+    w.f = word_or(s, c, "F", "F", 0);
+    w.u = word_or(s, c, "U", "U", 0);
+    w.ic = static_cast<int>(std::lround(word_or(s, c, "IC", "IC", 1)));
+    w.v = static_cast<int>(std::lround(word_or(s, c, "V", "V", 0)));
+    w.h = static_cast<int>(std::lround(word_or(s, c, "H", "H", 0)));
+    w.a = word_or(s, c, "A", "A", 30);
+    w.d = static_cast<int>(std::lround(word_or(s, c, "D", "D", 1)));
+    w.q = static_cast<int>(std::lround(word_or(s, c, "Q", "Q", 0)));
+    w.c = word_or(s, c, "C", "C", 0);
+    w.bd = static_cast<int>(std::lround(word_or(s, c, "BD", "BD", 0)));
+    w.b = word_or(s, c, "B", "B", 0);
+    w.p = word_or(s, c, "P", "P", 0);
+    w.k = word_or(s, c, "K", "K", 0);
+    w.from = *g.from;
+    w.to = *g.to;
+    std::string refused;
+    const std::vector<Cut> cuts =
+        expand_heidenhain_g31(w, HeidenhainG31Emitter::flank_codes(s.m), &refused);
+    if (!refused.empty()) {
+      s.error(g.col, "G31: " + refused);
+    } else {
+      const Vec2 start = s.pos;
+      s.cycle_cuts(cuts, start, start, "G31", w.f, std::nullopt, false, false);
+    }
+  }
+  s.line = line;
+  s.line_text = saved_text;
+  return true;
+}
+
+namespace {
+
+// Where each {field} of a call template sits among its arguments: "spl" -> 0, ...
+std::map<std::string, size_t> call_fields(std::string_view t) {
+  std::map<std::string, size_t> out;
+  size_t open = t.find('(');
+  if (open == std::string_view::npos) return out;
+  size_t index = 0;
+  bool quoted = false;
+  size_t arg = open + 1;
+  for (size_t i = open + 1; i < t.size(); ++i) {
+    if (t[i] == '"') quoted = !quoted;
+    if (quoted || (t[i] != ',' && t[i] != ')')) continue;
+    std::string_view a = t.substr(arg, i - arg);
+    size_t b = a.find('{'), e = a.find_first_of(":}", b == std::string_view::npos ? 0 : b);
+    if (b != std::string_view::npos && e != std::string_view::npos)
+      out[std::string(a.substr(b + 1, e - b - 1))] = index;
+    ++index;
+    arg = i + 1;
+    if (t[i] == ')') break;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool cycle99_call(State& s, const NcBlock& b) {
+  const auto tmpl = s.m.templates.find("cycle99");
+  if (tmpl == s.m.templates.end() || tmpl->second.empty()) return false;
+  std::string_view t = tmpl->second.front();
+  const std::string name(t.substr(0, t.find('(')));
+  const NcCall* call = nullptr;
+  for (const NcCall& c : b.calls)
+    if (c.name == name) call = &c;
+  if (call == nullptr) return false;
+  const std::map<std::string, size_t> fields = call_fields(t);
+  bool ok = true;
+  auto arg = [&](const char* field, std::string_view format, double fallback) {
+    auto it = fields.find(field);
+    if (it == fields.end() || it->second >= call->args.size() || !ok) return fallback;
+    const std::string& a = call->args[it->second];
+    if (a.empty()) return fallback;
+    double v = 0;
+    std::string_view body = a[0] == '+' ? std::string_view(a).substr(1) : std::string_view(a);
+    auto r = std::from_chars(body.data(), body.data() + body.size(), v);
+    if (r.ec != std::errc() || r.ptr != body.data() + body.size()) {
+      s.error(call->cols[it->second], fmt::format("{} argument {} ({}): invalid number '{}'", name,
+                                                  it->second + 1, field, a));
+      ok = false;
+      return fallback;
+    }
+    const double scale = s.m.format_for(format).scale;
+    return scale != 0 ? v / scale : v;
+  };
+  constexpr std::string_view kDepth = "cycle99_depth", kAngle = "cycle99_angle",
+                             kLead = "cycle99_lead";
+  Cycle99Words w;
+  w.spl = arg("spl", "Z", 0);
+  w.dm1 = arg("dm1", "X", 0);
+  w.fpl = arg("fpl", "Z", 0);
+  w.dm2 = arg("dm2", "X", 0);
+  w.app = arg("app", kDepth, 0);
+  w.rop = arg("rop", kDepth, 0);
+  w.tdep = arg("tdep", kDepth, 0);
+  w.fal = arg("fal", kDepth, 0);
+  w.iang = arg("iang", kAngle, 0);
+  w.nsp = arg("nsp", kAngle, 0);
+  w.nrc = static_cast<int>(std::lround(arg("nrc", "", 1)));
+  w.nid = static_cast<int>(std::lround(arg("nid", "", 0)));
+  w.pit = arg("pit", kLead, 0);
+  w.vari = static_cast<int>(std::lround(arg("vari", "", kVariExternalConstantInfeed)));
+  w.numth = static_cast<int>(std::lround(arg("numth", "", 0)));
+  w.vrt = arg("vrt", kDepth, 0);
+  w.pita = static_cast<int>(std::lround(arg("pita", "", 1)));
+  w.psys = static_cast<int>(std::lround(arg("psys", "", 0)));
+  if (!ok) return true;
+  if (!s.diameter) {
+    s.error(call->col, "CYCLE99 in radius programming (DIAMOF) is not expanded");
+    return true;
+  }
+  const Cycle99Expansion e = expand_cycle99(w);
+  if (!e.alarm.empty()) {
+    s.error(call->col, "CYCLE99 alarm: " + e.alarm);
+    return true;
+  }
+  const Vec2 start = s.pos;
+  const double lead = cycle99_lead(w, s.out.units == LengthUnit::kInch);
+  s.cycle_cuts(e.cuts, start, start, "CYCLE99", lead, std::nullopt, false, w.numth > 1);
+  return true;
+}
+
+}  // namespace clpost::sim

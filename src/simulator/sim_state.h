@@ -1,0 +1,105 @@
+#pragma once
+// The control simulation's state while it runs a program (control_sim.cc) and the cycle
+// readers that share it (fanuc_cycles.cc, other_cycles.cc). Internal to simulator/.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "emitters/cut_pass.h"
+#include "nc_reader/nc_block.h"
+#include "simulator/control_sim.h"
+
+namespace clpost::sim {
+
+// A code of the machine (codes: / a template's first word) as address and number: "G33" is
+// {"G", 33}; "DIAMON" is {"DIAMON", none}.
+struct Code {
+  std::string address;
+  std::optional<double> number;
+  bool empty() const { return address.empty(); }
+};
+Code parse_code(std::string_view text);
+bool has_code(const NcBlock& b, const Code& c);
+// The first word of a template's line `index` ("G76" of "G76 X{x} ..."); empty when absent.
+Code template_code(const Machine& m, const std::string& name, size_t index = 0);
+
+enum class Motion {
+  kNone,
+  kRapid,
+  kLinear,
+  kArcCw,
+  kArcCcw,
+  kThread,
+  kThreadInc,
+  kThreadDec,
+  kG92
+};
+
+// Words of a Fanuc G76 first block, waiting for the second.
+struct FanucFirstBlock {
+  bool set = false;
+  std::string p;  // "mmrraa"
+  double q = 0, r = 0;
+};
+
+// Heidenhain G31 ... G80: the cycle's words and its contour, waiting for G80.
+struct PendingG31 {
+  bool set = false;
+  uint32_t line = 0, col = 0;
+  std::string line_text;
+  NcBlock block;
+  std::optional<Vec2> from, to;
+};
+
+// G92's modal words (a block of only X/Z/R/Q repeats the cycle with them).
+struct G92Modal {
+  double x = 0, z = 0, r = 0, f = 0;
+  std::optional<double> q;
+};
+
+struct State {
+  State(const Machine& machine, Diagnostics& d, Simulation& o, const SimOptions& so)
+      : m(machine), diags(d), out(o), opt(so) {}
+  const Machine& m;
+  Diagnostics& diags;
+  Simulation& out;
+  const SimOptions& opt;
+  std::string_view line_text;
+  uint32_t line = 0;
+  bool ok = true;
+
+  Vec2 pos;
+  bool diameter = true;
+  Motion motion = Motion::kNone;
+  double f_register = 0;
+  std::optional<double> lead_register;  // when the lead word is not F
+  bool last_was_thread = false;         // the previous move was synchronized
+  bool pullout_open = false;            // the previous move ended a synchronized cut
+  FanucFirstBlock fanuc_first;
+  PendingG31 g31;
+  G92Modal g92;
+
+  // A word's value as the control reads it: divided by the format's scale (machine formats).
+  double value(const NcWord& w, std::string_view format) const;
+  double value(const NcWord& w) const { return value(w, w.address); }
+  // X as a radius (halved in diameter mode).
+  double radius(const NcWord& x) const { return diameter ? value(x) / 2 : value(x); }
+  void error(uint32_t col, std::string message);
+  void move(MoveKind kind, Vec2 to, Vec2 center = {}, double lead = 0);
+  // A cycle's passes (its law's expansion) from `start`: cuts and their moves; the tool is left
+  // at `after`.
+  void cycle_cuts(const std::vector<Cut>& cuts, Vec2 start, Vec2 after, std::string_view source,
+                  double lead, std::optional<double> start_angle, bool fixed_end,
+                  bool keep_start_index);
+};
+
+// Cycle readers: each returns true when the block was its cycle (handled, errors reported).
+bool fanuc_g76(State& s, const NcBlock& b);
+bool haas_g76(State& s, const NcBlock& b);
+bool g92_cycle(State& s, const NcBlock& b);
+bool linuxcnc_g76(State& s, const NcBlock& b);
+bool heidenhain_g31(State& s, const NcBlock& b);  // G31, its contour, G80
+bool cycle99_call(State& s, const NcBlock& b);
+
+}  // namespace clpost::sim

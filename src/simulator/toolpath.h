@@ -1,0 +1,57 @@
+#pragma once
+// What a program makes the tool do, as clpost's control simulation (simulator/) or the CL plan
+// sees it: every move in order, in the CL lathe frame (x a radius, z the spindle axis). What
+// `clpost verify` compares and `clpost plot` draws.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "planner/thread_plan.h"
+
+namespace clpost {
+
+enum class MoveKind : uint8_t {
+  kRapid,   // G0
+  kFeed,    // G1, and the feed moves of canned cycles
+  kArcCw,   // G2 (center in `center`)
+  kArcCcw,  // G3
+  kThread,  // a synchronized (spindle-locked) move: G33, G32, G92's cut, a cycle's passes
+};
+
+struct Move {
+  MoveKind kind = MoveKind::kRapid;
+  Vec2 from;
+  Vec2 to;
+  Vec2 center;      // arcs only
+  int line = 0;     // NC (or CL) line the move comes from, 1-based; cycle moves: the call's line
+  double lead = 0;  // kThread: lead per revolution along the dominant axis, program units
+};
+
+// A program's whole motion, in order.
+struct Toolpath {
+  LengthUnit units = LengthUnit::kMm;
+  std::vector<Move> moves;
+};
+
+// One thread's passes seen in its cross-section: where the tool's V sits at each pass.
+struct SectionPass {
+  int n = 0;         // 1-based pass number, in cutting order
+  int start = 0;     // start index, 0-based
+  double depth = 0;  // cumulative depth below the thread surface
+  double shift = 0;  // flank shift along the cutting direction (sigma)
+  PassKind kind = PassKind::kRough;
+};
+
+struct ThreadSection {
+  std::string title;  // e.g. "thread at part.cl:12 - pitch 1.5, depth 0.92, OPTION 1"
+  LengthUnit units = LengthUnit::kMm;
+  ThreadSide side = ThreadSide::kExternal;
+  double pitch = 0;  // crest to crest
+  double lead = 0;   // starts x pitch
+  int starts = 1;
+  double depth = 0;        // full thread depth D
+  double tool_angle = 60;  // included angle of the tool's V, degrees
+  std::vector<SectionPass> passes;
+};
+
+}  // namespace clpost

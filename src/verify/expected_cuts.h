@@ -1,0 +1,24 @@
+#pragma once
+// What the plan says the control must cut: every thread's passes (or a coupled / single-pass
+// thread's synchronized path) as one flat list, in the plan's cutting order.
+#include <vector>
+
+#include "planner/thread_plan.h"
+
+namespace clpost {
+
+struct ExpectedCut {
+  size_t thread = 0;  // index into the plans
+  int pass = 0;       // 1-based pass number in the thread's cutting order
+  int start = 0;
+  double depth = 0;
+  double shift = 0;
+  double start_angle = 0;
+  Vec2 from, to, end;
+  std::vector<Vec2> chain;  // coupled / single-pass threads: every synchronized move's end
+  PassKind kind = PassKind::kRough;
+};
+
+std::vector<ExpectedCut> expected_cuts(const std::vector<ThreadPlan>& plans);
+
+}  // namespace clpost

@@ -1,0 +1,330 @@
+#include "verify/verify.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "emitters/cut_pass.h"
+#include "planner/vec2_math.h"
+#include "verify/cut_alignment.h"
+#include "verify/expected_cuts.h"
+
+namespace clpost {
+
+using namespace vec2_math;
+
+namespace {
+
+// A thread's frame: u along the cut (P1 toward P2), n into the material (depth grows along n).
+struct Frame {
+  Vec2 u{0, -1};
+  Vec2 n{-1, 0};
+  double turns = 1;  // revolutions over the thread's length
+};
+
+Frame frame_of(const ThreadPlan& plan) {
+  Frame f;
+  Vec2 d = plan.p2 - plan.p1;
+  if (plan.form != ThreadForm::kMulti && plan.path.size() >= 2)
+    d = plan.path.back() - plan.path.front();
+  const double len = length(d);
+  if (len > 0) f.u = (1 / len) * d;
+  f.n = {-f.u.z, f.u.x};
+  const ThreadPass* deepest = nullptr;
+  for (const ThreadPass& p : plan.passes)
+    if (deepest == nullptr || p.depth > deepest->depth) deepest = &p;
+  if (deepest != nullptr && deepest->depth > 0) {
+    if (dot(deepest->to - plan.p1, f.n) < 0) f.n = -f.n;
+  } else if ((plan.side == ThreadSide::kExternal) == (f.n.x > 0)) {
+    f.n = -f.n;
+  }
+  const double travel = plan.lead_along_z ? std::fabs(d.z) : std::fabs(d.x);
+  if (plan.lead > 0) f.turns = std::max(1.0, travel / plan.lead);
+  return f;
+}
+
+// The program's cuts in the plan's order: a cycle that cuts start by start (CYCLE99 with NUMTH,
+// Haas G76 once per start) is put back in the plan's order, pass by pass and start by start
+// within a pass, so the comparison sees the same sequence.
+std::vector<size_t> cutting_order(const std::vector<NcCut>& cuts) {
+  struct Group {
+    size_t begin, end;  // [begin, end) in cuts
+  };
+  std::vector<Group> groups;
+  for (size_t i = 0; i < cuts.size();) {
+    size_t j = i + 1;
+    if (cuts[i].call >= 0)
+      while (j < cuts.size() && cuts[j].call == cuts[i].call) ++j;
+    groups.push_back({i, j});
+    i = j;
+  }
+  auto same_shape = [&](const Group& a, const Group& b) {
+    const NcCut& x = cuts[a.begin];
+    const NcCut& y = cuts[b.begin];
+    return x.call >= 0 && y.call >= 0 && a.end - a.begin == b.end - b.begin &&
+           x.source == y.source && x.lead == y.lead && x.start_angle && y.start_angle &&
+           *x.start_angle != *y.start_angle && x.from.x == y.from.x;
+  };
+  std::vector<size_t> order;
+  for (size_t g = 0; g < groups.size();) {
+    size_t h = g + 1;
+    while (h < groups.size() && same_shape(groups[g], groups[h])) ++h;
+    // (rank within its start, start) for every cut of groups g..h-1.
+    struct Key {
+      size_t rank;
+      size_t start;
+      size_t index;
+    };
+    std::vector<Key> keys;
+    for (size_t k = g; k < h; ++k) {
+      std::map<int, size_t> rank;
+      for (size_t i = groups[k].begin; i < groups[k].end; ++i) {
+        const int start = cuts[i].start >= 0 ? cuts[i].start : 0;
+        keys.push_back({rank[start]++, (k - g) * 1000 + static_cast<size_t>(start), i});
+      }
+    }
+    std::stable_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+      return a.rank != b.rank ? a.rank < b.rank : a.start < b.start;
+    });
+    for (const Key& k : keys) order.push_back(k.index);
+    g = h;
+  }
+  return order;
+}
+
+double angle_diff(double a, double b) {
+  double d = std::fmod(std::fabs(a - b), 360.0);
+  return std::min(d, 360 - d);
+}
+
+struct Compared {
+  int cost = 0;         // 0 same, 1 the same cut with different numbers, 2 unrelated
+  std::string why;      // cost 1: the first difference, with the numbers
+  double accepted = 0;  // a fixed pass end accepted (threading.accept_pass_end): how far
+};
+
+class Comparer {
+ public:
+  Comparer(const std::vector<ThreadPlan>& plans, const Machine& m, double tol)
+      : plans_(plans), m_(m), tol_(tol) {
+    for (const ThreadPlan& p : plans) frames_.push_back(frame_of(p));
+  }
+
+  std::string point(Vec2 v) const {
+    return fmt::format("X{:.4f} Z{:.4f}", m_.diameter_output ? 2 * v.x : v.x, v.z);
+  }
+
+  Compared compare(const ExpectedCut& e, const NcCut& c) const {
+    const ThreadPlan& plan = plans_[e.thread];
+    const Frame& f = frames_[e.thread];
+    Compared r;
+    auto differ = [&](std::string why) {
+      r.cost = 1;
+      r.why = std::move(why);
+      return r;
+    };
+    const double tol = tol_ + 1e-9;
+    if (plan.lead <= 0 || std::fabs(c.lead - plan.lead) > 0.05 * plan.lead) {
+      r.cost = 2;
+      r.why = fmt::format("lead {:.6g}, plan {:.6g}", c.lead, plan.lead);
+      return r;
+    }
+    if (std::fabs(c.lead - plan.lead) * f.turns > tol)
+      return differ(
+          fmt::format("lead {:.6f}, plan {:.6f}: {:.4f} off over the thread's {:.1f} "
+                      "turns",
+                      c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns));
+    if (std::fabs(c.lead_change - plan.pitch.lead_change) > 1e-9)
+      return differ(fmt::format("lead change {:g} per revolution, plan {:g}", c.lead_change,
+                                plan.pitch.lead_change));
+    if (plan.pitch.starts > 1 && c.start >= 0 && c.start != e.start)
+      return differ(fmt::format("start {}, plan start {}", c.start + 1, e.start + 1));
+    if (c.start_angle) {
+      const double want = plan.starts_by_angle ? e.start_angle : 0;
+      if (angle_diff(*c.start_angle, want) > 0.01)
+        return differ(fmt::format("start angle {:g} deg, plan {:g} deg", *c.start_angle, want));
+    }
+    if (plan.form != ThreadForm::kMulti) {
+      if (length(c.from - e.from) > tol)
+        return differ(fmt::format("starts at {}, plan {}", point(c.from), point(e.from)));
+      for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
+        if (length(c.chain[i] - e.chain[i]) > tol)
+          return differ(fmt::format("move {} ends at {}, plan {}", i + 1, point(c.chain[i]),
+                                    point(e.chain[i])));
+      if (c.chain.size() != e.chain.size())
+        return differ(
+            fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size()));
+      return r;
+    }
+    const double depth = e.depth + dot(c.to - e.to, f.n);
+    if (std::fabs(depth - e.depth) > tol)
+      return differ(fmt::format("depth {:.4f}, plan {:.4f}", depth, e.depth));
+    const double shift = e.shift + dot(c.from - e.from, f.u);
+    if (std::fabs(shift - e.shift) > tol)
+      return differ(fmt::format("shift {:.4f}, plan {:.4f}", shift, e.shift));
+    if (length(c.from - e.from) > tol)
+      return differ(fmt::format("starts at {}, plan {}", point(c.from), point(e.from)));
+    const bool accept_end = c.fixed_end && m_.accept_pass_end;
+    if (length(c.to - e.to) > tol) {
+      if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > tol)
+        return differ(fmt::format("ends at {}, plan {}", point(c.to), point(e.to)));
+      r.accepted = std::max(r.accepted, std::fabs(dot(c.to - e.to, f.u)));
+    }
+    const Vec2 end = plan.pullout_linear && c.linear_pullout ? *c.linear_pullout : c.end;
+    if (length(end - e.end) > tol) {
+      if (!accept_end || std::fabs(dot(end - e.end, f.n)) > tol)
+        return differ(fmt::format("pull-out ends at {}, plan {}", point(end), point(e.end)));
+      r.accepted = std::max(r.accepted, std::fabs(dot(end - e.end, f.u)));
+    }
+    return r;
+  }
+
+ private:
+  const std::vector<ThreadPlan>& plans_;
+  const Machine& m_;
+  double tol_;
+  std::vector<Frame> frames_;
+};
+
+std::string pass_name(const ThreadPlan& plan, const ExpectedCut& e) {
+  if (plan.form != ThreadForm::kMulti) return "its synchronized path";
+  return plan.pitch.starts > 1 ? fmt::format("pass {} (start {})", e.pass, e.start + 1)
+                               : fmt::format("pass {}", e.pass);
+}
+
+}  // namespace
+
+bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, const Machine& m,
+                 const VerifyOptions& options, Diagnostics& nc_diags, VerifyReport& report) {
+  report = VerifyReport{};
+  report.tolerance = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
+  const std::vector<ExpectedCut> expected = expected_cuts(plans);
+  const std::vector<size_t> order = cutting_order(sim.cuts);
+  report.planned_passes = expected.size();
+  report.program_cuts = order.size();
+  for (size_t t = 0; t < plans.size(); ++t) {
+    ThreadVerdict v;
+    v.plan = t;
+    report.threads.push_back(v);
+  }
+  for (const ExpectedCut& e : expected) ++report.threads[e.thread].planned;
+
+  const Comparer cmp(plans, m, report.tolerance);
+  std::vector<AlignedPair> pairs = align_sequences(
+      expected.size(), order.size(),
+      [&](size_t i, size_t j) { return cmp.compare(expected[i], sim.cuts[order[j]]).cost; });
+
+  auto thread_name = [&](size_t t) {
+    return fmt::format("thread at {}:{}", options.plan_name, plans[t].loc.line);
+  };
+  std::vector<double> accepted(plans.size(), 0);
+  std::vector<std::pair<uint32_t, uint32_t>> lines(plans.size(), {0, 0});
+  std::vector<std::vector<std::string>> sources(plans.size());
+  auto problem = [&](size_t t, const NcCut* at, std::string message) {
+    ThreadVerdict& v = report.threads[t];
+    v.problems.push_back(message);
+    ++report.problems;
+    nc_diags.error(SourceLoc{at ? at->line : 0, at ? 1u : 0u}, at ? at->line_text : "",
+                   fmt::format("{}: {}", thread_name(t), message));
+  };
+  // The thread an unmatched program cut is reported with: the last thread seen, else the next.
+  size_t last_thread = 0;
+  const NcCut* last_cut = nullptr;
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const AlignedPair& p = pairs[k];
+    if (p.a >= 0) last_thread = expected[static_cast<size_t>(p.a)].thread;
+    const NcCut* c = p.b >= 0 ? &sim.cuts[order[static_cast<size_t>(p.b)]] : nullptr;
+    if (p.a >= 0 && c != nullptr) {
+      const ExpectedCut& e = expected[static_cast<size_t>(p.a)];
+      ThreadVerdict& v = report.threads[e.thread];
+      ++v.cut;
+      auto& l = lines[e.thread];
+      l.first = l.first == 0 ? c->line : std::min(l.first, c->line);
+      l.second = std::max(l.second, c->line);
+      auto& src = sources[e.thread];
+      if (std::find(src.begin(), src.end(), c->source) == src.end()) src.push_back(c->source);
+      const Compared r = cmp.compare(e, *c);
+      accepted[e.thread] = std::max(accepted[e.thread], r.accepted);
+      if (r.cost != 0)
+        problem(e.thread, c,
+                fmt::format("{}: {} (tolerance {:g})", pass_name(plans[e.thread], e), r.why,
+                            report.tolerance));
+      last_cut = c;
+    } else if (p.a >= 0) {
+      const ExpectedCut& e = expected[static_cast<size_t>(p.a)];
+      // Name the block after which the pass should have been cut.
+      const NcCut* near = last_cut;
+      for (size_t q = k + 1; near == nullptr && q < pairs.size(); ++q)
+        if (pairs[q].b >= 0) near = &sim.cuts[order[static_cast<size_t>(pairs[q].b)]];
+      problem(e.thread, near,
+              fmt::format("{} (depth {:.4f}, from {}) is not cut by the program",
+                          pass_name(plans[e.thread], e), e.depth, cmp.point(e.from)));
+    } else if (c != nullptr) {
+      size_t t = last_thread;
+      if (k == 0 || pairs[k - 1].a < 0)
+        for (size_t q = k + 1; q < pairs.size(); ++q)
+          if (pairs[q].a >= 0) {
+            if (last_cut == nullptr) t = expected[static_cast<size_t>(pairs[q].a)].thread;
+            break;
+          }
+      if (plans.empty()) {
+        ++report.problems;
+        nc_diags.error(SourceLoc{c->line, 1}, c->line_text,
+                       fmt::format("{} cuts a thread (from {} to {}) that the plan does not have",
+                                   c->source, cmp.point(c->from), cmp.point(c->to)));
+      } else {
+        problem(t, c,
+                fmt::format("the program cuts a pass the plan does not have: {} from {} to {}",
+                            c->source, cmp.point(c->from), cmp.point(c->to)));
+      }
+      last_cut = c;
+    }
+  }
+  for (size_t t = 0; t < plans.size(); ++t) {
+    ThreadVerdict& v = report.threads[t];
+    std::string src;
+    for (const std::string& s : sources[t]) src += (src.empty() ? "" : ", ") + s;
+    const auto [first, last] = lines[t];
+    if (first == 0) {
+      v.how = "not cut";
+    } else if (first == last) {
+      v.how = fmt::format("{}, NC line {}", src, first);
+    } else {
+      v.how = fmt::format("{}, NC lines {}-{}", src, first, last);
+    }
+    if (accepted[t] > 0)
+      v.notes.push_back(fmt::format(
+          "passes end up to {:.4f} from the plan's ends along the thread: the cycle ends every "
+          "pass at its Z (threading.accept_pass_end)",
+          accepted[t]));
+  }
+  return report.problems == 0;
+}
+
+std::string verify_report_text(const VerifyReport& report, const std::vector<ThreadPlan>& plans,
+                               const std::string& program_name, const Machine& m,
+                               const VerifyOptions& options) {
+  std::string out = fmt::format(
+      "verify {} on {} against {}: {} threads, {} passes planned, {} cut\n", program_name, m.name,
+      options.plan_name, plans.size(), report.planned_passes, report.program_cuts);
+  for (const ThreadVerdict& v : report.threads) {
+    const ThreadPlan& p = plans[v.plan];
+    out += fmt::format("  {}:{:<5} {:>3} passes  {:<6} {}\n", options.plan_name, p.loc.line,
+                       v.planned, v.problems.empty() ? "ok" : "DIFFERS", v.how);
+    for (const std::string& n : v.notes) out += fmt::format("      note: {}\n", n);
+    for (const std::string& pr : v.problems) out += fmt::format("      {}\n", pr);
+  }
+  const char* unit = plans.empty() || plans.front().units == LengthUnit::kMm ? "mm" : "in";
+  if (report.problems == 0) {
+    out +=
+        fmt::format("ok: every pass is cut as planned, within {:g} {}\n", report.tolerance, unit);
+  } else {
+    out += fmt::format("FAILED: {} difference{} beyond {:g} {}\n", report.problems,
+                       report.problems == 1 ? "" : "s", report.tolerance, unit);
+  }
+  return out;
+}
+
+}  // namespace clpost

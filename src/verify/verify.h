@@ -1,0 +1,48 @@
+#pragma once
+// `clpost verify`: does an NC program cut what the CL file's plan says? The program's
+// synchronized cuts (simulator/control_sim.h: every cycle expanded with its control's law) are
+// lined up with the plan's passes (cut_alignment.h) and compared pass by pass: start, depth,
+// shift, where each cut starts and ends, the pull-out, the lead.
+#include <string>
+#include <vector>
+
+#include "machine/machine.h"
+#include "planner/thread_plan.h"
+#include "simulator/control_sim.h"
+#include "support/diagnostics.h"
+
+namespace clpost {
+
+struct VerifyOptions {
+  double tolerance = 0;   // largest difference that counts as equal; 0: cut_tolerance(m)
+  std::string plan_name;  // how the plan's source is named in messages ("part.cl")
+};
+
+struct ThreadVerdict {
+  size_t plan = 0;                    // index into the plans
+  size_t planned = 0;                 // passes in the plan
+  size_t cut = 0;                     // program cuts matched to this thread (equal or not)
+  std::string how;                    // "G76, NC line 40", "G33, NC lines 12-31"
+  std::vector<std::string> problems;  // one line each, with the numbers
+  std::vector<std::string> notes;     // accepted differences (threading.accept_pass_end)
+};
+
+struct VerifyReport {
+  std::vector<ThreadVerdict> threads;
+  size_t planned_passes = 0;
+  size_t program_cuts = 0;
+  size_t problems = 0;  // differences beyond the tolerance, missing and extra cuts
+  double tolerance = 0;
+};
+
+// Compares; every problem is also an error in `nc_diags` at the NC block concerned. Returns
+// true when the program cuts the plan.
+bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, const Machine& m,
+                 const VerifyOptions& options, Diagnostics& nc_diags, VerifyReport& report);
+
+// The report as text for standard output: one line per thread, then the verdict.
+std::string verify_report_text(const VerifyReport& report, const std::vector<ThreadPlan>& plans,
+                               const std::string& program_name, const Machine& m,
+                               const VerifyOptions& options);
+
+}  // namespace clpost
