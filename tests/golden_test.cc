@@ -89,6 +89,27 @@ TEST(Golden, EverySamplePostsAsReviewedOnEveryMachine) {
   fs::remove_all(dir);
 }
 
+// Every reviewed program, read back through its control's laws (clpost verify), cuts exactly
+// the plan of its sample: every thread, every pass.
+TEST(Golden, EveryGoldenVerifiesAgainstItsSample) {
+  int verified = 0;
+  for (const ShippedMachine& m : shipped_machines()) {
+    for (const Case& c : golden_cases(m.name)) {
+      fs::path golden =
+          fs::path(source_dir()) / "samples/golden" / m.name / (c.golden_name + m.ext);
+      RunResult r = run(quote(clpost_bin()) + " verify -m " + m.name + " " +
+                        quote(golden.string()) + " --cl " + quote(c.cl.string()));
+      EXPECT_EQ(r.exit_code, 0) << golden << "\n" << r.out << r.err;
+      EXPECT_NE(r.out.find("\nok: every pass is cut as planned, within "), std::string::npos)
+          << golden << "\n"
+          << r.out;
+      EXPECT_EQ(r.err, "") << golden;
+      ++verified;
+    }
+  }
+  EXPECT_GE(verified, 7 * 11 + 6);
+}
+
 // No golden without its sample: a renamed sample must not leave a stale reviewed file behind.
 TEST(Golden, EveryGoldenHasItsSample) {
   for (const ShippedMachine& m : shipped_machines()) {

@@ -59,7 +59,8 @@ VerifyOutcome verify_files(const std::string& program, const std::string& cl, co
   reader::LineSource src(f);
   VerifyOutcome out =
       verify_program(src, display_name(program), plans, display_name(cl), m, tolerance);
-  out.diagnostics = posted.diagnostics + out.diagnostics;
+  // The CL file's own notes and warnings were shown when it was posted; verify is about the
+  // program.
   if (f != stdin) std::fclose(f);
   return out;
 }

@@ -103,15 +103,14 @@ struct Lexer {
     const size_t start = i;
     size_t j = i;
     while (j < s.size() && is_letter(s[j])) ++j;
-    // A call: an identifier (letters, then letters or digits) and '('.
+    // A call: an identifier of two letters or more, then letters or digits, then '(' at once
+    // ("CYCLE99(" — "X1 (" and "X1(" are a word and a comment).
     size_t k = j;
     while (k < s.size() && (is_letter(s[k]) || is_digit(s[k]))) ++k;
-    size_t p = k;
-    while (p < s.size() && is_blank(s[p])) ++p;
-    if (p < s.size() && s[p] == '(' && k > j) {
+    if (j - start >= 2 && k < s.size() && s[k] == '(') {
       std::string name;
       for (size_t q = start; q < k; ++q) name += upper(s[q]);
-      i = p;
+      i = k;
       return call(start, std::move(name));
     }
     NcWord w;
@@ -148,14 +147,14 @@ struct Lexer {
     const size_t start = i;
     i += open.size();
     if (syn.comment_close.empty()) {
-      b.comments.emplace_back(s.substr(i));
+      b.comments.emplace_back(trim(s.substr(i)));
       i = s.size();
       return true;
     }
     size_t close = s.find(syn.comment_close, i);
     if (close == std::string_view::npos)
       return fail(start, fmt::format("comment has no closing '{}'", syn.comment_close));
-    b.comments.emplace_back(s.substr(i, close - i));
+    b.comments.emplace_back(trim(s.substr(i, close - i)));
     i = close + syn.comment_close.size();
     return true;
   }
@@ -184,6 +183,9 @@ struct Lexer {
       const char c = s[i];
       if (!open.empty() && s.substr(i, open.size()) == open) {
         if (!comment(syn, open)) return false;
+      } else if (c == '(' && open != "(") {
+        // An ISO comment in another dialect (INSERT text passed through): read as a comment.
+        if (!comment(NcSyntax{syn.block_address, "(", ")"}, "(")) return false;
       } else if (c == ';') {
         b.comments.emplace_back(trim(s.substr(i + 1)));
         return true;

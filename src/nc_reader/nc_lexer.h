@@ -1,8 +1,9 @@
 #pragma once
 // Reads one line of an NC program in a machine's dialect into an NcBlock: the block number
-// (block_numbers.address), comments (comments.open / close, and `;` to the end of the line),
-// words (an address of one or more letters, an optional '=', a number: "X-20.", "IC3", "SF=180",
-// "G0X20Z5" unspaced too), bare words ("DIAMON", "MACHINING") and calls ("CYCLE99(0, 24, ...)").
+// (block_numbers.address), comments (comments.open / close, ISO `( )` too, `;` to the end of the
+// line), words (an address of one or more letters, an optional '=', a number: "X-20.", "IC3",
+// "SF=180", "G0X20Z5" unspaced too), bare words ("DIAMON", "MACHINING") and calls
+// ("CYCLE99(0, 24, ...)").
 #include <string>
 #include <string_view>
 

@@ -1,0 +1,142 @@
+// clpost verify and --verify on whole programs: a reviewed golden with one depth word edited or
+// one pass dropped must fail, naming the thread, the pass and the numbers; posting with --verify
+// writes nothing when the program does not cut the plan. (Every golden verifying as written:
+// golden_test.cc; every machine on generated cases: conformance_test.cc.)
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace clpost::test {
+namespace {
+
+const std::string kOptions = "samples/threads/options.apt";
+
+// The golden of `machine` for the options sample with `from` replaced by `to` (once), verified.
+RunResult verify_edited(const std::string& machine, const std::string& golden,
+                        const std::string& from, const std::string& to, std::string& path) {
+  std::string text = read_file(source_dir() + "/samples/golden/" + machine + "/" + golden);
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from << " not in " << golden;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  path = temp_dir() + "/" + golden;
+  write_file(path, text);
+  return run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " + machine +
+             " " + quote(path) + " --cl " + kOptions);
+}
+
+// The first diagnostic's first line.
+std::string first_error(const RunResult& r) {
+  return r.err.substr(0, r.err.find('\n'));
+}
+
+TEST(Verify, FanucG76HeightWordEdited) {
+  std::string p;
+  RunResult r = verify_edited("fanuc-0i-t", "threads-options.nc", "P920 Q376", "P900 Q376", p);
+  EXPECT_EQ(r.exit_code, 1);
+  // Height 0.900 instead of 0.920: the first pass sits 0.02 higher, at X15.208 (radius 7.604)
+  // where the plan cuts 0.3756 deep (radius 7.6244).
+  EXPECT_EQ(first_error(r), p + ":22:1: error: thread at " + kOptions +
+                                ":19: pass 1: depth 0.3960, plan 0.3756 (tolerance 0.005)");
+  EXPECT_NE(r.out.find("\nFAILED: 6 differences beyond 0.005 mm\n"), std::string::npos) << r.out;
+}
+
+TEST(Verify, FanucG92PassDropped) {
+  std::string p;
+  RunResult r = verify_edited("fanuc-0i-t", "threads-options.nc", "N110 X14.896\n", "", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), p + ":12:1: error: thread at " + kOptions +
+                                ":12: pass 2 (depth 0.5520, from X14.8960 Z2.0000) is not cut by "
+                                "the program");
+  EXPECT_NE(r.out.find("39 passes planned, 38 cut\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nFAILED: 1 difference beyond 0.005 mm\n"), std::string::npos) << r.out;
+}
+
+TEST(Verify, Cycle99DepthArgumentEdited) {
+  std::string p;
+  RunResult r = verify_edited("sinumerik-840d", "threads-options.mpf",
+                              "CYCLE99(2, 16, -20, 16, 0, 0, 0.92, 0, 30, 0, 6,",
+                              "CYCLE99(2, 16, -20, 16, 0, 0, 0.9, 0, 30, 0, 6,", p);
+  EXPECT_EQ(r.exit_code, 1);
+  // Constant cross-section: pass 1 at TDEP root(1/6) = 0.9 x 0.40825 = 0.3674.
+  EXPECT_EQ(first_error(r), p + ":38:1: error: thread at " + kOptions +
+                                ":19: pass 1: depth 0.3674, plan 0.3756 (tolerance 0.001)");
+}
+
+TEST(Verify, LinuxcncG76DepthWordEdited) {
+  std::string p;
+  RunResult r = verify_edited("linuxcnc-lathe", "threads-options.ngc",
+                              "G76 P1.5 Z-20. I-2.59808 J0.751177 K1.84 R2 Q30. H0",
+                              "G76 P1.5 Z-20. I-2.59808 J0.751177 K1.8 R2 Q30. H0", p);
+  EXPECT_EQ(r.exit_code, 1);
+  // K (a diameter in G7) 1.8: the full depth is 0.9, and the passes end K tan 30 = 0.0115 earlier.
+  EXPECT_NE(r.err.find(p + ":40:1: error: thread at " + kOptions +
+                       ":19: pass 6: depth 0.9000, plan 0.9200 (tolerance 1e-05)\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(first_error(r), p + ":40:1: error: thread at " + kOptions +
+                                ":19: pass 1: ends at X15.2488 Z-19.6972, plan X15.2488 "
+                                "Z-19.6857 (tolerance 1e-05)");
+}
+
+TEST(Verify, HeidenhainG31DepthWordEdited) {
+  std::string p;
+  RunResult r = verify_edited("heidenhain-pilot", "threads-options.nc", "G31 F1.5 U0.92 IC6",
+                              "G31 F1.5 U0.9 IC6", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), p + ":41:1: error: thread at " + kOptions +
+                                ":19: pass 1: depth 0.3674, plan 0.3756 (tolerance 0.001)");
+}
+
+TEST(Verify, HaasG76HeightWordEdited) {
+  std::string p;
+  RunResult r = verify_edited("haas-st", "threads-options.nc", "K0.92 D0.376", "K0.9 D0.376", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), p + ":21:1: error: thread at " + kOptions +
+                                ":19: pass 1: depth 0.3960, plan 0.3756 (tolerance 0.005)");
+}
+
+TEST(Verify, G33LoopInfeedEdited) {
+  std::string p;
+  RunResult r = verify_edited("nct-2000t", "threads-options.nc", "N150 G1 X14.896 F0.2",
+                              "N150 G1 X14.8 F0.2", p);
+  EXPECT_EQ(r.exit_code, 1);
+  // The G33 block cuts at the infeed's X: radius 7.4, 0.6 below the crest at radius 8.
+  EXPECT_EQ(first_error(r), p + ":18:1: error: thread at " + kOptions +
+                                ":12: pass 2: depth 0.6000, plan 0.5520 (tolerance 0.001)");
+}
+
+TEST(Verify, ProgramThatIsNotNc) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/p.nc", "G0 X10 Z5\nG1 X1.2.3\n");
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m generic-lathe " + quote(dir + "/p.nc") + " --cl " + kOptions);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, dir + "/p.nc:2:4: error: invalid number 'X1.2.3'\n  G1 X1.2.3\n     ^\n");
+}
+
+TEST(Verify, PostWithVerifyWritesTheProgramWhenItCutsThePlan) {
+  const std::string out = temp_dir() + "/options.nc";
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " -m haas-st --verify -o " + quote(out) + " " + kOptions);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_file(out), read_file(source_dir() + "/samples/golden/haas-st/threads-options.nc"));
+  EXPECT_NE(r.err.find("7 threads, 39 passes planned, 39 cut\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\nok: every pass is cut as planned, within 0.005 mm\n"), std::string::npos)
+      << r.err;
+}
+
+TEST(Verify, PostWithVerifyWritesNothingWhenTheMachineRoundsThePassesAway) {
+  // X to 0.1 mm on a diameter: the last pass of the OPTION 4 thread lands at X14.2, 0.02 short.
+  const std::string out = temp_dir() + "/options.nc";
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " -m generic-lathe --set formats.X.decimals=1 --verify -o " + quote(out) + " " +
+                    kOptions);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(file_exists(out));
+  EXPECT_NE(r.err.find(":54: pass 4: depth 0.9000, plan 0.9200 (tolerance 0.001)\n"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace clpost::test
