@@ -35,7 +35,7 @@ struct Toolpath {
 
 // One thread's passes seen in its cross-section: where the tool's V sits at each pass.
 struct SectionPass {
-  int n = 0;         // 1-based pass number, in cutting order
+  int n = 0;         // 1-based pass number (the depth ladder index: starts share it)
   int start = 0;     // start index, 0-based
   double depth = 0;  // cumulative depth below the thread surface
   double shift = 0;  // flank shift along the cutting direction (sigma)

@@ -1,0 +1,329 @@
+#include "plot/backplot_svg.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "plot/move_geometry.h"
+#include "plot/nice_step.h"
+#include "plot/svg_writer.h"
+#include "plot/thread_section_svg.h"
+
+namespace clpost {
+namespace {
+
+constexpr double kWidth = 1200;
+constexpr double kLeft = 78;  // room for the X tick numbers
+constexpr double kRight = 28;
+constexpr double kTop = 112;  // title, summary and legend
+constexpr double kMaxPlotH = 640;
+constexpr double kMinPlotH = 160;
+constexpr double kBelow = 56;  // Z tick numbers and axis title
+
+// Drawing class of a move; arcs in either direction share one.
+enum class Stroke : uint8_t { kRapid, kFeed, kArc, kThread };
+constexpr std::array<const char*, 4> kClass = {"rapid", "feed", "arc", "thread"};
+
+Stroke stroke_of(MoveKind k) {
+  switch (k) {
+    case MoveKind::kRapid:
+      return Stroke::kRapid;
+    case MoveKind::kFeed:
+      return Stroke::kFeed;
+    case MoveKind::kArcCw:
+    case MoveKind::kArcCcw:
+      return Stroke::kArc;
+    case MoveKind::kThread:
+      return Stroke::kThread;
+  }
+  return Stroke::kFeed;
+}
+
+// Model (Z, X) to page: equal scale, X up.
+struct Frame {
+  double ox = kLeft, oy = kTop;  // top-left of the plot
+  double w = 0, h = 0;
+  double k = 1;  // px per unit
+  double z_lo = 0, z_hi = 1, x_lo = 0, x_hi = 1;
+  double px(double z) const { return ox + (z - z_lo) * k; }
+  double py(double x) const { return oy + h - (x - x_lo) * k; }
+};
+
+Frame frame_of(const Bounds& b) {
+  Frame f;
+  double z_lo = b.empty ? 0 : b.z_lo, z_hi = b.empty ? 10 : b.z_hi;
+  double x_lo = b.empty ? 0 : b.x_lo, x_hi = b.empty ? 10 : b.x_hi;
+  // Show the spindle axis when the part is nearer to it than it is tall.
+  if (x_lo > 0 && x_lo <= x_hi - x_lo) x_lo = 0;
+  double span = std::max(z_hi - z_lo, x_hi - x_lo);
+  if (!(span > 0)) span = 1;
+  const double pad = span * 0.05;
+  z_lo -= pad;
+  z_hi += pad;
+  x_lo -= pad;
+  x_hi += pad;
+  const double max_w = kWidth - kLeft - kRight;
+  f.k = std::min(max_w / (z_hi - z_lo), kMaxPlotH / (x_hi - x_lo));
+  // A flat picture gets more room above and below, never a second scale.
+  const double min_x = kMinPlotH / f.k;
+  if (x_hi - x_lo < min_x) {
+    const double more = (min_x - (x_hi - x_lo)) / 2;
+    x_lo -= more;
+    x_hi += more;
+  }
+  f.z_lo = z_lo;
+  f.z_hi = z_hi;
+  f.x_lo = x_lo;
+  f.x_hi = x_hi;
+  f.w = (z_hi - z_lo) * f.k;
+  f.h = (x_hi - x_lo) * f.k;
+  f.ox = kLeft + (max_w - f.w) / 2;
+  return f;
+}
+
+void draw_style(SvgWriter& w) {
+  w.text("style", {},
+         ".rapid{fill:none;stroke:#8c8c8c;stroke-width:1;stroke-dasharray:6 4}"
+         ".feed{fill:none;stroke:#1f5fbf;stroke-width:1.6;stroke-linejoin:round}"
+         ".arc{fill:none;stroke:#13948f;stroke-width:1.6}"
+         ".thread{fill:none;stroke:#f07800;stroke-width:3.6;stroke-linecap:round;"
+         "stroke-linejoin:round}"
+         ".grid{stroke:#e3e6ea;stroke-width:1}"
+         ".tick{font-size:12px;fill:#444444}");
+}
+
+void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
+  // One step on both axes (one scale), at most about 12 ticks and numbers at least 56 px apart;
+  // a flat plot gets finer X ticks, still at least 24 px apart.
+  const double step_z =
+      nice_step(std::max({(f.z_hi - f.z_lo) / 12, (f.x_hi - f.x_lo) / 12, 56 / f.k}));
+  const double step_x = std::min(step_z, nice_step(std::max((f.x_hi - f.x_lo) / 4, 24 / f.k)));
+  w.open("g", {{"class", "grid-lines"}});
+  SvgPath grid;
+  for (double z = std::ceil(f.z_lo / step_z) * step_z; z <= f.z_hi; z += step_z) {
+    grid.move_to(f.px(z), f.oy);
+    grid.line_to(f.px(z), f.oy + f.h);
+  }
+  for (double x = std::ceil(f.x_lo / step_x) * step_x; x <= f.x_hi; x += step_x) {
+    grid.move_to(f.ox, f.py(x));
+    grid.line_to(f.ox + f.w, f.py(x));
+  }
+  w.empty("path", {{"class", "grid"}, {"d", grid.data()}});
+  for (double z = std::ceil(f.z_lo / step_z) * step_z; z <= f.z_hi; z += step_z)
+    w.text("text",
+           {{"class", "tick"},
+            {"x", svg_num(f.px(z))},
+            {"y", svg_num(f.oy + f.h + 17)},
+            {"text-anchor", "middle"}},
+           svg_num(std::fabs(z) < step_z * 1e-6 ? 0 : z, 6));
+  for (double x = std::ceil(f.x_lo / step_x) * step_x; x <= f.x_hi; x += step_x)
+    w.text("text",
+           {{"class", "tick"},
+            {"x", svg_num(f.ox - 7)},
+            {"y", svg_num(f.py(x) + 4)},
+            {"text-anchor", "end"}},
+           svg_num(std::fabs(x) < step_x * 1e-6 ? 0 : x, 6));
+  w.close();
+  w.empty("rect", {{"x", svg_num(f.ox)},
+                   {"y", svg_num(f.oy)},
+                   {"width", svg_num(f.w)},
+                   {"height", svg_num(f.h)},
+                   {"fill", "none"},
+                   {"stroke", "#9aa0a6"}});
+  w.text("text",
+         {{"x", svg_num(f.ox + f.w)},
+          {"y", svg_num(f.oy + f.h + 38)},
+          {"font-size", "13"},
+          {"text-anchor", "end"},
+          {"fill", "#333333"}},
+         fmt::format("Z ({}) \u2192", unit));
+  w.text("text",
+         {{"x", svg_num(f.ox)}, {"y", svg_num(f.oy - 8)}, {"font-size", "13"}, {"fill", "#333333"}},
+         fmt::format("\u2191 X radius ({})", unit));
+  if (f.x_lo < 0 && f.x_hi > 0) {
+    w.empty("line", {{"class", "axis"},
+                     {"x1", svg_num(f.ox)},
+                     {"y1", svg_num(f.py(0))},
+                     {"x2", svg_num(f.ox + f.w)},
+                     {"y2", svg_num(f.py(0))},
+                     {"stroke", "#555555"},
+                     {"stroke-width", "1"},
+                     {"stroke-dasharray", "14 3 3 3"}});
+    w.text("text",
+           {{"x", svg_num(f.ox + 6)},
+            {"y", svg_num(f.py(0) - 5)},
+            {"font-size", "11"},
+            {"fill", "#555555"}},
+           "spindle axis");
+  }
+}
+
+struct Totals {
+  std::array<size_t, 4> moves{};
+  std::array<double, 4> length{};
+};
+
+// The moves as one <path> per run of one drawing class.
+Totals draw_moves(SvgWriter& w, const Toolpath& tp, const Frame& f) {
+  Totals t;
+  SvgPath path;
+  Stroke run = Stroke::kRapid;
+  auto flush = [&] {
+    if (path.segments() > 0)
+      w.empty("path", {{"class", kClass[static_cast<size_t>(run)]}, {"d", path.data()}});
+    path = SvgPath();
+  };
+  w.open("g", {{"class", "moves"}});
+  for (const Move& m : tp.moves) {
+    if (!finite_move(m)) continue;
+    const Stroke s = stroke_of(m.kind);
+    if (s != run) {
+      flush();
+      run = s;
+    }
+    const size_t i = static_cast<size_t>(s);
+    ++t.moves[i];
+    const double x0 = f.px(m.from.z), y0 = f.py(m.from.x);
+    const double x1 = f.px(m.to.z), y1 = f.py(m.to.x);
+    if (!path.at(x0, y0)) path.move_to(x0, y0);
+    if (s != Stroke::kArc) {
+      t.length[i] += std::hypot(m.to.x - m.from.x, m.to.z - m.from.z);
+      path.line_to(x1, y1);
+      continue;
+    }
+    const ArcSweep a = arc_sweep(m);
+    if (a.radius <= 0 || a.sweep == 0) {
+      t.length[i] += std::hypot(m.to.x - m.from.x, m.to.z - m.from.z);
+      path.line_to(x1, y1);
+      continue;
+    }
+    t.length[i] += a.radius * std::fabs(a.sweep);
+    const double r = a.radius * f.k;
+    const bool cw = a.sweep < 0;  // clockwise on the page too (X up, Z right): SVG sweep 1
+    if (std::fabs(a.sweep) > std::numbers::pi * 1.999) {
+      const Vec2 mid = arc_point(m.center, a.radius, a.start + a.sweep / 2);
+      path.arc_to(r, false, cw, f.px(mid.z), f.py(mid.x));
+    }
+    path.arc_to(
+        r, std::fabs(a.sweep) > std::numbers::pi && std::fabs(a.sweep) <= std::numbers::pi * 1.999,
+        cw, x1, y1);
+  }
+  flush();
+  w.close();
+  return t;
+}
+
+void draw_start(SvgWriter& w, const Toolpath& tp, const Frame& f) {
+  const auto first = std::find_if(tp.moves.begin(), tp.moves.end(), finite_move);
+  if (first == tp.moves.end()) {
+    w.text("text",
+           {{"x", svg_num(f.ox + f.w / 2)},
+            {"y", svg_num(f.oy + f.h / 2)},
+            {"font-size", "18"},
+            {"text-anchor", "middle"},
+            {"fill", "#888888"}},
+           "no moves");
+    return;
+  }
+  w.empty("circle", {{"class", "start"},
+                     {"cx", svg_num(f.px(first->from.z))},
+                     {"cy", svg_num(f.py(first->from.x))},
+                     {"r", "5"},
+                     {"fill", "#2ca02c"},
+                     {"stroke", "#ffffff"},
+                     {"stroke-width", "1.5"}});
+}
+
+void draw_legend(SvgWriter& w, double y) {
+  double x = kLeft;
+  w.open("g", {{"class", "legend"}});
+  for (size_t i = 0; i < kClass.size(); ++i) {
+    w.empty("line", {{"class", kClass[i]},
+                     {"x1", svg_num(x)},
+                     {"y1", svg_num(y)},
+                     {"x2", svg_num(x + 34)},
+                     {"y2", svg_num(y)}});
+    static constexpr std::array<const char*, 4> kNames = {"rapid", "feed", "arc (G2/G3)",
+                                                          "thread (synchronized)"};
+    w.text("text", {{"x", svg_num(x + 40)}, {"y", svg_num(y + 4)}, {"font-size", "13"}}, kNames[i]);
+    x += 40 + 7.5 * static_cast<double>(std::string_view(kNames[i]).size()) + 26;
+  }
+  w.empty("circle", {{"cx", svg_num(x + 6)}, {"cy", svg_num(y)}, {"r", "5"}, {"fill", "#2ca02c"}});
+  w.text("text", {{"x", svg_num(x + 16)}, {"y", svg_num(y + 4)}, {"font-size", "13"}}, "start");
+  w.close();
+}
+
+std::string summary(const Totals& t, size_t total, const char* unit) {
+  std::string s = fmt::format("{} move{}", total, total == 1 ? "" : "s");
+  static constexpr std::array<const char*, 4> kWords = {"rapid", "feed", "arc", "thread"};
+  const char* sep = ": ";
+  for (size_t i = 0; i < 4; ++i) {
+    if (t.moves[i] == 0) continue;
+    s += fmt::format("{}{} {} ({} {})", sep, t.moves[i], kWords[i], svg_num(t.length[i], 1), unit);
+    sep = ", ";
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
+                         std::string_view title) {
+  const char* unit = tp.units == LengthUnit::kInch ? "in" : "mm";
+  Frame f = frame_of(toolpath_bounds(tp));
+  double height = f.oy + f.h + kBelow;
+  // Section insets under the plot, scaled to the width.
+  struct Inset {
+    const ThreadSection* s;
+    SvgSize size;
+    double scale, y;
+  };
+  std::vector<Inset> insets;
+  if (sections != nullptr) {
+    for (const ThreadSection& s : *sections) {
+      const SvgSize size = thread_section_size(s);
+      const double scale = std::min(1.0, (kWidth - 32) / size.width);
+      insets.push_back({&s, size, scale, height + 12});
+      height += 12 + size.height * scale;
+    }
+  }
+  SvgWriter w(kWidth, height);
+  draw_style(w);
+  w.empty("rect", {{"width", svg_num(kWidth)}, {"height", svg_num(height)}, {"fill", "#ffffff"}});
+  w.text(
+      "text",
+      {{"class", "title"}, {"x", "16"}, {"y", "30"}, {"font-size", "20"}, {"font-weight", "bold"}},
+      title.empty() ? std::string_view("Backplot") : title);
+  draw_grid(w, f, unit);
+  const Totals t = draw_moves(w, tp, f);
+  draw_start(w, tp, f);
+  size_t drawn = 0;
+  for (size_t n : t.moves) drawn += n;
+  w.text("text",
+         {{"class", "summary"}, {"x", "16"}, {"y", "54"}, {"font-size", "13"}, {"fill", "#444444"}},
+         summary(t, drawn, unit));
+  draw_legend(w, 78);
+  for (size_t i = 0; i < insets.size(); ++i) {
+    const Inset& in = insets[i];
+    w.empty("line", {{"x1", "16"},
+                     {"y1", svg_num(in.y - 6)},
+                     {"x2", svg_num(kWidth - 16)},
+                     {"y2", svg_num(in.y - 6)},
+                     {"stroke", "#cccccc"}});
+    w.open("svg", {{"x", "16"},
+                   {"y", svg_num(in.y)},
+                   {"width", svg_num(in.size.width * in.scale)},
+                   {"height", svg_num(in.size.height * in.scale)},
+                   {"viewBox",
+                    fmt::format("0 0 {} {}", svg_num(in.size.width), svg_num(in.size.height))}});
+    draw_thread_section(w, *in.s, fmt::format("s{}-", i + 1));
+    w.close();
+  }
+  return w.finish();
+}
+
+}  // namespace clpost

@@ -1,0 +1,31 @@
+#pragma once
+// A program's whole motion drawn in the XZ plane (a backplot), as the control would move the
+// tool: rapids dashed, feeds solid, arcs as arcs, synchronized thread cuts bold.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simulator/toolpath.h"
+
+namespace clpost {
+
+// A standalone SVG document 1200 px wide:
+//  - Z horizontal (+Z to the right), X (the radius) upward, one scale for both, fitted to the
+//    moves (arcs included) with a margin; the spindle axis (X 0) is shown when the part is
+//    closer to it than it is tall;
+//  - a grid with numbered ticks (1, 2, 5 x 10^k) and axis titles in the toolpath's units;
+//  - consecutive moves of one kind merged into one <path> (subpaths where they do not join):
+//    class="rapid" (thin, dashed, grey), "feed" (solid, blue), "arc" (kArcCw / kArcCcw as SVG
+//    arcs, clockwise = G2 with Z right and X up; teal), "thread" (kThread; bold, orange), so a
+//    100k-move program stays a few thousand elements; moves with non-finite coordinates are
+//    skipped;
+//  - a circle where the motion starts, a legend and a line of move counts and path lengths;
+//  - `title` (escaped) at the top; empty: "Backplot";
+//  - when `sections` is given and not empty, each thread's section picture
+//    (thread_section_svg.h) under the plot, scaled to the width.
+// An empty toolpath gives a valid document with an empty grid and the words "no moves".
+std::string backplot_svg(const Toolpath& toolpath,
+                         const std::vector<ThreadSection>* sections = nullptr,
+                         std::string_view title = {});
+
+}  // namespace clpost

@@ -1,0 +1,143 @@
+// A plan made into a section, and the section's geometry (tips and the cut profile).
+#include "plot/thread_section.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "plot/thread_profile.h"
+
+namespace clpost {
+namespace {
+
+// A 2-start plan as the planner makes it: ladder passes 1..2 for both starts (ICAM order), then a
+// finish pass; the start's pass number repeats.
+ThreadPlan two_start_plan() {
+  ThreadPlan p;
+  p.loc = {12, 1};
+  p.form = ThreadForm::kMulti;
+  p.side = ThreadSide::kInternal;
+  p.units = LengthUnit::kInch;
+  p.pitch.pitch = 0.0625;
+  p.pitch.starts = 2;
+  p.lead = 0.125;
+  p.depth = 0.04;
+  p.option = 1;
+  p.tool_angle = 55;
+  const double depth[] = {0.02, 0.02, 0.035, 0.035, 0.04, 0.04};
+  for (int i = 0; i < 6; ++i) {
+    ThreadPass t;
+    t.n = i / 2 + 1;
+    t.start = i % 2;
+    t.depth = depth[i];
+    t.shift = depth[i] * std::tan(27.5 * M_PI / 180);
+    t.kind = i >= 4 ? PassKind::kFinish : PassKind::kRough;
+    t.from = {1, 2};
+    p.passes.push_back(t);
+  }
+  return p;
+}
+
+TEST(SectionFromPlan, CopiesThreadAndPassesInCuttingOrder) {
+  const ThreadSection s = section_from_plan(two_start_plan(), "my thread");
+  EXPECT_EQ(s.title, "my thread");
+  EXPECT_EQ(s.units, LengthUnit::kInch);
+  EXPECT_EQ(s.side, ThreadSide::kInternal);
+  EXPECT_DOUBLE_EQ(s.pitch, 0.0625);
+  EXPECT_DOUBLE_EQ(s.lead, 0.125);
+  EXPECT_EQ(s.starts, 2);
+  EXPECT_DOUBLE_EQ(s.depth, 0.04);
+  EXPECT_DOUBLE_EQ(s.tool_angle, 55);
+  ASSERT_EQ(s.passes.size(), 6u);
+  const int n[] = {1, 1, 2, 2, 3, 3};
+  for (size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(s.passes[i].n, n[i]) << i;
+    EXPECT_EQ(s.passes[i].start, static_cast<int>(i % 2)) << i;
+  }
+  EXPECT_DOUBLE_EQ(s.passes[2].depth, 0.035);
+  EXPECT_NEAR(s.passes[2].shift, 0.035 * 0.520567, 1e-6);  // tan 27.5 deg = 0.520567
+  EXPECT_EQ(s.passes[3].kind, PassKind::kRough);
+  EXPECT_EQ(s.passes[4].kind, PassKind::kFinish);
+}
+
+TEST(SectionFromPlan, DefaultTitle) {
+  EXPECT_EQ(section_from_plan(two_start_plan(), "").title,
+            "thread at line 12 - pitch 0.0625, depth 0.04, OPTION 1");
+  ThreadPlan coupled;
+  coupled.form = ThreadForm::kCouple;
+  coupled.loc = {7, 1};
+  coupled.pitch.pitch = 2;
+  const ThreadSection s = section_from_plan(coupled, "");
+  EXPECT_EQ(s.title, "thread at line 7 - pitch 2, depth 0");
+  EXPECT_TRUE(s.passes.empty());
+}
+
+// The depth of the profile at u, interpolated between its points.
+double profile_at(const std::vector<SectionPoint>& prof, double u) {
+  for (size_t i = 1; i < prof.size(); ++i)
+    if (prof[i].u >= u) {
+      const double t = (u - prof[i - 1].u) / (prof[i].u - prof[i - 1].u);
+      return prof[i - 1].d + t * (prof[i].d - prof[i - 1].d);
+    }
+  return std::nan("");
+}
+
+TEST(CutProfile, OneSixtyDegreeV) {
+  ThreadSection s;
+  s.pitch = 1.5;
+  s.lead = 1.5;
+  s.depth = 0.9;
+  s.passes.push_back({1, 0, 0.9, 0, PassKind::kFinish});
+  const std::vector<SectionPoint> prof = cut_profile(s, -1.5, 1.5);
+  ASSERT_GE(prof.size(), 3u);
+  EXPECT_DOUBLE_EQ(prof.front().u, -1.5);
+  EXPECT_DOUBLE_EQ(prof.back().u, 1.5);
+  EXPECT_NEAR(profile_at(prof, 0), 0.9, 1e-9);
+  EXPECT_NEAR(profile_at(prof, 0.3), 0.9 - 0.3 / std::tan(M_PI / 6), 1e-9);  // 0.380385
+  EXPECT_NEAR(profile_at(prof, 0.6), 0, 1e-9);    // past the V's edge at 0.9 tan 30 = 0.5196
+  EXPECT_NEAR(profile_at(prof, 1.5), 0.9, 1e-9);  // the next turn, one lead on
+  EXPECT_NEAR(profile_at(prof, -1.2), 0.9 - 0.3 / std::tan(M_PI / 6), 1e-9);
+  // Straight stretches are not sampled: crest, flank, flank, crest ... about a dozen points.
+  EXPECT_LE(prof.size(), 16u);
+}
+
+TEST(CutProfile, FlankInfeedEnvelope) {
+  // Two passes walking down the left flank (shift = depth tan 30): the left flanks coincide, the
+  // groove is the deeper V.
+  ThreadSection s;
+  s.pitch = 2;
+  const double k = std::tan(M_PI / 6);
+  s.passes.push_back({1, 0, 0.5, 0.5 * k, PassKind::kRough});
+  s.passes.push_back({2, 0, 1.0, 1.0 * k, PassKind::kFinish});
+  const std::vector<SectionPoint> prof = cut_profile(s, -1, 3);
+  EXPECT_NEAR(profile_at(prof, 0), 0, 1e-9);          // left flank leaves the surface at u = 0
+  EXPECT_NEAR(profile_at(prof, k), 1.0, 1e-9);        // deepest tip
+  EXPECT_NEAR(profile_at(prof, 0.5 * k), 0.5, 1e-9);  // on the common flank, at pass 1's tip
+  EXPECT_NEAR(profile_at(prof, 1.5 * k), 0.5, 1e-9);  // right flank of the deep V
+  EXPECT_NEAR(profile_at(prof, 1.5), 0, 1e-9);        // crest between the turns
+}
+
+TEST(SectionGeometry, GroovesOnePitchApartAndFallbacks) {
+  ThreadSection s;
+  s.pitch = 1.5;
+  s.starts = 2;
+  s.depth = 0.92;
+  const SectionPoint t = pass_tip(s, {1, 1, 0.4, 0.1, PassKind::kRough});
+  EXPECT_DOUBLE_EQ(t.u, 1.6);
+  EXPECT_DOUBLE_EQ(t.d, 0.4);
+  EXPECT_EQ(groove_count(s), 2);
+  // No passes: the nominal V at depth D in each groove.
+  const std::vector<SectionPoint> tips = cutting_tips(s);
+  ASSERT_EQ(tips.size(), 2u);
+  EXPECT_DOUBLE_EQ(tips[1].u, 1.5);
+  EXPECT_DOUBLE_EQ(tips[1].d, 0.92);
+  s.pitch = 0;
+  s.lead = 3;
+  EXPECT_DOUBLE_EQ(groove_pitch(s), 1.5);  // lead / starts
+  s.tool_angle = std::nan("");
+  EXPECT_NEAR(half_angle_tan(s), std::tan(M_PI / 6), 1e-12);
+}
+
+}  // namespace
+}  // namespace clpost
