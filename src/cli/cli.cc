@@ -17,6 +17,7 @@
 #include "cli/batch.h"
 #include "cli/batch_report.h"
 #include "cli/data_dirs.h"
+#include "cli/plot_command.h"
 #include "cli/post_file.h"
 #include "cli/verify_command.h"
 #include "emitters/emitter.h"
@@ -55,6 +56,8 @@ constexpr const char* kFooter = R"(Examples:
   clpost machines                         list the shipped machines
   clpost -m fanuc-0i-t --verify -o part.nc part.cl     post, then check the program cuts the plan
   clpost verify -m fanuc-0i-t part.nc --cl part.cl     check a program (edited by hand?)
+  clpost plot -o part.svg part.cl         backplot and every thread's cross-section, as SVG
+  clpost plot -m fanuc-0i-t --cl part.cl --thread 2 -o t2.svg part.nc   a program's passes
 
 Exit status: 0 ok, 1 errors in the input, 2 usage or machine-file errors.
 A batch (-d) exits 1 when any file failed, 2 when it could not start (duplicate output names,
@@ -230,6 +233,21 @@ int run_cli(int argc, char** argv) {
                    "threading.tolerance, else one least increment of Z)")
       ->check(CLI::PositiveNumber);
 
+  CLI::App* plot = app.add_subcommand(
+      "plot", "SVG pictures: the backplot of a program and the cross-section of every thread");
+  MachineOpts plot_opts;
+  PlotRequest plot_req;
+  plot_req.output = "-";
+  add_machine_opts(*plot, plot_opts);
+  plot->add_option("input", plot_req.input,
+                   "A CL file (its plan, posted on the machine) or an NC program")
+      ->required();
+  plot->add_option("--cl", plot_req.cl,
+                   "With an NC program: the CL file of its plan (for the thread sections)");
+  plot->add_option("-o,--output", plot_req.output, "SVG file (default: standard output)");
+  plot->add_option("--thread", plot_req.thread, "Only thread N's cross-section (1 = the first)")
+      ->check(CLI::PositiveNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -262,6 +280,15 @@ int run_cli(int argc, char** argv) {
     print_out(v.report);
     print_err(v.diagnostics);
     return v.ok ? kExitOk : kExitInput;
+  }
+
+  if (*plot) {
+    Machine m;
+    if (!load(plot_opts, m)) return kExitUsage;
+    plot_req.machine = &m;
+    PlotOutcome r = plot_file(plot_req);
+    print_err(r.diagnostics);
+    return r.ok ? kExitOk : kExitInput;
   }
 
   if (*check) {

@@ -65,10 +65,11 @@ PostOutcome post_file(const PostRequest& req) {
     }
     sink = &file;
   }
-  std::string program;  // --verify: the program as written
+  std::string own_copy;  // --verify: the program as written
+  std::string& program = req.program != nullptr ? *req.program : own_copy;
   std::vector<ThreadPlan> plans;
   TeeSink tee(*sink, program);
-  if (req.verify) sink = &tee;
+  if (req.verify || req.program != nullptr) sink = &tee;
   {
     NcProgram prog(*req.machine, *sink);
     Interpreter interp(*req.machine, prog, diags, req.options);

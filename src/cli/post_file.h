@@ -19,7 +19,8 @@ struct PostRequest {
   // --verify: read the program back through the control simulation and compare it with the
   // plan (verify_command.h); a program that does not cut the plan is an error (no output).
   bool verify = false;
-  double verify_tolerance = 0;  // 0: the machine's
+  double verify_tolerance = 0;     // 0: the machine's
+  std::string* program = nullptr;  // when set, gets a copy of the program (clpost plot)
 };
 
 struct PostOutcome {

@@ -274,7 +274,26 @@ std::string summary(const Totals& t, size_t total, const char* unit) {
 std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
                          std::string_view title) {
   const char* unit = tp.units == LengthUnit::kInch ? "in" : "mm";
-  Frame f = frame_of(toolpath_bounds(tp));
+  // The frame fits the cutting moves and what is near them: a rapid to a far tool-change or
+  // home position would shrink the part to a few pixels, so it runs off the (clipped) frame.
+  Bounds b = toolpath_bounds(tp);
+  bool clipped = false;
+  if (const Bounds cut = toolpath_bounds(tp, false); !cut.empty) {
+    const double margin = 0.25 * std::max({cut.z_hi - cut.z_lo, cut.x_hi - cut.x_lo, 1e-9});
+    Bounds near = cut;
+    near.z_lo -= margin;
+    near.z_hi += margin;
+    near.x_lo -= margin;
+    near.x_hi += margin;
+    if (b.z_lo < near.z_lo || b.z_hi > near.z_hi || b.x_lo < near.x_lo || b.x_hi > near.x_hi) {
+      b.z_lo = std::max(b.z_lo, near.z_lo);
+      b.z_hi = std::min(b.z_hi, near.z_hi);
+      b.x_lo = std::max(b.x_lo, near.x_lo);
+      b.x_hi = std::min(b.x_hi, near.x_hi);
+      clipped = true;
+    }
+  }
+  Frame f = frame_of(b);
   double height = f.oy + f.h + kBelow;
   // Section insets under the plot, scaled to the width.
   struct Inset {
@@ -299,13 +318,22 @@ std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* s
       {{"class", "title"}, {"x", "16"}, {"y", "30"}, {"font-size", "20"}, {"font-weight", "bold"}},
       title.empty() ? std::string_view("Backplot") : title);
   draw_grid(w, f, unit);
+  w.open("clipPath", {{"id", "plot-clip"}});
+  w.empty("rect", {{"x", svg_num(f.ox)},
+                   {"y", svg_num(f.oy)},
+                   {"width", svg_num(f.w)},
+                   {"height", svg_num(f.h)}});
+  w.close();
+  w.open("g", {{"clip-path", "url(#plot-clip)"}});
   const Totals t = draw_moves(w, tp, f);
   draw_start(w, tp, f);
+  w.close();
   size_t drawn = 0;
   for (size_t n : t.moves) drawn += n;
   w.text("text",
          {{"class", "summary"}, {"x", "16"}, {"y", "54"}, {"font-size", "13"}, {"fill", "#444444"}},
-         summary(t, drawn, unit));
+         summary(t, drawn, unit) +
+             (clipped ? "; fitted to the cutting moves, far rapids run off the frame" : ""));
   draw_legend(w, 78);
   for (size_t i = 0; i < insets.size(); ++i) {
     const Inset& in = insets[i];

@@ -58,10 +58,10 @@ void Bounds::add(Vec2 p) {
   x_hi = std::max(x_hi, p.x);
 }
 
-Bounds toolpath_bounds(const Toolpath& tp) {
+Bounds toolpath_bounds(const Toolpath& tp, bool rapids) {
   Bounds b;
   for (const Move& m : tp.moves) {
-    if (!finite_move(m)) continue;
+    if (!finite_move(m) || (!rapids && m.kind == MoveKind::kRapid)) continue;
     b.add(m.from);
     b.add(m.to);
     if (!is_arc(m.kind)) continue;

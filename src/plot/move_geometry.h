@@ -30,7 +30,8 @@ struct Bounds {
 };
 
 // The box covering every finite move's end points, and for arcs their extreme points (where the
-// arc crosses the directions +-Z and +-X from its center).
-Bounds toolpath_bounds(const Toolpath& tp);
+// arc crosses the directions +-Z and +-X from its center). Without `rapids`, only the moves that
+// cut (feeds, arcs, threads).
+Bounds toolpath_bounds(const Toolpath& tp, bool rapids = true);
 
 }  // namespace clpost

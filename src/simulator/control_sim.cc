@@ -60,7 +60,8 @@ void State::error(uint32_t col, std::string message) {
 }
 
 void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
-  if (opt.keep_moves) {
+  // The first move starts where the tool happens to be: not drawn, not a cut's start.
+  if (opt.keep_moves && pos_known) {
     Move mv;
     mv.kind = kind;
     mv.from = pos;
@@ -71,6 +72,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     out.path.moves.push_back(mv);
   }
   pos = to;
+  pos_known = true;
 }
 
 void State::cycle_cuts(const std::vector<Cut>& cuts, Vec2 start, Vec2 after,

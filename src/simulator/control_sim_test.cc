@@ -49,12 +49,13 @@ TEST(ControlSim, G33WithAChainedPullOutIsOneCut) {
   EXPECT_DOUBLE_EQ(c.lead, 1.5);
   EXPECT_EQ(c.line, 5u);
   EXPECT_EQ(c.source, "G33");
-  // Moves: G0, G1, G33, G33, G0 (the tool starts at X0 Z0).
-  ASSERT_EQ(r.sim.path.moves.size(), 5u);
-  EXPECT_EQ(r.sim.path.moves[1].kind, MoveKind::kFeed);
-  EXPECT_EQ(r.sim.path.moves[3].kind, MoveKind::kThread);
-  EXPECT_NEAR(r.sim.path.moves[4].to.x, 10, kEps);
-  EXPECT_NEAR(r.sim.path.moves[4].to.z, -21.5, kEps);
+  // Moves: G1, G33, G33, G0 (the first G0 starts from nowhere known: not a move).
+  ASSERT_EQ(r.sim.path.moves.size(), 4u);
+  EXPECT_EQ(r.sim.path.moves[0].kind, MoveKind::kFeed);
+  EXPECT_NEAR(r.sim.path.moves[0].from.x, 10, kEps);
+  EXPECT_EQ(r.sim.path.moves[2].kind, MoveKind::kThread);
+  EXPECT_NEAR(r.sim.path.moves[3].to.x, 10, kEps);
+  EXPECT_NEAR(r.sim.path.moves[3].to.z, -21.5, kEps);
 }
 
 TEST(ControlSim, TheFeedAfterAThreadIsItsLinearPullOut) {
@@ -69,8 +70,8 @@ TEST(ControlSim, TheFeedAfterAThreadIsItsLinearPullOut) {
 TEST(ControlSim, ArcsTakeTheirCentreFromIAndKAsRadii) {
   SimRun r = run(shipped("generic-lathe"), "G0 X10 Z0\nG2 X14 Z-2 I0 K-2 F0.1\n");
   ASSERT_TRUE(r.ok) << r.diagnostics;
-  ASSERT_EQ(r.sim.path.moves.size(), 2u);
-  const Move& a = r.sim.path.moves[1];
+  ASSERT_EQ(r.sim.path.moves.size(), 1u);
+  const Move& a = r.sim.path.moves[0];
   EXPECT_EQ(a.kind, MoveKind::kArcCw);
   EXPECT_NEAR(a.center.x, 5, kEps);
   EXPECT_NEAR(a.center.z, -2, kEps);
@@ -106,9 +107,9 @@ TEST(ControlSim, FanucG92RepeatsWithItsModalWordsAndQInThousandths) {
   EXPECT_DOUBLE_EQ(*b.start_angle, 180);
   EXPECT_EQ(b.line, 3u);
   // Each G92 returns to its start: in, cut, out, back; then the G0.
-  ASSERT_EQ(r.sim.path.moves.size(), 10u);
-  EXPECT_NEAR(r.sim.path.moves[8].to.x, 9.299, kEps);
-  EXPECT_NEAR(r.sim.path.moves[8].to.z, 2, kEps);
+  ASSERT_EQ(r.sim.path.moves.size(), 9u);
+  EXPECT_NEAR(r.sim.path.moves[7].to.x, 9.299, kEps);
+  EXPECT_NEAR(r.sim.path.moves[7].to.z, 2, kEps);
 }
 
 TEST(ControlSim, FanucG76TwoBlocksExpandedWithTheLaw) {
@@ -168,8 +169,8 @@ TEST(ControlSim, LinuxcncG76InDiameterMode) {
 TEST(ControlSim, DwellWordsAreNotPositions) {
   SimRun r = run(shipped("fanuc-0i-t"), "G0 X20 Z5\nG4 X1.5\nG1 Z0 F0.1\n");
   ASSERT_TRUE(r.ok) << r.diagnostics;
-  ASSERT_EQ(r.sim.path.moves.size(), 2u);
-  EXPECT_NEAR(r.sim.path.moves[1].to.x, 10, kEps);
+  ASSERT_EQ(r.sim.path.moves.size(), 1u);
+  EXPECT_NEAR(r.sim.path.moves[0].to.x, 10, kEps);
 }
 
 TEST(ControlSim, ErrorsAreDiagnosticsWithTheLineAndColumn) {

@@ -70,6 +70,7 @@ struct State {
   bool ok = true;
 
   Vec2 pos;
+  bool pos_known = false;  // before the first move the tool is somewhere unknown
   bool diameter = true;
   Motion motion = Motion::kNone;
   double f_register = 0;

@@ -116,6 +116,18 @@ class Comparer {
     return fmt::format("X{:.4f} Z{:.4f}", m_.diameter_output ? 2 * v.x : v.x, v.z);
   }
 
+  // The cut's depth and shift in the plan's frame, relative to the pass it stands for.
+  SectionPass measure(const ExpectedCut& e, const NcCut& c) const {
+    const Frame& f = frames_[e.thread];
+    SectionPass s;
+    s.n = e.pass;
+    s.start = e.start;
+    s.kind = e.kind;
+    s.depth = e.depth + dot(c.to - e.to, f.n);
+    s.shift = e.shift + dot(c.from - e.from, f.u);
+    return s;
+  }
+
   Compared compare(const ExpectedCut& e, const NcCut& c) const {
     const ThreadPlan& plan = plans_[e.thread];
     const Frame& f = frames_[e.thread];
@@ -158,10 +170,11 @@ class Comparer {
             fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size()));
       return r;
     }
-    const double depth = e.depth + dot(c.to - e.to, f.n);
+    const SectionPass at = measure(e, c);
+    const double depth = at.depth;
     if (std::fabs(depth - e.depth) > tol)
       return differ(fmt::format("depth {:.4f}, plan {:.4f}", depth, e.depth));
-    const double shift = e.shift + dot(c.from - e.from, f.u);
+    const double shift = at.shift;
     if (std::fabs(shift - e.shift) > tol)
       return differ(fmt::format("shift {:.4f}, plan {:.4f}", shift, e.shift));
     if (length(c.from - e.from) > tol)
@@ -246,6 +259,8 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
       auto& src = sources[e.thread];
       if (std::find(src.begin(), src.end(), c->source) == src.end()) src.push_back(c->source);
       const Compared r = cmp.compare(e, *c);
+      if (plans[e.thread].form == ThreadForm::kMulti)
+        v.program_passes.push_back(cmp.measure(e, *c));
       accepted[e.thread] = std::max(accepted[e.thread], r.accepted);
       if (r.cost != 0)
         problem(e.thread, c,

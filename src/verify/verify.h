@@ -9,6 +9,7 @@
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
 #include "simulator/control_sim.h"
+#include "simulator/toolpath.h"
 #include "support/diagnostics.h"
 
 namespace clpost {
@@ -25,6 +26,9 @@ struct ThreadVerdict {
   std::string how;                    // "G76, NC line 40", "G33, NC lines 12-31"
   std::vector<std::string> problems;  // one line each, with the numbers
   std::vector<std::string> notes;     // accepted differences (threading.accept_pass_end)
+  // The program's cuts matched to this thread's passes, measured in the plan's frame (depth
+  // below the thread surface, shift along it): what `clpost plot --cl` draws for a program.
+  std::vector<SectionPass> program_passes;
 };
 
 struct VerifyReport {
