@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +53,36 @@ RunResult run(const std::string& cmd, const std::string& stdin_file) {
   r.err = read_file(err);
   std::filesystem::remove_all(dir);
   return r;
+}
+
+bool rs274_available() {
+  return run("command -v rs274").exit_code == 0;
+}
+
+RunResult run_rs274(const std::string& dir, const std::string& ngc) {
+  return run("cd " + quote(dir) + " && " + rs274() + " -t " +
+             quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+}
+
+std::vector<CanonSegment> rs274_synced_moves(const std::string& canon) {
+  std::vector<CanonSegment> out;
+  std::istringstream in(canon);
+  std::string line;
+  CanonXZ pos;
+  bool sync = false;
+  while (std::getline(in, line)) {
+    if (line.find("START_SPEED_FEED_SYNC") != std::string::npos) sync = true;
+    if (line.find("STOP_SPEED_FEED_SYNCH") != std::string::npos) sync = false;
+    size_t p = line.find("STRAIGHT_");
+    if (p == std::string::npos) continue;
+    double x, y, z;
+    if (std::sscanf(line.c_str() + line.find('(', p) + 1, "%lf, %lf, %lf", &x, &y, &z) != 3)
+      continue;
+    CanonXZ to{x, z};
+    if (sync && line.find("STRAIGHT_FEED") != std::string::npos) out.push_back({pos, to});
+    pos = to;
+  }
+  return out;
 }
 
 }  // namespace clpost::test

@@ -37,4 +37,22 @@ inline std::string realcl_dir() {
   return std::string(CLPOST_SOURCE_DIR) + "/../shared/realcl";
 }
 
+// LinuxCNC's interpreter (Debian package linuxcnc-uspace) is installed.
+bool rs274_available();
+// `rs274 -t tests/data/lathe.tbl -g NGC` run in `dir` (under the lock above).
+RunResult run_rs274(const std::string& dir, const std::string& ngc);
+
+// A point of rs274's canonical output in the lathe's XZ plane: rs274 prints X as a radius even
+// in G7 diameter mode, in the program's units.
+struct CanonXZ {
+  double x = 0, z = 0;
+};
+struct CanonSegment {
+  CanonXZ from, to;
+};
+// The spindle-synchronized feed moves of `rs274 -g` output (STRAIGHT_FEED between
+// START_SPEED_FEED_SYNC and STOP_SPEED_FEED_SYNCH), each from where the previous straight move
+// (traverse or feed) ended.
+std::vector<CanonSegment> rs274_synced_moves(const std::string& canon);
+
 }  // namespace clpost::test

@@ -265,22 +265,8 @@ std::vector<Seg> planned(const std::string& json, bool linear) {
 // Synchronized moves in rs274 canonical output.
 std::vector<Seg> synced(const std::string& canon) {
   std::vector<Seg> out;
-  std::istringstream in(canon);
-  std::string line;
-  XZ pos;
-  bool sync = false;
-  while (std::getline(in, line)) {
-    if (line.find("START_SPEED_FEED_SYNC") != std::string::npos) sync = true;
-    if (line.find("STOP_SPEED_FEED_SYNCH") != std::string::npos) sync = false;
-    size_t p = line.find("STRAIGHT_");
-    if (p == std::string::npos) continue;
-    double x, y, z;
-    if (std::sscanf(line.c_str() + line.find('(', p) + 1, "%lf, %lf, %lf", &x, &y, &z) != 3)
-      continue;
-    XZ to{x, z};
-    if (sync && line.find("STRAIGHT_FEED") != std::string::npos) out.push_back({pos, to});
-    pos = to;
-  }
+  for (const CanonSegment& s : rs274_synced_moves(canon))
+    out.push_back({{s.from.x, s.from.z}, {s.to.x, s.to.z}});
   return out;
 }
 
