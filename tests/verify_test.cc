@@ -105,6 +105,57 @@ TEST(Verify, G33LoopInfeedEdited) {
                                 ":12: pass 2: depth 0.6000, plan 0.5520 (tolerance 0.001)");
 }
 
+TEST(Verify, AgainstASavedPlan) {
+  const std::string dir = temp_dir();
+  RunResult plan =
+      run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+          " plan -m haas-st --format json " + kOptions + " > " + quote(dir + "/plan.json"));
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  const std::string golden = source_dir() + "/samples/golden/haas-st/threads-options.nc";
+  RunResult r = run(quote(clpost_bin()) + " verify -m haas-st " + quote(golden) + " --plan " +
+                    quote(dir + "/plan.json"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("7 threads, 39 passes planned, 39 cut\n"), std::string::npos) << r.out;
+  // The plan's third pass of the first thread moved 0.01 deeper (radius 7.264 -> 7.254): the
+  // program (G92 X14.528) now cuts it 0.01 short.
+  std::string json = read_file(dir + "/plan.json");
+  const std::string to = "\"to\": {\"x\": 7.264, \"z\": -20}";
+  const size_t at = json.find(to);
+  ASSERT_NE(at, std::string::npos) << json.substr(0, 2000);
+  json.replace(at, to.size(), "\"to\": {\"x\": 7.254, \"z\": -20}");
+  write_file(dir + "/plan.json", json);
+  r = run(quote(clpost_bin()) + " verify -m haas-st " + quote(golden) + " --plan " +
+          quote(dir + "/plan.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), golden + ":14:1: error: thread at " + dir +
+                                "/plan.json:12: pass 3: depth 0.7260, plan 0.7360 (tolerance "
+                                "0.005)");
+}
+
+TEST(Verify, PlanJsonErrorsPointIntoTheJson) {
+  const std::string dir = temp_dir();
+  const std::string golden = source_dir() + "/samples/golden/haas-st/threads-options.nc";
+  write_file(dir + "/a.json", "{\"file\": \"x\", \"units\": \"mm\",\n  \"threadz\": []}\n");
+  RunResult r = run(quote(clpost_bin()) + " verify -m haas-st " + quote(golden) + " --plan " +
+                    quote(dir + "/a.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, dir +
+                       "/a.json:1:1: error: plan JSON: 'threads' missing\n"
+                       "  {\"file\": \"x\", \"units\": \"mm\",\n  ^\n");
+  write_file(dir + "/b.json",
+             "{\"file\": \"x\", \"units\": \"mm\",\n  \"threads\": [ {\"line\": 3, \"form\": "
+             "\"couple\"} ]}\n");
+  r = run(quote(clpost_bin()) + " verify -m haas-st " + quote(golden) + " --plan " +
+          quote(dir + "/b.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), dir +
+                                "/b.json:2:16: error: thread at line 3: a couple thread's path "
+                                "is not in the plan JSON; verify against the CL file (--cl)");
+  r = run(quote(clpost_bin()) + " verify -m haas-st " + quote(golden));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "clpost verify: error: give the plan: --cl INPUT.cl or --plan PLAN.json\n");
+}
+
 TEST(Verify, ProgramThatIsNotNc) {
   const std::string dir = temp_dir();
   write_file(dir + "/p.nc", "G0 X10 Z5\nG1 X1.2.3\n");

@@ -221,12 +221,15 @@ int run_cli(int argc, char** argv) {
   CLI::App* verify =
       app.add_subcommand("verify", "Check that an NC program cuts the thread plan of a CL file");
   MachineOpts verify_opts;
-  std::string verify_nc, verify_cl;
+  std::string verify_nc, verify_cl, verify_plan;
   double verify_tolerance = 0;
   add_machine_opts(*verify, verify_opts);
   verify->add_option("program", verify_nc, "NC program in the machine's dialect ('-': stdin)")
       ->required();
-  verify->add_option("--cl", verify_cl, "The CL file the plan comes from")->required();
+  CLI::Option* cl_opt = verify->add_option("--cl", verify_cl, "The CL file the plan comes from");
+  CLI::Option* plan_opt = verify->add_option(
+      "--plan", verify_plan, "The plan as `clpost plan --format json` wrote it (instead of --cl)");
+  cl_opt->excludes(plan_opt);
   verify
       ->add_option("--tolerance", verify_tolerance,
                    "Largest difference that counts as equal (default: the machine's "
@@ -276,7 +279,11 @@ int run_cli(int argc, char** argv) {
   if (*verify) {
     Machine m;
     if (!load(verify_opts, m)) return kExitUsage;
-    VerifyOutcome v = verify_files(verify_nc, verify_cl, m, verify_tolerance);
+    if (verify_cl.empty() && verify_plan.empty()) {
+      print_err("clpost verify: error: give the plan: --cl INPUT.cl or --plan PLAN.json\n");
+      return kExitUsage;
+    }
+    VerifyOutcome v = verify_files(verify_nc, verify_cl, verify_plan, m, verify_tolerance);
     print_out(v.report);
     print_err(v.diagnostics);
     return v.ok ? kExitOk : kExitInput;

@@ -8,6 +8,7 @@
 
 #include "cli/post_file.h"
 #include "simulator/control_sim.h"
+#include "verify/plan_json.h"
 #include "verify/verify.h"
 
 namespace clpost {
@@ -36,18 +37,46 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
   return out;
 }
 
-VerifyOutcome verify_files(const std::string& program, const std::string& cl, const Machine& m,
-                           double tolerance) {
+namespace {
+
+bool plans_from_json(const std::string& path, const Machine& m, std::vector<ThreadPlan>& plans,
+                     VerifyOutcome& out) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) {
+    out.errors = 1;
+    out.diagnostics = fmt::format("{}: error: cannot open: {}\n", path, std::strerror(errno));
+    return false;
+  }
+  std::string text;
+  char buf[65536];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+  std::fclose(f);
+  Diagnostics d(path);
+  if (read_plan_json(text, m, plans, d)) return true;
+  out.errors = d.error_count();
+  out.diagnostics = d.render_all();
+  return false;
+}
+
+}  // namespace
+
+VerifyOutcome verify_files(const std::string& program, const std::string& cl,
+                           const std::string& plan_json, const Machine& m, double tolerance) {
   std::vector<ThreadPlan> plans;
-  PostRequest req{cl, "", &m, PostOptions{}, [&](const ThreadPlan& p) { plans.push_back(p); }};
-  PostOutcome posted = post_file(req);
-  if (!posted.ok) {
+  if (cl.empty()) {
     VerifyOutcome out;
-    out.errors = posted.errors;
-    out.diagnostics =
-        posted.diagnostics +
-        fmt::format("clpost: error: cannot verify against '{}': it has errors\n", display_name(cl));
-    return out;
+    if (!plans_from_json(plan_json, m, plans, out)) return out;
+  } else {
+    PostRequest req{cl, "", &m, PostOptions{}, [&](const ThreadPlan& p) { plans.push_back(p); }};
+    PostOutcome posted = post_file(req);
+    if (!posted.ok) {
+      VerifyOutcome out;
+      out.errors = posted.errors;
+      out.diagnostics = posted.diagnostics +
+                        fmt::format("clpost: error: cannot verify against '{}': it has errors\n",
+                                    display_name(cl));
+      return out;
+    }
   }
   std::FILE* f = program == "-" ? stdin : std::fopen(program.c_str(), "rb");
   if (f == nullptr) {
@@ -57,8 +86,8 @@ VerifyOutcome verify_files(const std::string& program, const std::string& cl, co
     return out;
   }
   reader::LineSource src(f);
-  VerifyOutcome out =
-      verify_program(src, display_name(program), plans, display_name(cl), m, tolerance);
+  VerifyOutcome out = verify_program(src, display_name(program), plans,
+                                     cl.empty() ? plan_json : display_name(cl), m, tolerance);
   // The CL file's own notes and warnings were shown when it was posted; verify is about the
   // program.
   if (f != stdin) std::fclose(f);

@@ -22,9 +22,10 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
                              const std::vector<ThreadPlan>& plans, const std::string& plan_name,
                              const Machine& m, double tolerance);
 
-// The verify subcommand: the plans from `cl` (posted on `m`, nothing written); the program read
-// from the file `program`.
-VerifyOutcome verify_files(const std::string& program, const std::string& cl, const Machine& m,
-                           double tolerance);
+// The verify subcommand: the plans from the CL file `cl` (posted on `m`, nothing written) or,
+// when `cl` is empty, from `plan_json` (clpost plan --format json); the program read from the
+// file `program`.
+VerifyOutcome verify_files(const std::string& program, const std::string& cl,
+                           const std::string& plan_json, const Machine& m, double tolerance);
 
 }  // namespace clpost

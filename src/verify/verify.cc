@@ -185,7 +185,10 @@ class Comparer {
         return differ(fmt::format("ends at {}, plan {}", point(c.to), point(e.to)));
       r.accepted = std::max(r.accepted, std::fabs(dot(c.to - e.to, f.u)));
     }
-    const Vec2 end = plan.pullout_linear && c.linear_pullout ? *c.linear_pullout : c.end;
+    // A pull-out cut with G1 (chamfer angle outside the G33 range) ends after the cut.
+    const bool planned_pullout = length(e.end - e.to) > 0;
+    const Vec2 end =
+        planned_pullout && c.chain.size() == 1 && c.linear_pullout ? *c.linear_pullout : c.end;
     if (length(end - e.end) > tol) {
       if (!accept_end || std::fabs(dot(end - e.end, f.n)) > tol)
         return differ(fmt::format("pull-out ends at {}, plan {}", point(end), point(e.end)));

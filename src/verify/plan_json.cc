@@ -1,0 +1,138 @@
+#include "verify/plan_json.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+
+#include "machine/yaml_text.h"
+
+namespace clpost {
+
+namespace {
+
+struct Reader {
+  const YamlText& text;
+  Diagnostics& diags;
+  bool ok = true;
+
+  void error(const YAML::Mark& mark, std::string message) {
+    const uint32_t line = mark.line >= 0 ? static_cast<uint32_t>(mark.line + 1) : 0;
+    const uint32_t col = mark.column >= 0 ? static_cast<uint32_t>(mark.column + 1) : 0;
+    if (ok || diags.error_count() < 20)
+      diags.error({line, col}, text.line(line), std::move(message));
+    ok = false;
+  }
+  YAML::Node need(const YAML::Node& n, const char* key) {
+    YAML::Node v = n[key];
+    if (!v) error(n.Mark(), fmt::format("plan JSON: '{}' missing", key));
+    return v;
+  }
+  double number(const YAML::Node& n, const char* key) {
+    YAML::Node v = need(n, key);
+    if (!v) return 0;
+    try {
+      const double d = v.as<double>();
+      if (std::isfinite(d)) return d;
+    } catch (const YAML::Exception&) {
+    }
+    error(v.Mark(), fmt::format("plan JSON: '{}' is not a number", key));
+    return 0;
+  }
+  std::string word(const YAML::Node& n, const char* key) {
+    YAML::Node v = need(n, key);
+    if (!v || !v.IsScalar()) return {};
+    return v.Scalar();
+  }
+  Vec2 point(const YAML::Node& n, const char* key) {
+    YAML::Node v = need(n, key);
+    if (!v) return {};
+    if (!v.IsMap()) {
+      error(v.Mark(), fmt::format("plan JSON: '{}' is not {{\"x\": ..., \"z\": ...}}", key));
+      return {};
+    }
+    return {number(v, "x"), number(v, "z")};
+  }
+};
+
+}  // namespace
+
+bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadPlan>& plans,
+                    Diagnostics& diags) {
+  const YamlText lines(text);
+  Reader r{lines, diags};
+  YAML::Node root;
+  try {
+    root = YAML::Load(std::string(text));
+  } catch (const YAML::Exception& e) {
+    r.error(e.mark, "plan JSON: " + e.msg);
+    return false;
+  }
+  if (root.IsSequence()) {
+    r.error(root.Mark(), "plan JSON of several files: verify one program against one file's plan");
+    return false;
+  }
+  if (!root.IsMap()) {
+    r.error(root.Mark(),
+            "plan JSON: not an object (expected the output of clpost plan --format json)");
+    return false;
+  }
+  const std::string units = r.word(root, "units");
+  if (r.ok && units != "mm" && units != "in")
+    r.error(root["units"].Mark(), fmt::format("plan JSON: units '{}', expected mm or in", units));
+  YAML::Node threads = r.need(root, "threads");
+  if (!r.ok) return false;
+  for (const YAML::Node& t : threads) {
+    ThreadPlan p;
+    p.units = units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+    p.loc.line = static_cast<uint32_t>(std::max(0.0, r.number(t, "line")));
+    p.loc.col = 1;
+    const std::string form = r.word(t, "form");
+    if (r.ok && form != "multi") {
+      r.error(t.Mark(), fmt::format("thread at line {}: a {} thread's path is not in the plan "
+                                    "JSON; verify against the CL file (--cl)",
+                                    p.loc.line, form));
+      continue;
+    }
+    const std::string kind = r.word(t, "kind");
+    p.kind = kind == "face"    ? ThreadKind::kFace
+             : kind == "taper" ? ThreadKind::kTaper
+                               : ThreadKind::kTurn;
+    p.side = r.word(t, "side") == "internal" ? ThreadSide::kInternal : ThreadSide::kExternal;
+    p.pitch.set = true;
+    p.pitch.pitch = r.number(t, "pitch");
+    p.lead = r.number(t, "lead");
+    p.pitch.starts = static_cast<int>(std::lround(r.number(t, "starts")));
+    p.depth = r.number(t, "depth");
+    p.option = static_cast<int>(std::lround(r.number(t, "option")));
+    p.tool_angle = r.number(t, "tool_angle");
+    p.cutang = r.number(t, "cutang");
+    p.p1 = r.point(t, "p1");
+    p.p2 = r.point(t, "p2");
+    if (YAML::Node po = t["pullout"]; po && !po.IsNull()) p.pullout = r.point(t, "pullout");
+    p.lead_along_z = std::fabs(p.p2.z - p.p1.z) >= std::fabs(p.p2.x - p.p1.x);
+    p.starts_by_angle = p.pitch.starts > 1 && m.start_angle_word;
+    YAML::Node passes = r.need(t, "passes");
+    if (!passes) continue;
+    for (const YAML::Node& q : passes) {
+      ThreadPass s;
+      s.n = static_cast<int>(std::lround(r.number(q, "n")));
+      s.start = static_cast<int>(std::lround(r.number(q, "start")));
+      s.depth = r.number(q, "depth");
+      const std::string k = r.word(q, "kind");
+      s.kind = k == "finish"   ? PassKind::kFinish
+               : k == "spring" ? PassKind::kSpring
+                               : PassKind::kRough;
+      s.shift = r.number(q, "shift");
+      s.from = r.point(q, "from");
+      s.to = r.point(q, "to");
+      s.pullout_end = p.pullout ? Vec2{s.to.x + p.pullout->x, s.to.z + p.pullout->z} : s.to;
+      s.start_angle = p.starts_by_angle ? s.start * 360.0 / p.pitch.starts : 0;
+      p.passes.push_back(s);
+    }
+    plans.push_back(std::move(p));
+  }
+  return r.ok;
+}
+
+}  // namespace clpost
