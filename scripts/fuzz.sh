@@ -4,7 +4,8 @@
 # crash, leak, timeout (> 1 s for one input) or out-of-memory (> 2 GB); the input that did it is
 # left in build-fuzz/artifacts/ and the fuzzer's log in build-fuzz/logs/.
 #
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   targets: cl_post_fuzzer machine_yaml_fuzzer
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+#   targets: cl_post_fuzzer machine_yaml_fuzzer nc_verify_fuzzer
 #
 # Each target's corpus grows in build-fuzz/corpus/<target>/ from run to run. Seeds are made fresh
 # every run from samples/, fuzz/seeds/, the shipped machines and posts, and the real CAM files in
@@ -14,7 +15,7 @@ cd "$(dirname "$0")/.."
 secs=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(cl_post_fuzzer machine_yaml_fuzzer)
+[ ${#targets[@]} -gt 0 ] || targets=(cl_post_fuzzer machine_yaml_fuzzer nc_verify_fuzzer)
 build=${CLPOST_FUZZ_BUILD:-build-fuzz}
 
 scripts/deps.sh test
@@ -42,6 +43,8 @@ fi
 mapfile -t samples < <(find samples -type f \( -name "*.apt" -o -name "*.cls" -o -name "*.ncl" \) | sort)
 seed cl_post_fuzzer "${samples[@]}" fuzz/seeds/cl/* "${realcl[@]}"
 seed machine_yaml_fuzzer machines/*.yaml posts/*.yaml fuzz/seeds/yaml/*
+mapfile -t goldens < <(find samples/golden -type f | sort)
+seed nc_verify_fuzzer "${goldens[@]}"
 
 mkdir -p "$build/artifacts" "$build/logs"
 status=0
@@ -50,6 +53,7 @@ for t in "${targets[@]}"; do
   case "$t" in
     cl_post_fuzzer) dict=fuzz/cl.dict ;;
     machine_yaml_fuzzer) dict=fuzz/yaml.dict ;;
+    nc_verify_fuzzer) dict=fuzz/nc.dict ;;
     *) echo "fuzz.sh: unknown target '$t'" >&2; exit 2 ;;
   esac
   corpus="$build/corpus/$t"

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "planner/plan_format.h"
 #include "plot/nice_step.h"
 #include "plot/thread_profile.h"
 
@@ -37,18 +38,6 @@ const char* kind_colour(PassKind k) {
       return "#2ca02c";
   }
   return "#1f5fbf";
-}
-
-const char* kind_word(PassKind k) {
-  switch (k) {
-    case PassKind::kRough:
-      return "rough";
-    case PassKind::kFinish:
-      return "finish";
-    case PassKind::kSpring:
-      return "spring";
-  }
-  return "rough";
 }
 
 // Dash pattern of start k's V ("" = solid).
@@ -229,11 +218,11 @@ void draw_pass(SvgWriter& w, const ThreadSection& s, const Frame& f, const Secti
   w.open("g", {{"class", "pass"},
                {"data-pass", fmt::format("{}", p.n)},
                {"data-start", fmt::format("{}", p.start)},
-               {"data-kind", kind_word(p.kind)}});
-  w.text(
-      "title", {},
-      fmt::format("pass {}, start {}: depth {}, shift {} ({})", p.n, p.start,
-                  fixed_text(p.depth, decimals), fixed_text(p.shift, decimals), kind_word(p.kind)));
+               {"data-kind", pass_kind_name(p.kind)}});
+  w.text("title", {},
+         fmt::format("pass {}, start {}: depth {}, shift {} ({})", p.n, p.start,
+                     fixed_text(p.depth, decimals), fixed_text(p.shift, decimals),
+                     pass_kind_name(p.kind)));
   SvgAttrs a = {{"d", v.data()},
                 {"fill", "none"},
                 {"stroke", kind_colour(p.kind)},
@@ -414,7 +403,7 @@ void draw_table(SvgWriter& w, const ThreadSection& s, const Layout& l) {
             {"y", svg_num(base)},
             {"fill", kind_colour(p.kind)},
             {"font-weight", "bold"}},
-           kind_word(p.kind));
+           pass_kind_name(p.kind));
     w.close();
     y += kRowH;
   }
@@ -482,7 +471,7 @@ void draw_legend(SvgWriter& w, const ThreadSection& s, const Frame& f, std::stri
                      {"stroke-width", spring ? "6" : "2"},
                      {"stroke-opacity", spring ? "0.35" : "1"}});
     x += 32;
-    label(kind_word(k));
+    label(pass_kind_name(k));
   }
   if (groove_count(s) > 1) {
     for (int k = 0; k < std::min(groove_count(s), 8); ++k) {

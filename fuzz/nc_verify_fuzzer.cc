@@ -1,0 +1,67 @@
+// libFuzzer target: arbitrary bytes as an NC program, through the NC lexer and the control
+// simulation of every shipped machine's dialect (cycles expanded with their laws), then verified
+// against a fixed plan (an M16x1.5 thread posted on that machine), as `clpost verify` does.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "fuzz_post.h"
+#include "simulator/control_sim.h"
+#include "verify/verify.h"
+
+namespace {
+
+constexpr const char* kMachines[] = {"generic-lathe", "linuxcnc-lathe", "sinumerik-840d",
+                                     "fanuc-0i-t",    "haas-st",        "heidenhain-pilot",
+                                     "nct-2000t"};
+constexpr const char* kPlan =
+    "UNITS/MM\nLOADTL/1\nSPINDL/600,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/10,0,5\n"
+    "THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/8,0,2\nGOTO/8,0,-20\nTHREAD/OFF\n"
+    "RAPID\nGOTO/10,0,5\nFINI\n";
+
+struct Target {
+  clpost::Machine machine;
+  std::vector<clpost::ThreadPlan> plans;
+};
+std::vector<std::unique_ptr<Target>>* g_targets = nullptr;
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  g_targets = new std::vector<std::unique_ptr<Target>>();
+  for (const char* name : kMachines) {
+    auto t = std::make_unique<Target>();
+    t->machine = clpost::fuzz::shipped_machine(name);
+    clpost::Diagnostics diags("plan.cl");
+    clpost::ClReader reader(std::string_view(kPlan), diags);
+    clpost::StringSink sink;
+    clpost::NcProgram prog(t->machine, sink);
+    clpost::Interpreter interp(t->machine, prog, diags, {});
+    interp.on_thread([&](const clpost::ThreadPlan& p) { t->plans.push_back(p); });
+    clpost::Statement st;
+    while (reader.next(st)) interp.statement(st);
+    interp.end_of_input(reader.line());
+    g_targets->push_back(std::move(t));
+  }
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace clpost;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  // The first byte picks the machine (the text still starts at byte 0).
+  const Target& t = *(*g_targets)[size > 0 ? data[0] % g_targets->size() : 0];
+  Diagnostics diags("fuzz.nc");
+  reader::LineSource src(text);
+  Simulation sim;
+  if (simulate_nc(src, t.machine, diags, sim)) {
+    VerifyOptions vo;
+    vo.plan_name = "plan.cl";
+    VerifyReport report;
+    verify_cuts(t.plans, sim, t.machine, vo, diags, report);
+    (void)verify_report_text(report, t.plans, "fuzz.nc", t.machine, vo);
+  }
+  (void)diags.render_all();
+  return 0;
+}
