@@ -59,6 +59,12 @@ void State::error(uint32_t col, std::string message) {
   ok = false;
 }
 
+std::optional<int> State::whole(double v, std::string_view name, int lo, int hi, uint32_t col) {
+  if (std::fabs(v - std::round(v)) < 1e-9 && v >= lo && v <= hi) return static_cast<int>(v);
+  error(col, fmt::format("{} {:g}: a whole number from {} to {} expected", name, v, lo, hi));
+  return std::nullopt;
+}
+
 void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
   // The first move starts where the tool happens to be: not drawn, not a cut's start.
   if (opt.keep_moves && pos_known) {
@@ -91,7 +97,7 @@ void State::cycle_cuts(const std::vector<Cut>& cuts, Vec2 start, Vec2 after,
     n.start = keep_start_index ? c.start : -1;
     n.start_angle = start_angle;
     n.line = line;
-    n.line_text = std::string(line_text);
+    n.line_text = std::string(line_text.substr(0, kKeptLineText));
     n.source = std::string(source);
     n.call = call;
     n.fixed_end = fixed_end;
@@ -196,7 +202,7 @@ void thread_move(State& s, const NcBlock& b, Vec2 to, const Code& code) {
     c.lead_change = lead_change;
     c.start_angle = angle;
     c.line = s.line;
-    c.line_text = std::string(s.line_text);
+    c.line_text = std::string(s.line_text.substr(0, sim::kKeptLineText));
     c.source = code.address + (code.number ? fmt::format("{:g}", *code.number) : "");
     s.out.cuts.push_back(std::move(c));
   }

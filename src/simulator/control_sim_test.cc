@@ -205,5 +205,20 @@ TEST(ControlSim, CycleErrorsNameTheWords) {
             "  N 20 G31 F1.5 U0.92 IC4 V0 H0\n       ^\n");
 }
 
+TEST(ControlSim, CycleCountsOutOfRangeAreRefusedNotRun) {
+  EXPECT_EQ(run(shipped("linuxcnc-lathe"), "G7\nG0 X20 Z2\nG76 P1.5 Z-20 I-2 J0.5 K1.8 H100000\n")
+                .diagnostics,
+            "p.nc:3:1: error: H 100000: a whole number from 0 to 1000 expected\n"
+            "  G76 P1.5 Z-20 I-2 J0.5 K1.8 H100000\n  ^\n");
+  EXPECT_EQ(
+      run(shipped("sinumerik-840d"),
+          "G0 X18 Z2\nCYCLE99(2, 16, -20, 16, 0, 0, 0.92, 0, 0, 0, 2.5, 0, 1.5, 300103, 0, "
+          "1.299, 0, 0, 0, 0, 0, 0, 1, \"\", \"\", \"\", 0)\n")
+          .diagnostics,
+      "p.nc:2:1: error: NRC 2.5: a whole number from 1 to 1000 expected\n"
+      "  CYCLE99(2, 16, -20, 16, 0, 0, 0.92, 0, 0, 0, 2.5, 0, 1.5, 300103, 0, 1.299, 0, 0, 0, "
+      "0, 0, 0, 1, \"\", \"\", \"\", 0)\n  ^\n");
+}
+
 }  // namespace
 }  // namespace clpost

@@ -90,8 +90,16 @@ bool haas_g76(State& s, const NcBlock& b) {
   if (const NcWord* i = b.find("I")) w.taper = s.value(*i);
   w.height = s.value(*b.find("K"));
   w.first_cut = s.value(*b.find("D"));
-  if (const NcWord* a = b.find("A")) w.tool_angle = static_cast<int>(std::lround(a->value));
-  if (const NcWord* p = b.find("P")) w.mode = static_cast<int>(std::lround(p->value));
+  if (const NcWord* a = b.find("A")) {
+    const std::optional<int> v = s.whole(a->value, "A", 0, 120, a->col);
+    if (!v) return true;
+    w.tool_angle = *v;
+  }
+  if (const NcWord* p = b.find("P")) {
+    const std::optional<int> v = s.whole(p->value, "P", 1, 4, p->col);
+    if (!v) return true;
+    w.mode = *v;
+  }
   if (const NcWord* q = b.find("Q")) w.start_angle = s.value(*q, "thread_angle");
   w.lead = s.value(*b.find("F"));
   if (!s.diameter) w.x *= 2;
@@ -143,7 +151,7 @@ bool g92_cycle(State& s, const NcBlock& b) {
   c.lead = g.f;
   c.start_angle = g.q;
   c.line = s.line;
-  c.line_text = std::string(s.line_text);
+  c.line_text = std::string(s.line_text.substr(0, kKeptLineText));
   c.source = "G92";
   s.out.cuts.push_back(c);
   s.move(MoveKind::kRapid, c.from);

@@ -44,9 +44,16 @@ bool linuxcnc_g76(State& s, const NcBlock& b) {
   w.k = word_or(s, b, "K", "g76_depth", 0);
   w.r = word_or(s, b, "R", "R", 1);
   w.q = word_or(s, b, "Q", "g76_angle", 0);
-  w.h = static_cast<int>(std::lround(word_or(s, b, "H", "H", 0)));
+  bool bad = false;
+  auto whole = [&](double v, const char* name, int lo, int hi) {
+    const std::optional<int> r = s.whole(v, name, lo, hi, first_col(b));
+    bad = bad || !r;
+    return r.value_or(lo);
+  };
+  w.h = whole(word_or(s, b, "H", "H", 0), "H", 0, 1000);
   w.e = word_or(s, b, "E", "g76_taper", 0);
-  w.l = static_cast<int>(std::lround(word_or(s, b, "L", "L", 0)));
+  w.l = whole(word_or(s, b, "L", "L", 0), "L", 0, 3);
+  if (bad) return true;
   std::string refused;
   const std::vector<Cut> cuts = expand_linuxcnc_g76(w, s.pos, s.diameter, &refused);
   if (!refused.empty()) {
@@ -97,17 +104,23 @@ bool heidenhain_g31(State& s, const NcBlock& b) {
   if (!g.from || !g.to) {
     s.error(g.col, "G31's contour needs a start (G0 X Z) and an end (G1 X Z) before G80");
   } else {
+    bool bad = false;
+    auto whole = [&](double v, const char* name, int lo, int hi) {
+      const std::optional<int> r = s.whole(v, name, lo, hi, g.col);
+      bad = bad || !r;
+      return r.value_or(lo);
+    };
     HeidenhainG31 w;
     w.f = word_or(s, c, "F", "F", 0);
     w.u = word_or(s, c, "U", "U", 0);
-    w.ic = static_cast<int>(std::lround(word_or(s, c, "IC", "IC", 1)));
-    w.v = static_cast<int>(std::lround(word_or(s, c, "V", "V", 0)));
-    w.h = static_cast<int>(std::lround(word_or(s, c, "H", "H", 0)));
+    w.ic = whole(word_or(s, c, "IC", "IC", 1), "IC", 1, 1000);
+    w.v = whole(word_or(s, c, "V", "V", 0), "V", 0, 6);
+    w.h = whole(word_or(s, c, "H", "H", 0), "H", 0, 9);
     w.a = word_or(s, c, "A", "A", 30);
-    w.d = static_cast<int>(std::lround(word_or(s, c, "D", "D", 1)));
-    w.q = static_cast<int>(std::lround(word_or(s, c, "Q", "Q", 0)));
+    w.d = whole(word_or(s, c, "D", "D", 1), "D", 1, 100);
+    w.q = whole(word_or(s, c, "Q", "Q", 0), "Q", 0, 1000);
     w.c = word_or(s, c, "C", "C", 0);
-    w.bd = static_cast<int>(std::lround(word_or(s, c, "BD", "BD", 0)));
+    w.bd = whole(word_or(s, c, "BD", "BD", 0), "BD", 0, 1);
     w.b = word_or(s, c, "B", "B", 0);
     w.p = word_or(s, c, "P", "P", 0);
     w.k = word_or(s, c, "K", "K", 0);
@@ -115,8 +128,11 @@ bool heidenhain_g31(State& s, const NcBlock& b) {
     w.to = *g.to;
     std::string refused;
     const std::vector<Cut> cuts =
-        expand_heidenhain_g31(w, HeidenhainG31Emitter::flank_codes(s.m), &refused);
-    if (!refused.empty()) {
+        bad ? std::vector<Cut>{}
+            : expand_heidenhain_g31(w, HeidenhainG31Emitter::flank_codes(s.m), &refused);
+    if (bad) {
+      // the word is named above
+    } else if (!refused.empty()) {
       s.error(g.col, "G31: " + refused);
     } else {
       const Vec2 start = s.pos;
@@ -184,6 +200,12 @@ bool cycle99_call(State& s, const NcBlock& b) {
   };
   constexpr std::string_view kDepth = "cycle99_depth", kAngle = "cycle99_angle",
                              kLead = "cycle99_lead";
+  auto whole = [&](double v, const char* n, int lo, int hi) {
+    if (!ok) return lo;
+    const std::optional<int> r = s.whole(v, n, lo, hi, call->col);
+    ok = ok && r.has_value();
+    return r.value_or(lo);
+  };
   Cycle99Words w;
   w.spl = arg("spl", "Z", 0);
   w.dm1 = arg("dm1", "X", 0);
@@ -195,14 +217,14 @@ bool cycle99_call(State& s, const NcBlock& b) {
   w.fal = arg("fal", kDepth, 0);
   w.iang = arg("iang", kAngle, 0);
   w.nsp = arg("nsp", kAngle, 0);
-  w.nrc = static_cast<int>(std::lround(arg("nrc", "", 1)));
-  w.nid = static_cast<int>(std::lround(arg("nid", "", 0)));
+  w.nrc = whole(arg("nrc", "", 1), "NRC", 1, 1000);
+  w.nid = whole(arg("nid", "", 0), "NID", 0, 1000);
   w.pit = arg("pit", kLead, 0);
-  w.vari = static_cast<int>(std::lround(arg("vari", "", kVariExternalConstantInfeed)));
-  w.numth = static_cast<int>(std::lround(arg("numth", "", 0)));
+  w.vari = whole(arg("vari", "", kVariExternalConstantInfeed), "VARI", 0, 999999);
+  w.numth = whole(arg("numth", "", 0), "NUMTH", 0, 100);
   w.vrt = arg("vrt", kDepth, 0);
-  w.pita = static_cast<int>(std::lround(arg("pita", "", 1)));
-  w.psys = static_cast<int>(std::lround(arg("psys", "", 0)));
+  w.pita = whole(arg("pita", "", 1), "PITA", 1, 4);
+  w.psys = whole(arg("psys", "", 0), "PSYS", 0, 99);
   if (!ok) return true;
   if (!s.diameter) {
     s.error(call->col, "CYCLE99 in radius programming (DIAMOF) is not expanded");

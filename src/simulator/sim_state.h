@@ -12,6 +12,9 @@
 
 namespace clpost::sim {
 
+// How much of a block's text a cut keeps for its diagnostics (memory stays bounded).
+constexpr size_t kKeptLineText = 256;
+
 // A code of the machine (codes: / a template's first word) as address and number: "G33" is
 // {"G", 33}; "DIAMON" is {"DIAMON", none}.
 struct Code {
@@ -87,6 +90,9 @@ struct State {
   // X as a radius (halved in diameter mode).
   double radius(const NcWord& x) const { return diameter ? value(x) / 2 : value(x); }
   void error(uint32_t col, std::string message);
+  // A count or code word as a whole number in [lo, hi]; else an error naming the word and the
+  // range, and nothing (a cycle asking for a billion passes is refused, not run).
+  std::optional<int> whole(double v, std::string_view name, int lo, int hi, uint32_t col);
   void move(MoveKind kind, Vec2 to, Vec2 center = {}, double lead = 0);
   // A cycle's passes (its law's expansion) from `start`: cuts and their moves; the tool is left
   // at `after`.
