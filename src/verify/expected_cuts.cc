@@ -19,11 +19,10 @@ std::vector<ExpectedCut> expected_cuts(const std::vector<ThreadPlan>& plans) {
       out.push_back(std::move(c));
       continue;
     }
-    int n = 0;
     for (const ThreadPass& p : plan.passes) {
       ExpectedCut c;
       c.thread = t;
-      c.pass = ++n;
+      c.pass = p.n;
       c.start = p.start;
       c.depth = p.depth;
       c.shift = p.shift;

@@ -9,7 +9,7 @@ namespace clpost {
 
 struct ExpectedCut {
   size_t thread = 0;  // index into the plans
-  int pass = 0;       // 1-based pass number in the thread's cutting order
+  int pass = 0;       // the plan's pass number n (the depth ladder index: starts share it)
   int start = 0;
   double depth = 0;
   double shift = 0;

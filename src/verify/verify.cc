@@ -146,8 +146,8 @@ class Comparer {
     if (std::fabs(c.lead - plan.lead) * f.turns > tol)
       return differ(
           fmt::format("lead {:.6f}, plan {:.6f}: {:.4f} off over the thread's {:.1f} "
-                      "turns",
-                      c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns));
+                      "turns (tolerance {:g})",
+                      c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns, tol_));
     if (std::fabs(c.lead_change - plan.pitch.lead_change) > 1e-9)
       return differ(fmt::format("lead change {:g} per revolution, plan {:g}", c.lead_change,
                                 plan.pitch.lead_change));
@@ -160,11 +160,12 @@ class Comparer {
     }
     if (plan.form != ThreadForm::kMulti) {
       if (length(c.from - e.from) > tol)
-        return differ(fmt::format("starts at {}, plan {}", point(c.from), point(e.from)));
+        return differ(fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from),
+                                  point(e.from), tol_));
       for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
         if (length(c.chain[i] - e.chain[i]) > tol)
-          return differ(fmt::format("move {} ends at {}, plan {}", i + 1, point(c.chain[i]),
-                                    point(e.chain[i])));
+          return differ(fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
+                                    point(c.chain[i]), point(e.chain[i]), tol_));
       if (c.chain.size() != e.chain.size())
         return differ(
             fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size()));
@@ -173,16 +174,20 @@ class Comparer {
     const SectionPass at = measure(e, c);
     const double depth = at.depth;
     if (std::fabs(depth - e.depth) > tol)
-      return differ(fmt::format("depth {:.4f}, plan {:.4f}", depth, e.depth));
+      return differ(
+          fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_));
     const double shift = at.shift;
     if (std::fabs(shift - e.shift) > tol)
-      return differ(fmt::format("shift {:.4f}, plan {:.4f}", shift, e.shift));
+      return differ(
+          fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_));
     if (length(c.from - e.from) > tol)
-      return differ(fmt::format("starts at {}, plan {}", point(c.from), point(e.from)));
+      return differ(fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from),
+                                point(e.from), tol_));
     const bool accept_end = c.fixed_end && m_.accept_pass_end;
     if (length(c.to - e.to) > tol) {
       if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > tol)
-        return differ(fmt::format("ends at {}, plan {}", point(c.to), point(e.to)));
+        return differ(
+            fmt::format("ends at {}, plan {} (tolerance {:g})", point(c.to), point(e.to), tol_));
       r.accepted = std::max(r.accepted, std::fabs(dot(c.to - e.to, f.u)));
     }
     // A pull-out cut with G1 (chamfer angle outside the G33 range) ends after the cut.
@@ -191,7 +196,8 @@ class Comparer {
         planned_pullout && c.chain.size() == 1 && c.linear_pullout ? *c.linear_pullout : c.end;
     if (length(end - e.end) > tol) {
       if (!accept_end || std::fabs(dot(end - e.end, f.n)) > tol)
-        return differ(fmt::format("pull-out ends at {}, plan {}", point(end), point(e.end)));
+        return differ(fmt::format("pull-out ends at {}, plan {} (tolerance {:g})", point(end),
+                                  point(e.end), tol_));
       r.accepted = std::max(r.accepted, std::fabs(dot(end - e.end, f.u)));
     }
     return r;
@@ -266,9 +272,7 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
         v.program_passes.push_back(cmp.measure(e, *c));
       accepted[e.thread] = std::max(accepted[e.thread], r.accepted);
       if (r.cost != 0)
-        problem(e.thread, c,
-                fmt::format("{}: {} (tolerance {:g})", pass_name(plans[e.thread], e), r.why,
-                            report.tolerance));
+        problem(e.thread, c, fmt::format("{}: {}", pass_name(plans[e.thread], e), r.why));
       last_cut = c;
     } else if (p.a >= 0) {
       const ExpectedCut& e = expected[static_cast<size_t>(p.a)];
