@@ -206,16 +206,23 @@ TEST(ControlSim, CycleErrorsNameTheWords) {
 }
 
 TEST(ControlSim, CycleCountsOutOfRangeAreRefusedNotRun) {
+  // Found by nc_verify_fuzzer: G31 asking for 180000 air cuts (Q) ran them all.
+  EXPECT_EQ(run(shipped("heidenhain-pilot"),
+                "N 10 G0 X20 Z2\nN 20 G31 F1.5 U0.92 Q180000 IC8 V1 H3 A30\nN 30 G0 X16 Z2\n"
+                "N 40 G1 X16 Z-20\nN 50 G80\n")
+                .diagnostics,
+            "p.nc:2:6: error: Q 180000: a whole number from 0 to 200 expected\n"
+            "  N 20 G31 F1.5 U0.92 Q180000 IC8 V1 H3 A30\n       ^\n");
   EXPECT_EQ(run(shipped("linuxcnc-lathe"), "G7\nG0 X20 Z2\nG76 P1.5 Z-20 I-2 J0.5 K1.8 H100000\n")
                 .diagnostics,
-            "p.nc:3:1: error: H 100000: a whole number from 0 to 1000 expected\n"
+            "p.nc:3:1: error: H 100000: a whole number from 0 to 200 expected\n"
             "  G76 P1.5 Z-20 I-2 J0.5 K1.8 H100000\n  ^\n");
   EXPECT_EQ(
       run(shipped("sinumerik-840d"),
           "G0 X18 Z2\nCYCLE99(2, 16, -20, 16, 0, 0, 0.92, 0, 0, 0, 2.5, 0, 1.5, 300103, 0, "
           "1.299, 0, 0, 0, 0, 0, 0, 1, \"\", \"\", \"\", 0)\n")
           .diagnostics,
-      "p.nc:2:1: error: NRC 2.5: a whole number from 1 to 1000 expected\n"
+      "p.nc:2:1: error: NRC 2.5: a whole number from 1 to 200 expected\n"
       "  CYCLE99(2, 16, -20, 16, 0, 0, 0.92, 0, 0, 0, 2.5, 0, 1.5, 300103, 0, 1.299, 0, 0, 0, "
       "0, 0, 0, 1, \"\", \"\", \"\", 0)\n  ^\n");
 }

@@ -50,7 +50,7 @@ bool linuxcnc_g76(State& s, const NcBlock& b) {
     bad = bad || !r;
     return r.value_or(lo);
   };
-  w.h = whole(word_or(s, b, "H", "H", 0), "H", 0, 1000);
+  w.h = whole(word_or(s, b, "H", "H", 0), "H", 0, kMaxCyclePasses);
   w.e = word_or(s, b, "E", "g76_taper", 0);
   w.l = whole(word_or(s, b, "L", "L", 0), "L", 0, 3);
   if (bad) return true;
@@ -113,12 +113,12 @@ bool heidenhain_g31(State& s, const NcBlock& b) {
     HeidenhainG31 w;
     w.f = word_or(s, c, "F", "F", 0);
     w.u = word_or(s, c, "U", "U", 0);
-    w.ic = whole(word_or(s, c, "IC", "IC", 1), "IC", 1, 1000);
+    w.ic = whole(word_or(s, c, "IC", "IC", 1), "IC", 1, kMaxCyclePasses);
     w.v = whole(word_or(s, c, "V", "V", 0), "V", 0, 6);
     w.h = whole(word_or(s, c, "H", "H", 0), "H", 0, 9);
     w.a = word_or(s, c, "A", "A", 30);
     w.d = whole(word_or(s, c, "D", "D", 1), "D", 1, 100);
-    w.q = whole(word_or(s, c, "Q", "Q", 0), "Q", 0, 1000);
+    w.q = whole(word_or(s, c, "Q", "Q", 0), "Q", 0, kMaxCyclePasses);
     w.c = word_or(s, c, "C", "C", 0);
     w.bd = whole(word_or(s, c, "BD", "BD", 0), "BD", 0, 1);
     w.b = word_or(s, c, "B", "B", 0);
@@ -217,8 +217,8 @@ bool cycle99_call(State& s, const NcBlock& b) {
   w.fal = arg("fal", kDepth, 0);
   w.iang = arg("iang", kAngle, 0);
   w.nsp = arg("nsp", kAngle, 0);
-  w.nrc = whole(arg("nrc", "", 1), "NRC", 1, 1000);
-  w.nid = whole(arg("nid", "", 0), "NID", 0, 1000);
+  w.nrc = whole(arg("nrc", "", 1), "NRC", 1, kMaxCyclePasses);
+  w.nid = whole(arg("nid", "", 0), "NID", 0, kMaxCyclePasses);
   w.pit = arg("pit", kLead, 0);
   w.vari = whole(arg("vari", "", kVariExternalConstantInfeed), "VARI", 0, 999999);
   w.numth = whole(arg("numth", "", 0), "NUMTH", 0, 100);

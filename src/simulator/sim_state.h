@@ -14,6 +14,9 @@ namespace clpost::sim {
 
 // How much of a block's text a cut keeps for its diagnostics (memory stays bounded).
 constexpr size_t kKeptLineText = 256;
+// The most cuts a cycle's count words may ask for: the planner's limit for one thread
+// (planner/thread_words.h kMaxPasses), so a program can do no more than a plan can.
+constexpr int kMaxCyclePasses = 200;
 
 // A code of the machine (codes: / a template's first word) as address and number: "G33" is
 // {"G", 33}; "DIAMON" is {"DIAMON", none}.
