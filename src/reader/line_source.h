@@ -43,6 +43,19 @@ class LineSource {
   Status next_line(size_t max_len, Line& line);
   // Consumes the rest of the current line without keeping it; tells how it ends.
   LineTail skip_line();
+  // For the fast path (plain_line.h), which finds and reads a line in place: the unread bytes
+  // held in the buffer (nothing once reading has failed, or before the first next_line()), and
+  // consume_line() to take a line of them, `size` bytes and a `terminator` of 1 or 2, as
+  // next_line() would have.
+  std::string_view buffered() const {
+    if (!started_ || failed_ != Status::kLine) return {};
+    return std::string_view(data_ + pos_, len_ - pos_);
+  }
+  Line consume_line(size_t size, size_t terminator) {
+    const Line line{pos_ - mark_, size, ++line_no_};
+    pos_ += size + terminator;
+    return line;
+  }
   // Puts back the line just read by next_line().
   void unread(const Line& line);
   // The text of a line read since the mark; valid until the next next_line()/skip_line().
