@@ -1,5 +1,6 @@
 #include "writer/nc_writer.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 
@@ -8,14 +9,37 @@
 namespace clpost {
 
 NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_(m.block_start) {
-  block_.reserve(256);
   line_.reserve(256);
+}
+
+void NcWriter::separate() {
+  if (open_) {
+    line_ += ' ';
+    return;
+  }
+  open_ = true;
+  line_.clear();
+  if (m_.block_numbers) {
+    // "N120 " built on the stack and appended at once.
+    char number[48];
+    char* end = number;
+    const std::string& address = m_.block_address;
+    if (address.size() <= 16) {
+      end = std::copy(address.begin(), address.end(), end);
+    } else {
+      line_ += address;
+    }
+    end = std::to_chars(end, number + sizeof number - 1, next_number_).ptr;
+    *end++ = ' ';
+    line_.append(number, end);
+  }
+  words_at_ = line_.size();
 }
 
 NcWriter& NcWriter::code(std::string_view c) {
   if (c.empty()) return *this;
-  if (!block_.empty()) block_ += ' ';
-  block_.append(c);
+  separate();
+  line_.append(c);
   return *this;
 }
 
@@ -24,9 +48,9 @@ NcWriter& NcWriter::word(std::string_view address, double value) {
 }
 
 NcWriter& NcWriter::word(std::string_view address, double value, const NumberFormat& format) {
-  if (!block_.empty()) block_ += ' ';
-  block_.append(address);
-  append_number(block_, value, format);
+  separate();
+  line_.append(address);
+  append_number(line_, value, format);
   return *this;
 }
 
@@ -35,26 +59,22 @@ NcWriter& NcWriter::text(std::string_view raw) {
 }
 
 void NcWriter::end_block() {
-  if (block_.empty()) return;
-  line_.clear();
+  if (!open_) return;
   if (m_.block_numbers) {
     bool unnumbered = false;
+    const std::string_view w = words();
     for (const std::string& prefix : m_.block_skip)
-      if (!prefix.empty() && block_.starts_with(prefix)) unnumbered = true;
-    if (!unnumbered) {
-      char digits[16];
-      char* end = std::to_chars(digits, digits + sizeof digits, next_number_).ptr;
-      line_ += m_.block_address;
-      line_.append(digits, end);
-      line_ += ' ';
+      if (!prefix.empty() && w[0] == prefix[0] && w.starts_with(prefix)) unnumbered = true;
+    if (unnumbered) {
+      line_.erase(0, words_at_);
+    } else {
       next_number_ += m_.block_step;
       if (next_number_ > m_.block_max) next_number_ = m_.block_start;
     }
   }
-  line_ += block_;
   line_ += m_.line_ending;
   out_.write(line_);
-  block_.clear();
+  open_ = false;
 }
 
 void NcWriter::comment(std::string_view text) {

@@ -31,10 +31,19 @@ class NcWriter {
   const Machine& machine() const { return m_; }
 
  private:
+  // Before each word: a blank after the words before it, or for the first word of a block, the
+  // block's opening (its block number, when numbered).
+  void separate();
+  std::string_view words() const { return std::string_view(line_).substr(words_at_); }
+
   const Machine& m_;
   Sink& out_;
-  std::string block_;
-  std::string line_;  // block number, block and line ending: one write per block
+  // The block being built, as it is written (block number, words, line ending): one write per
+  // block, no copy. The block number is put first as the block opens; end_block() takes it out
+  // again for a block that gets none (block_skip), which is rare.
+  std::string line_;
+  size_t words_at_ = 0;  // where the words start in line_
+  bool open_ = false;    // a block has words
   int next_number_;
 };
 

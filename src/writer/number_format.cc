@@ -5,35 +5,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 
 namespace clpost {
 
 namespace {
 
-// 10^n, exact for every n here (powers of ten up to 1e22 are exact doubles).
-constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-constexpr uint64_t kPow10Int[] = {1ull,
-                                  10ull,
-                                  100ull,
-                                  1000ull,
-                                  10000ull,
-                                  100000ull,
-                                  1000000ull,
-                                  10000000ull,
-                                  100000000ull,
-                                  1000000000ull,
-                                  10000000000ull,
-                                  100000000000ull,
-                                  1000000000000ull,
-                                  10000000000000ull,
-                                  100000000000000ull,
-                                  1000000000000000ull};
-
-double pow10(int n) {
-  return n >= 0 && n <= 22 ? kPow10[n] : std::pow(10.0, n);
-}
+using number_format_detail::kPow10;
 
 // `v` (finite, >= 0) rounded to `decimals` digits as the integer v·10^decimals, exactly as
 // printf/fmt round the exact binary value: false when the fast path cannot tell (an exact tie, or
@@ -43,9 +22,8 @@ bool scaled_digits(double v, int decimals, uint64_t& q) {
   const double p = kPow10[decimals];
   const double t = v * p;           // one rounding: |t - v·p| <= ulp(t)/2
   if (!(t < 0x1p50)) return false;  // ulp(t) <= 1/4: 0.5 lies on t's grid
-  const double whole = std::floor(t);
-  const double frac = t - whole;  // exact (Sterbenz)
-  q = static_cast<uint64_t>(whole);
+  q = static_cast<uint64_t>(t);     // floor: t >= 0 (an integer conversion, not a libm call)
+  const double frac = t - static_cast<double>(q);  // exact (Sterbenz)
   if (frac > 0.5) {
     ++q;  // frac >= 0.5 + ulp: the exact value is above the half too
   } else if (frac == 0.5) {
@@ -57,38 +35,43 @@ bool scaled_digits(double v, int decimals, uint64_t& q) {
   return true;
 }
 
-}  // namespace
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
 
-double rounded(double value, const NumberFormat& f) {
-  const double p = pow10(f.decimals);
-  return std::round(value * f.scale * p) / p;
+// Puts the `n` lowest decimal digits of `q` (zeros included) before `p`, two at a time; `q`
+// keeps the digits above them.
+char* put_low_digits(char* p, uint64_t& q, int n) {
+  for (; n >= 2; n -= 2, q /= 100)
+    p = static_cast<char*>(std::memcpy(p - 2, kDigitPairs + 2 * (q % 100), 2));
+  if (n > 0) *--p = static_cast<char>('0' + q % 10), q /= 10;
+  return p;
 }
 
-void append_number(std::string& out, double value, const NumberFormat& f) {
-  const double v = value * f.scale;
-  uint64_t q = 0;
-  if (std::isfinite(v) && scaled_digits(std::fabs(v), f.decimals, q)) {
-    // The hot path: what the general path below makes of fmt's digits, straight from q.
-    const uint64_t p = kPow10Int[f.decimals];
-    const uint64_t whole = q / p;
-    uint64_t frac = q % p;
-    int nd = f.decimals;  // fraction digits written
-    if (!f.trailing_zeros)
-      while (nd > 0 && frac % 10 == 0) frac /= 10, --nd;
-    char buf[48];
-    char* end = buf;
-    if (std::signbit(v) && q != 0) *end++ = '-';
-    if (f.leading_zero || whole != 0 || nd == 0) end = std::to_chars(end, buf + 24, whole).ptr;
-    if (nd > 0) {
-      *end++ = '.';
-      for (int i = nd - 1; i >= 0; --i, frac /= 10) end[i] = static_cast<char>('0' + frac % 10);
-      end += nd;
-    } else if (f.decimals > 0 && f.decimal_point) {
-      *end++ = '.';
-    }
-    out.append(buf, static_cast<size_t>(end - buf));
-    return;
+// Writes q = |value|·10^decimals (rounded) as format `f` says, from the right: fraction digits
+// (trailing zeros trimmed unless kept), the point, the whole digits.
+void append_scaled(std::string& out, uint64_t q, bool negative, const NumberFormat& f) {
+  char buf[48];
+  char* const end = buf + sizeof buf;
+  int nd = f.decimals;  // fraction digits written
+  if (!f.trailing_zeros)
+    while (nd > 0 && q % 10 == 0) q /= 10, --nd;
+  char* p = put_low_digits(end, q, nd);
+  if (nd > 0 || (f.decimals > 0 && f.decimal_point)) *--p = '.';
+  if (q != 0) {
+    while (q >= 10) p = put_low_digits(p, q, 2);
+    if (q != 0) *--p = static_cast<char>('0' + q);
+  } else if (f.leading_zero || nd == 0) {
+    *--p = '0';
   }
+  if (negative) *--p = '-';
+  out.append(p, static_cast<size_t>(end - p));
+}
+
+// The general path: fmt's digits, reshaped. Out of line, so that the hot path in
+// append_number() needs no stack frame for fmt.
+[[gnu::noinline]] void append_with_fmt(std::string& out, double v, const NumberFormat& f) {
   char buf[64];
   auto r = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", v, f.decimals);
   std::string_view s(buf, std::min(r.size, sizeof buf));
@@ -110,6 +93,19 @@ void append_number(std::string& out, double value, const NumberFormat& f) {
   } else if (f.decimals > 0 && f.decimal_point) {
     out += '.';
   }
+}
+
+}  // namespace
+
+void append_number(std::string& out, double value, const NumberFormat& f) {
+  const double v = value * f.scale;
+  uint64_t q = 0;
+  if (std::isfinite(v) && scaled_digits(std::fabs(v), f.decimals, q)) {
+    // The hot path: what append_with_fmt() makes of fmt's digits, straight from q.
+    append_scaled(out, q, std::signbit(v) && q != 0, f);
+    return;
+  }
+  append_with_fmt(out, v, f);
 }
 
 }  // namespace clpost

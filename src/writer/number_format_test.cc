@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace clpost {
@@ -105,6 +106,58 @@ TEST(NumberFormat, SameDigitsAsFmtEverywhere) {
       }
     }
   }
+}
+
+// rounded() rounds half away from zero without calling std::round: the same value, bit for bit
+// (the sign of a zero included).
+TEST(NumberFormat, RoundedIsStdRound) {
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                0.5,
+                                -0.5,
+                                1.5,
+                                2.5,
+                                -2.5,
+                                0.4999,
+                                -0.4999,
+                                0.49999999999999994,
+                                -0.49999999999999994,
+                                1e15,
+                                -1e15,
+                                4.5e15,
+                                0x1p52 - 0.5,
+                                0x1p52,
+                                0x1p53 + 2,
+                                1e300,
+                                -1e300,
+                                INFINITY,
+                                -INFINITY,
+                                1.0005,
+                                -1.0005};
+  uint64_t x = 0x2545F4914F6CDD1Dull;
+  for (int i = 0; i < 100000; ++i) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    const double v = (static_cast<double>(x >> 11) / 9007199254740992.0 - 0.5) * 2e4;
+    values.push_back(v);
+    values.push_back(std::round(v * 2) / 2);      // exact halves
+    values.push_back(std::round(v * 2e3) / 2e3);  // halves at the third decimal
+  }
+  auto bits = [](double d) {
+    uint64_t b;
+    std::memcpy(&b, &d, sizeof b);
+    return b;
+  };
+  for (int decimals : {0, 1, 3, 4}) {
+    for (double scale : {1.0, 1000.0}) {
+      NumberFormat f{decimals, false, true, true, scale};
+      const double p = std::pow(10.0, decimals);
+      for (double v : values) {
+        ASSERT_EQ(bits(rounded(v, f)), bits(std::round(v * scale * p) / p)) << v << " " << decimals;
+      }
+    }
+  }
+  NumberFormat f;
+  EXPECT_TRUE(std::isnan(rounded(NAN, f)));
 }
 
 TEST(NumberFormat, NotFiniteValuesAsFmtWritesThem) {
