@@ -63,9 +63,11 @@ struct BatchSettings {
   PostOptions post;
 };
 
-// Posts every item with `settings.jobs` workers. `on_result` is called once per item, in item
-// order, from one thread at a time (items that were not posted come with kNotPosted), as soon as
-// it and all items before it are done. Returns every result, in item order.
+// Posts every item with `settings.jobs` workers; one more thread publishes the programs they
+// write (fsync and rename, many at a time: see PublishQueue in batch.cc). `on_result` is called
+// once per item, in item order, from one thread at a time (items that were not posted come with
+// kNotPosted), as soon as it and all items before it are done (a program: published). Returns
+// every result, in item order.
 std::vector<FileResult> run_batch(const std::vector<BatchItem>& items, const Machine& machine,
                                   const BatchSettings& settings,
                                   const std::function<void(const FileResult&)>& on_result);

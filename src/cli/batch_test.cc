@@ -2,6 +2,7 @@
 // The whole command is tested through the binary in tests/batch_test.cc.
 #include "cli/batch.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <filesystem>
 
 #include "cli/batch_report.h"
+#include "machine/machine_loader.h"
 
 namespace clpost {
 namespace {
@@ -97,6 +99,48 @@ TEST(BatchOutputs, DuplicateStemsAreRefused) {
   std::string err;
   EXPECT_FALSE(plan_outputs({"a/part.cl", "c.cl", "b/part.apt"}, "out", ".nc", items, err));
   EXPECT_EQ(err, "'a/part.cl' and 'b/part.apt' would both be written to 'out/part.nc'");
+}
+
+// Programs are published in groups (one syncfs per group): with more files than a group holds,
+// every program is there after the batch, results come in input order, a failing file in the
+// middle fails alone (--keep-going), and no temporary file is left.
+TEST(BatchRun, ProgramsArePublishedInGroups) {
+  Machine m;
+  std::string errors;
+  ASSERT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
+  for (unsigned jobs : {1u, 2u}) {
+    TempDir d;
+    std::vector<std::string> files;
+    for (int i = 0; i < 75; ++i) {
+      const std::string name = fmt::format("in/p{:02}.cl", i);
+      files.push_back(d.touch(name));
+      std::FILE* f = std::fopen(files.back().c_str(), "w");
+      std::fputs(i == 40 ? "GOTO/1,2,\nFINI\n" : "RAPID\nGOTO/1,0,2\nFINI\n", f);
+      std::fclose(f);
+    }
+    std::vector<BatchItem> items;
+    std::string err;
+    ASSERT_TRUE(plan_outputs(files, d.path() + "/out", ".nc", items, err)) << err;
+    fs::create_directories(d.path() + "/out");
+    BatchSettings settings;
+    settings.jobs = jobs;
+    settings.keep_going = true;
+    std::vector<std::string> reported;
+    std::vector<FileResult> results = run_batch(items, m, settings, [&](const FileResult& r) {
+      reported.push_back(r.item.input);
+      EXPECT_EQ(fs::exists(r.item.output), r.status != FileStatus::kError) << r.item.input;
+    });
+    EXPECT_EQ(reported, files);  // in input order
+    ASSERT_EQ(results.size(), 75u);
+    for (size_t i = 0; i < results.size(); ++i) {
+      const bool bad = i == 40;
+      EXPECT_EQ(results[i].status, bad ? FileStatus::kError : FileStatus::kOk) << i;
+      EXPECT_EQ(fs::exists(items[i].output), !bad) << i;
+    }
+    EXPECT_EQ(static_cast<size_t>(std::distance(fs::directory_iterator(d.path() + "/out"),
+                                                fs::directory_iterator())),
+              74u);  // no temporary file left
+  }
 }
 
 FileResult result(FileStatus st, size_t errors, size_t warnings, std::vector<Diagnostic> kept) {

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 #include "cli/verify_command.h"
 #include "reader/cl_reader.h"
@@ -49,13 +50,13 @@ PostOutcome post_file(const PostRequest& req) {
     out.kept = diags.kept();
     return out;
   }
-  OutputFile file;
+  auto file = std::make_unique<OutputFile>();
   NullSink null_sink;
   Sink* sink = &null_sink;
   bool writing = !req.output.empty();
   if (writing) {
     std::string err;
-    if (!file.open(req.output, err)) {
+    if (!file->open(req.output, err)) {
       diags.error({}, {}, err);
       if (in != stdin) std::fclose(in);
       out.errors = diags.error_count();
@@ -63,7 +64,7 @@ PostOutcome post_file(const PostRequest& req) {
       out.kept = diags.kept();
       return out;
     }
-    sink = &file;
+    sink = file.get();
   }
   std::string own_copy;  // --verify: the program as written
   std::string& program = req.program != nullptr ? *req.program : own_copy;
@@ -108,11 +109,17 @@ PostOutcome post_file(const PostRequest& req) {
   }
   if (writing) {
     if (diags.has_errors() || verify_failed) {
-      file.abort();
+      file->abort();
     } else {
       std::string err;
-      out.bytes_out = file.bytes();
-      if (!file.commit(err)) diags.error({}, {}, err);
+      out.bytes_out = file->bytes();
+      if (!req.publish_later) {
+        if (!file->commit(err)) diags.error({}, {}, err);
+      } else if (file->finish(err)) {
+        req.publish_later(std::move(file));
+      } else {
+        diags.error({}, {}, err);
+      }
     }
   } else {
     out.bytes_out = null_sink.bytes;

@@ -2,11 +2,13 @@
 // Posting one CL file: read, interpret, write the NC program atomically (nothing is written when
 // the file has an error). Used by the CLI's post, check and plan commands and by the batch.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "interpreter/interpreter.h"
 #include "machine/machine.h"
+#include "support/output_file.h"
 
 namespace clpost {
 
@@ -21,6 +23,10 @@ struct PostRequest {
   bool verify = false;
   double verify_tolerance = 0;     // 0: the machine's
   std::string* program = nullptr;  // when set, gets a copy of the program (clpost plot)
+  // A batch publishes its programs in groups (OutputFile::publish_all: one syncfs for many
+  // fsyncs). When set, a good output is written out (OutputFile::finish) and handed here instead
+  // of being committed: it is not under its name until the caller has published it.
+  std::function<void(std::unique_ptr<OutputFile>)> publish_later = nullptr;
 };
 
 struct PostOutcome {

@@ -139,12 +139,20 @@ void OutputFile::close_fd() {
   owns_fd_ = false;
 }
 
+std::string OutputFile::target_name() const {
+  return mode_ == Mode::kSpool ? "standard output" : "'" + path_ + "'";
+}
+
 bool OutputFile::commit(std::string& error) {
+  return finish(error) && publish(error);
+}
+
+bool OutputFile::finish(std::string& error) {
   if (fd_ < 0) {
     error = "output is not open";
     return false;
   }
-  const std::string target = mode_ == Mode::kSpool ? "standard output" : "'" + path_ + "'";
+  const std::string target = target_name();
   if (!flush_buffer()) {
     error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
     abort();
@@ -181,6 +189,20 @@ bool OutputFile::commit(std::string& error) {
     if (!ok) error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
     return ok;
   }
+  std::string().swap(buffer_);  // kAtomic: written out; the buffer is not needed any more
+  return true;
+}
+
+bool OutputFile::publish(std::string& error) {
+  if (mode_ != Mode::kAtomic) return true;  // finish() did it all, or there is nothing
+  const std::string target = target_name();
+  if (!flush_buffer()) {  // publish() without finish()
+    error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
+    abort();
+    return false;
+  }
+  // The data must be on the disk before the rename makes it the program: after a crash the
+  // name holds the old program or the whole new one, never a part of it.
   if (::fsync(fd_) != 0 && errno != EINVAL) {
     error = fmt::format("cannot write {}: {}", target, std::strerror(errno));
     abort();
@@ -203,6 +225,25 @@ bool OutputFile::commit(std::string& error) {
   temp_.clear();
   mode_ = Mode::kClosed;
   return true;
+}
+
+void OutputFile::publish_all(const std::vector<OutputFile*>& files,
+                             std::vector<std::string>& errors) {
+  errors.assign(files.size(), std::string());
+  // One fsync per file costs one journal commit (and disk cache flush) per file: for a batch of
+  // small programs that is most of the time, and it serialises the workers on the disk. One
+  // syncfs() writes all of them at once; its result is not needed, as each file's fsync below
+  // still runs (cheap now that nothing is left to write) and reports that file's own errors
+  // (a writeback error is kept per file until an fsync of a descriptor opened before it takes
+  // it). syncfs also writes other programs' dirty data on the same filesystem; a batch only
+  // waits for that in its publishing thread, never in the workers (see batch.cc).
+  for (OutputFile* f : files) {
+    if (files.size() > 1 && f->mode_ == Mode::kAtomic && f->fd_ >= 0) {
+      ::syncfs(f->fd_);
+      break;
+    }
+  }
+  for (size_t i = 0; i < files.size(); ++i) files[i]->publish(errors[i]);
 }
 
 void OutputFile::abort() {

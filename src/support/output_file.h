@@ -12,6 +12,7 @@
 //   are reported by write() failing silently and commit() returning false.
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "support/sink.h"
 
@@ -28,8 +29,19 @@ class OutputFile : public Sink {
   bool open(const std::string& path, std::string& error);
   void write(std::string_view text) override;
   // Flushes and publishes the output. Returns false (and leaves nothing, except what was already
-  // streamed to a device) on a write error.
+  // streamed to a device) on a write error. The same as finish() then publish().
   bool commit(std::string& error);
+  // commit() in two steps, for outputs published together (publish_all): finish() writes out
+  // everything still buffered and keeps the temporary file open, unpublished; publish() makes it
+  // durable (fsync) and renames it over its target. A device or standard output is done with at
+  // finish(); publish() has nothing left to do for it.
+  bool finish(std::string& error);
+  bool publish(std::string& error);
+  // Publishes many finished outputs (a batch): their data goes to the disk with one syncfs()
+  // rather than one journal commit per file, then each is published as publish() does (its
+  // fsync, now cheap, still reports that file's own write errors). Nothing appears under its
+  // name before its bytes are on the disk. `errors[i]` is empty or says why files[i] failed.
+  static void publish_all(const std::vector<OutputFile*>& files, std::vector<std::string>& errors);
   // Drops everything written so far (a device keeps what it was already sent).
   void abort();
 
@@ -41,6 +53,7 @@ class OutputFile : public Sink {
   enum class Mode { kClosed, kAtomic, kSpool, kDirect };
   bool flush_buffer();
   void close_fd();
+  std::string target_name() const;
 
   std::string path_;    // target as given (messages)
   std::string target_;  // kAtomic: the file renamed over (a symbolic link resolved)

@@ -7,9 +7,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace clpost {
 namespace {
@@ -164,6 +166,48 @@ TEST(OutputFile, SymlinkToAFileReplacesTheFileAndKeepsTheLink) {
   EXPECT_TRUE(fs::is_symlink(d.path + "/link.nc"));
   EXPECT_EQ(slurp(d.path + "/real/part.nc"), "new\n");
   EXPECT_EQ(d.entries(), 2u);
+}
+
+// A batch publishes its programs together: finish() writes a program out without publishing
+// it; publish_all() makes all of them appear, each with its own result.
+TEST(OutputFile, FinishedFilesAppearOnlyWhenPublished) {
+  TempDir d;
+  std::vector<std::unique_ptr<OutputFile>> outs;
+  std::vector<OutputFile*> files;
+  std::string err;
+  for (const char* name : {"a.nc", "b.nc", "c.nc"}) {
+    outs.push_back(std::make_unique<OutputFile>());
+    ASSERT_TRUE(outs.back()->open(d.path + "/" + name, err)) << err;
+    outs.back()->write(std::string("G0 X1.\n") + name);
+    ASSERT_TRUE(outs.back()->finish(err)) << err;
+    files.push_back(outs.back().get());
+  }
+  EXPECT_FALSE(fs::exists(d.path + "/a.nc"));
+  EXPECT_FALSE(fs::exists(d.path + "/b.nc"));
+  fs::create_directory(d.path + "/c.nc");  // in the way: c's rename fails
+  EXPECT_EQ(d.entries(), 4u);              // three temporary files and c.nc/
+  std::vector<std::string> errors;
+  OutputFile::publish_all(files, errors);
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[0], "");
+  EXPECT_EQ(errors[1], "");
+  EXPECT_NE(errors[2].find("cannot write"), std::string::npos) << errors[2];
+  EXPECT_EQ(slurp(d.path + "/a.nc"), "G0 X1.\na.nc");
+  EXPECT_EQ(slurp(d.path + "/b.nc"), "G0 X1.\nb.nc");
+  EXPECT_TRUE(fs::is_directory(d.path + "/c.nc"));
+  EXPECT_EQ(d.entries(), 3u);  // the failed one's temporary file is gone
+}
+
+TEST(OutputFile, FinishedButNeverPublishedLeavesNothing) {
+  TempDir d;
+  {
+    OutputFile out;
+    std::string err;
+    ASSERT_TRUE(out.open(d.path + "/a.nc", err)) << err;
+    out.write("G0 X1.\n");
+    ASSERT_TRUE(out.finish(err)) << err;
+  }
+  EXPECT_EQ(d.entries(), 0u);
 }
 
 }  // namespace
