@@ -1,11 +1,19 @@
 #!/usr/bin/env bash
-# Builds and runs every test: the release build, then the same suite under AddressSanitizer and
-# UndefinedBehaviorSanitizer, then a 30-second libFuzzer run of each fuzz target (scripts/fuzz.sh).
+# Builds and runs every test: the formatting check (.clang-format), the release build, then the
+# same suite under AddressSanitizer and UndefinedBehaviorSanitizer, then a 30-second libFuzzer run
+# of each fuzz target (scripts/fuzz.sh).
 # Installs what is missing first (rs274 included, so the LinuxCNC checks run rather than skip).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh test
 jobs=$(nproc)
+
+echo "== formatting (clang-format --dry-run on every tracked source)"
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  git ls-files -z '*.cc' '*.h'
+else
+  find src tests bench fuzz -name '*.cc' -print0 -o -name '*.h' -print0
+fi | xargs -0 clang-format --dry-run --Werror
 
 echo "== release build and tests"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

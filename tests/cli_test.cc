@@ -72,7 +72,10 @@ TEST(Cli, StdinAndStdout) {
 TEST(Cli, MachinesListsTheShippedOnes) {
   RunResult r = run(bin() + " machines");
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_NE(r.out.find("generic-lathe      .nc   emulation                                Generic 2-axis ISO lathe"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("generic-lathe      .nc   emulation                                Generic "
+                       "2-axis ISO lathe"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("linuxcnc-lathe     .ngc  "), std::string::npos) << r.out;
 }
 

@@ -193,8 +193,8 @@ void NcProgram::thread(LathePoint p, const ThreadLead& l) {
   LathePoint from = pos_.value_or(p);
   // The lead is along the axis that travels further (radius against Z, as the controls
   // measure the thread's angle).
-  bool along_x = std::fabs(p.r - from.r) > std::fabs(p.z - from.z) &&
-                 !m_.thread_lead_address_x.empty();
+  bool along_x =
+      std::fabs(p.r - from.r) > std::fabs(p.z - from.z) && !m_.thread_lead_address_x.empty();
   const std::string& lead_addr = along_x ? m_.thread_lead_address_x : m_.thread_lead_address;
   if (l.lead_change != 0) {
     motion_code(m_.code(l.lead_change > 0 ? "thread_increasing" : "thread_decreasing"));
