@@ -54,6 +54,12 @@ bool linuxcnc_g76(State& s, const NcBlock& b) {
   w.e = word_or(s, b, "E", "g76_taper", 0);
   w.l = whole(word_or(s, b, "L", "L", 0), "L", 0, 3);
   if (bad) return true;
+  // The depths J n^(1/R) reach K after (K/J)^R passes: no more than a plan can hold.
+  if (w.j > 0 && w.k > w.j && std::pow(w.k / w.j, std::max(w.r, 1.0)) > kMaxCyclePasses + 1) {
+    s.error(first_col(b), fmt::format("G76 J{:g} K{:g} R{:g}: more than {} passes", w.j, w.k, w.r,
+                                      kMaxCyclePasses));
+    return true;
+  }
   std::string refused;
   const std::vector<Cut> cuts = expand_linuxcnc_g76(w, s.pos, s.diameter, &refused);
   if (!refused.empty()) {
