@@ -189,5 +189,33 @@ TEST(Verify, PostWithVerifyWritesNothingWhenTheMachineRoundsThePassesAway) {
       << r.err;
 }
 
+TEST(Verify, ABatchVerifiesEveryProgram) {
+  const std::string dir = temp_dir();
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " -m fanuc-0i-t --verify -d " + quote(dir) +
+                    " samples/threads/options.apt samples/threads/multistart.apt");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("ok        samples/threads/options.apt\n"
+                       "ok        samples/threads/multistart.apt\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(read_file(dir + "/options.nc"),
+            read_file(source_dir() + "/samples/golden/fanuc-0i-t/threads-options.nc"));
+  // X to 0.1 mm: every file fails with its first difference, and nothing is written.
+  const std::string bad = temp_dir();
+  r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+          " -m generic-lathe --set formats.X.decimals=1 --verify --keep-going -d " + quote(bad) +
+          " samples/threads/options.apt");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("error     samples/threads/options.apt: error: --verify: the program does "
+                       "not cut the plan: " +
+                       bad +
+                       "/options.nc:13: thread at samples/threads/options.apt:12: pass 1: depth "
+                       "0.3000, plan 0.3067 (tolerance 0.001) (+34 more)\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(file_exists(bad + "/options.nc"));
+}
+
 }  // namespace
 }  // namespace clpost::test

@@ -95,10 +95,11 @@ FileStatus status_of(const PostOutcome& o) {
 }
 
 // Posts one file; a good program is written out but left unpublished in `written`.
-void post_one(const BatchItem& item, const Machine& machine, const PostOptions& opts, FileResult& r,
-              std::unique_ptr<OutputFile>& written) {
+void post_one(const BatchItem& item, const Machine& machine, const BatchSettings& settings,
+              FileResult& r, std::unique_ptr<OutputFile>& written) {
   const auto t0 = std::chrono::steady_clock::now();
-  PostRequest req{item.input, item.output, &machine, opts, nullptr};
+  PostRequest req{item.input, item.output, &machine, settings.post, nullptr};
+  req.verify = settings.verify;
   req.publish_later = [&written](std::unique_ptr<OutputFile> file) { written = std::move(file); };
   r.outcome = post_file(req);
   r.status = status_of(r.outcome);
@@ -212,7 +213,7 @@ std::vector<FileResult> run_batch(const std::vector<BatchItem>& items, const Mac
       if (i >= n) return;
       FileResult& r = results[i];
       std::unique_ptr<OutputFile> written;
-      post_one(items[i], machine, settings.post, r, written);
+      post_one(items[i], machine, settings, r, written);
       if (written) {  // reported once published
         queue.add(i, std::move(written));
         continue;

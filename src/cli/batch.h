@@ -61,6 +61,7 @@ struct BatchSettings {
   unsigned jobs = 1;        // worker threads (at least 1)
   bool keep_going = false;  // without: no new file is started after the first failure
   PostOptions post;
+  bool verify = false;  // --verify: a program that does not cut its plan fails its file
 };
 
 // Posts every item with `settings.jobs` workers; one more thread publishes the programs they

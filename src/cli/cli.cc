@@ -115,7 +115,7 @@ void add_batch_opts(CLI::App& app, BatchOpts& b) {
 
 // Problems found before anything is posted (usage, the output directory) exit 2; failed files
 // exit 1.
-int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict,
+int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bool verify,
                       const std::vector<std::string>& args) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
@@ -146,6 +146,7 @@ int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict,
   settings.jobs = b.jobs != 0 ? b.jobs : std::max(1u, std::thread::hardware_concurrency());
   settings.keep_going = b.keep_going;
   settings.post = PostOptions{strict};
+  settings.verify = verify;
   const bool bar = !b.quiet && ::isatty(STDERR_FILENO) == 1;
   size_t done = 0, failed = 0;
   auto on_result = [&](const FileResult& r) {
@@ -358,11 +359,7 @@ int run_cli(int argc, char** argv) {
       print_err("clpost: error: -o and -d cannot be used together\n");
       return kExitUsage;
     }
-    if (verify_post) {
-      print_err("clpost: error: --verify posts one file at a time (no -d)\n");
-      return kExitUsage;
-    }
-    return run_batch_command(post_opts, batch, strict, inputs);
+    return run_batch_command(post_opts, batch, strict, verify_post, inputs);
   }
   if (inputs.size() > 1) {
     print_err("clpost: error: several inputs need an output directory: -d OUTDIR\n");

@@ -106,6 +106,9 @@ PostOutcome post_file(const PostRequest& req) {
     verify_diagnostics = std::move(v.diagnostics);
     verify_failed = !v.ok;
     out.errors += v.errors;
+    // One line on the CL file too (a batch shows each file's first error).
+    if (verify_failed)
+      diags.error({}, {}, "--verify: the program does not cut the plan: " + v.first_error);
   }
   if (writing) {
     if (diags.has_errors() || verify_failed) {

@@ -34,6 +34,11 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
   }
   out.errors = diags.error_count();
   out.diagnostics = diags.render_all();
+  for (const Diagnostic& d : diags.kept())
+    if (d.severity == Severity::kError) {
+      out.first_error = fmt::format("{}:{}: {}", program_name, d.loc.line, d.message);
+      break;
+    }
   return out;
 }
 

@@ -15,6 +15,7 @@ struct VerifyOutcome {
   std::string report;       // for standard output
   std::string diagnostics;  // rendered, for standard error
   size_t errors = 0;
+  std::string first_error;  // "PROGRAM:LINE: message" of the first error, for one-line summaries
 };
 
 // Verifies the program read from `src` (shown as `program_name`) against `plans`.
