@@ -41,6 +41,7 @@ std::vector<Cut> expand_haas_g76(const HaasG76Words& w, Vec2 start, const HaasSe
     // The shifted-end rule needs the deepest shift of the whole cycle.
     FlankCycle gi = i % 2 == 1 ? g : radial;
     std::vector<Cut> c = expand_flank_cycle(gi, one, start_index);
+    if (c.empty()) return {};  // words the figure cannot draw (a pass at no depth, ...)
     if (gi.shifted_end && gi.flank > 0) {
       const double h_max = *std::max_element(depths.begin(), depths.end());
       const double tan_f = std::tan(gi.flank * 3.14159265358979323846 / 180);

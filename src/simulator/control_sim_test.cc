@@ -205,6 +205,15 @@ TEST(ControlSim, CycleErrorsNameTheWords) {
             "  N 20 G31 F1.5 U0.92 IC4 V0 H0\n       ^\n");
 }
 
+TEST(ControlSim, AHaasG76OfNoLengthCutsNothing) {
+  // Found by nc_verify_fuzzer (UBSan): alternating infeed (P2) from the thread's own end read
+  // the first cut of an empty expansion.
+  EXPECT_EQ(
+      run(shipped("haas-st"), "G0 X20 Z-20\nG76 X14.16 Z-20. K0.92 D0.3 A60 P2 F1.5\n").diagnostics,
+      "p.nc:2:1: error: G76 cuts nothing from Z-20 to Z-20: height K 0.92, first cut D 0.3\n"
+      "  G76 X14.16 Z-20. K0.92 D0.3 A60 P2 F1.5\n  ^\n");
+}
+
 TEST(ControlSim, CycleCountsOutOfRangeAreRefusedNotRun) {
   // Found by nc_verify_fuzzer: G31 asking for 180000 air cuts (Q) ran them all.
   EXPECT_EQ(run(shipped("heidenhain-pilot"),

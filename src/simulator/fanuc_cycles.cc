@@ -71,8 +71,9 @@ bool fanuc_g76(State& s, const NcBlock& b) {
   const std::vector<Cut> cuts = expand_fanuc_g76(w, s.pos, law);
   if (cuts.empty()) {
     s.error(b.words.front().col,
-            fmt::format("G76 cuts nothing: height P {:g}, first cut Q {:g}, minimum cut {:g}",
-                        w.height, w.first_cut, w.min_cut));
+            fmt::format("G76 cuts nothing from Z{:g} to Z{:g}: height P {:g}, first cut Q {:g}, "
+                        "minimum cut {:g}",
+                        s.pos.z, w.z, w.height, w.first_cut, w.min_cut));
     return true;
   }
   const Vec2 start = s.pos;
@@ -107,8 +108,9 @@ bool haas_g76(State& s, const NcBlock& b) {
   const CycleLaw law{true, s.m.cycle_shifted_end, settings.chamfer_angle};
   const std::vector<Cut> cuts = expand_haas_g76(w, s.pos, settings, law, 1);
   if (cuts.empty()) {
-    s.error(b.words.front().col, fmt::format("G76 cuts nothing: height K {:g}, first cut D {:g}",
-                                             w.height, w.first_cut));
+    s.error(b.words.front().col,
+            fmt::format("G76 cuts nothing from Z{:g} to Z{:g}: height K {:g}, first cut D {:g}",
+                        s.pos.z, w.z, w.height, w.first_cut));
     return true;
   }
   const Vec2 start = s.pos;
