@@ -17,6 +17,7 @@ namespace {
 using testing::check_xml;
 using testing::count_of;
 using testing::numbers_in;
+using testing::parsed;
 using testing::XmlDoc;
 
 Move mv(MoveKind k, Vec2 from, Vec2 to, Vec2 center = {}) {
@@ -53,15 +54,6 @@ Toolpath small_part() {
   for (Move& m : tp.moves)
     if (m.kind == MoveKind::kThread) m.lead = 1.5;
   return tp;
-}
-
-XmlDoc parsed(const std::string& svg) {
-  XmlDoc d = check_xml(svg);
-  EXPECT_TRUE(d.ok) << d.error;
-  if (d.ok) {
-    EXPECT_EQ(d.elements.front().tag, "svg");
-  }
-  return d;
 }
 
 TEST(BackplotSvg, OnePathPerRunOfOneKind) {

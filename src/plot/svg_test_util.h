@@ -1,6 +1,8 @@
 #pragma once
 // Test helper for the plot tests: a small XML well-formedness checker that also lists the
 // elements, so tests can count them and read their attributes and text.
+#include <gtest/gtest.h>
+
 #include <cctype>
 #include <cstdlib>
 #include <map>
@@ -203,6 +205,16 @@ inline size_t count_of(std::string_view hay, std::string_view needle) {
   size_t n = 0;
   for (size_t i = hay.find(needle); i != std::string_view::npos; i = hay.find(needle, i + 1)) ++n;
   return n;
+}
+
+// check_xml() with the expectations every picture meets: well-formed, one <svg> root.
+inline XmlDoc parsed(const std::string& svg) {
+  XmlDoc d = check_xml(svg);
+  EXPECT_TRUE(d.ok) << d.error;
+  if (d.ok) {
+    EXPECT_EQ(d.elements.front().tag, "svg");
+  }
+  return d;
 }
 
 }  // namespace clpost::testing

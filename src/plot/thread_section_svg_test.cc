@@ -16,6 +16,7 @@ namespace {
 
 using testing::check_xml;
 using testing::numbers_in;
+using testing::parsed;
 using testing::XmlDoc;
 using testing::XmlElement;
 
@@ -36,15 +37,6 @@ ThreadSection five_passes_two_starts() {
               {2, 1, 0.7, 0.7 * kTan30, PassKind::kRough},
               {3, 0, 0.9, 0.9 * kTan30, PassKind::kFinish}};
   return s;
-}
-
-XmlDoc parsed(const std::string& svg) {
-  XmlDoc d = check_xml(svg);
-  EXPECT_TRUE(d.ok) << d.error;
-  if (d.ok) {
-    EXPECT_EQ(d.elements.front().tag, "svg");
-  }
-  return d;
 }
 
 // The V path of the pass group at `g` (the first <path> after it) and its tip (the middle point).
