@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
+#include "reader/number.h"
 
 namespace clpost {
 
@@ -32,27 +32,6 @@ std::string_view trim(std::string_view s) {
   while (!s.empty() && (is_blank(s.front()))) s.remove_prefix(1);
   while (!s.empty() && (is_blank(s.back()) || s.back() == '\r')) s.remove_suffix(1);
   return s;
-}
-
-// A number as the controls write it: [+-] digits [. digits], at least one digit.
-bool parse_number(std::string_view t, double& v) {
-  if (t.empty()) return false;
-  size_t i = 0;
-  if (t[0] == '+' || t[0] == '-') i = 1;
-  bool digit = false, point = false;
-  for (size_t j = i; j < t.size(); ++j) {
-    if (is_digit(t[j])) {
-      digit = true;
-    } else if (t[j] == '.' && !point) {
-      point = true;
-    } else {
-      return false;
-    }
-  }
-  if (!digit) return false;
-  std::string_view body = t.substr(t[0] == '+' ? 1 : 0);
-  auto r = std::from_chars(body.data(), body.data() + body.size(), v);
-  return r.ec == std::errc() && r.ptr == body.data() + body.size();
 }
 
 struct Lexer {
@@ -136,8 +115,15 @@ struct Lexer {
            s[end] != '[' && s[end] != ';')
       ++end;
     w.text = std::string(s.substr(i, end - i));
-    if (!parse_number(w.text, w.value))
-      return fail(start, fmt::format("invalid number '{}{}'", w.address, w.text));
+    // The CL reader's number grammar (no exponent here: a letter ends the number).
+    switch (reader::parse_number(w.text, w.value)) {
+      case reader::NumberStatus::kOk:
+        break;
+      case reader::NumberStatus::kInvalid:
+        return fail(start, fmt::format("invalid number '{}{}'", w.address, w.text));
+      case reader::NumberStatus::kOutOfRange:
+        return fail(start, fmt::format("number out of range '{}{}'", w.address, w.text));
+    }
     i = end;
     b.words.push_back(std::move(w));
     return true;

@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 
 #include "nc_reader/nc_lexer.h"
+#include "reader/number.h"
 #include "simulator/sim_state.h"
 
 namespace clpost {
@@ -21,8 +21,7 @@ Code parse_code(std::string_view text) {
   }
   if (i < text.size()) {
     double v = 0;
-    auto r = std::from_chars(text.data() + i, text.data() + text.size(), v);
-    if (r.ec == std::errc() && r.ptr == text.data() + text.size()) {
+    if (reader::parse_number(text.substr(i), v) == reader::NumberStatus::kOk) {
       c.number = v;
     } else {
       c.address = std::string(text);  // "[METRIC]": matched against the line itself

@@ -2,7 +2,6 @@
 // Laws: emitters/linuxcnc_law.h, emitters/heidenhain_law.h, emitters/siemens_law.h.
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <map>
 
@@ -10,6 +9,7 @@
 #include "emitters/heidenhain_law.h"
 #include "emitters/linuxcnc_law.h"
 #include "emitters/siemens_law.h"
+#include "reader/number.h"
 #include "simulator/sim_state.h"
 
 namespace clpost::sim {
@@ -193,9 +193,7 @@ bool cycle99_call(State& s, const NcBlock& b) {
     const std::string& a = call->args[it->second];
     if (a.empty()) return fallback;
     double v = 0;
-    std::string_view body = a[0] == '+' ? std::string_view(a).substr(1) : std::string_view(a);
-    auto r = std::from_chars(body.data(), body.data() + body.size(), v);
-    if (r.ec != std::errc() || r.ptr != body.data() + body.size()) {
+    if (reader::parse_number(a, v) != reader::NumberStatus::kOk) {
       s.error(call->cols[it->second], fmt::format("{} argument {} ({}): invalid number '{}'", name,
                                                   it->second + 1, field, a));
       ok = false;
