@@ -8,15 +8,16 @@
 
 #include "emitters/cut_pass.h"
 #include "nc_reader/nc_block.h"
+#include "planner/thread_words.h"
 #include "simulator/control_sim.h"
 
 namespace clpost::sim {
 
 // How much of a block's text a cut keeps for its diagnostics (memory stays bounded).
 constexpr size_t kKeptLineText = 256;
-// The most cuts a cycle's count words may ask for: the planner's limit for one thread
-// (planner/thread_words.h kMaxPasses), so a program can do no more than a plan can.
-constexpr int kMaxCyclePasses = 200;
+// The most cuts a cycle's count words may ask for: what one thread's plan may hold, so a program
+// can do no more than a plan can.
+constexpr int kMaxCyclePasses = kMaxPasses;
 
 // A code of the machine (codes: / a template's first word) as address and number: "G33" is
 // {"G", 33}; "DIAMON" is {"DIAMON", none}.

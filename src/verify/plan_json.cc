@@ -6,10 +6,19 @@
 #include <cmath>
 
 #include "machine/yaml_text.h"
+#include "planner/plan_format.h"
 
 namespace clpost {
 
 namespace {
+
+// The enum value whose name (plan_format.h, the names the JSON was written with) is `text`.
+template <typename E, size_t N>
+E named(const std::string& text, const E (&values)[N], const char* (*name)(E)) {
+  for (E v : values)
+    if (text == name(v)) return v;
+  return values[0];
+}
 
 struct Reader {
   const YamlText& text;
@@ -78,27 +87,26 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
     return false;
   }
   const std::string units = r.word(root, "units");
-  if (r.ok && units != "mm" && units != "in")
+  if (r.ok && units != units_name(LengthUnit::kMm) && units != units_name(LengthUnit::kInch))
     r.error(root["units"].Mark(), fmt::format("plan JSON: units '{}', expected mm or in", units));
   YAML::Node threads = r.need(root, "threads");
   if (!r.ok) return false;
   for (const YAML::Node& t : threads) {
     ThreadPlan p;
-    p.units = units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+    p.units = units == units_name(LengthUnit::kInch) ? LengthUnit::kInch : LengthUnit::kMm;
     p.loc.line = static_cast<uint32_t>(std::max(0.0, r.number(t, "line")));
     p.loc.col = 1;
     const std::string form = r.word(t, "form");
-    if (r.ok && form != "multi") {
+    if (r.ok && form != form_name(ThreadForm::kMulti)) {
       r.error(t.Mark(), fmt::format("thread at line {}: a {} thread's path is not in the plan "
                                     "JSON; verify against the CL file (--cl)",
                                     p.loc.line, form));
       continue;
     }
-    const std::string kind = r.word(t, "kind");
-    p.kind = kind == "face"    ? ThreadKind::kFace
-             : kind == "taper" ? ThreadKind::kTaper
-                               : ThreadKind::kTurn;
-    p.side = r.word(t, "side") == "internal" ? ThreadSide::kInternal : ThreadSide::kExternal;
+    constexpr ThreadKind kKinds[] = {ThreadKind::kTurn, ThreadKind::kFace, ThreadKind::kTaper};
+    constexpr ThreadSide kSides[] = {ThreadSide::kExternal, ThreadSide::kInternal};
+    p.kind = named(r.word(t, "kind"), kKinds, kind_name);
+    p.side = named(r.word(t, "side"), kSides, side_name);
     p.pitch.set = true;
     p.pitch.pitch = r.number(t, "pitch");
     p.lead = r.number(t, "lead");
@@ -119,10 +127,8 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
       s.n = static_cast<int>(std::lround(r.number(q, "n")));
       s.start = static_cast<int>(std::lround(r.number(q, "start")));
       s.depth = r.number(q, "depth");
-      const std::string k = r.word(q, "kind");
-      s.kind = k == "finish"   ? PassKind::kFinish
-               : k == "spring" ? PassKind::kSpring
-                               : PassKind::kRough;
+      constexpr PassKind kPassKinds[] = {PassKind::kRough, PassKind::kFinish, PassKind::kSpring};
+      s.kind = named(r.word(q, "kind"), kPassKinds, pass_kind_name);
       s.shift = r.number(q, "shift");
       s.from = r.point(q, "from");
       s.to = r.point(q, "to");
