@@ -128,66 +128,86 @@ class Comparer {
     return s;
   }
 
-  Compared compare(const ExpectedCut& e, const NcCut& c) const {
+  // `explain`: spell out the difference (the alignment asks only for the cost, once per cell of
+  // its band, so it must not format text).
+  Compared compare(const ExpectedCut& e, const NcCut& c, bool explain = true) const {
     const ThreadPlan& plan = plans_[e.thread];
     const Frame& f = frames_[e.thread];
     Compared r;
-    auto differ = [&](std::string why) {
+    auto differ = [&](auto&& why) {
       r.cost = 1;
-      r.why = std::move(why);
+      if (explain) r.why = why();
       return r;
     };
     const double tol = tol_ + 1e-9;
     if (plan.lead <= 0 || std::fabs(c.lead - plan.lead) > 0.05 * plan.lead) {
       r.cost = 2;
-      r.why = fmt::format("lead {:.6g}, plan {:.6g}", c.lead, plan.lead);
+      if (explain) r.why = fmt::format("lead {:.6g}, plan {:.6g}", c.lead, plan.lead);
       return r;
     }
     if (std::fabs(c.lead - plan.lead) * f.turns > tol)
-      return differ(
-          fmt::format("lead {:.6f}, plan {:.6f}: {:.4f} off over the thread's {:.1f} "
-                      "turns (tolerance {:g})",
-                      c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns, tol_));
+      return differ([&] {
+        return fmt::format(
+            "lead {:.6f}, plan {:.6f}: {:.4f} off over the thread's {:.1f} "
+            "turns (tolerance {:g})",
+            c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns, tol_);
+      });
     if (std::fabs(c.lead_change - plan.pitch.lead_change) > 1e-9)
-      return differ(fmt::format("lead change {:g} per revolution, plan {:g}", c.lead_change,
-                                plan.pitch.lead_change));
+      return differ([&] {
+        return fmt::format("lead change {:g} per revolution, plan {:g}", c.lead_change,
+                           plan.pitch.lead_change);
+      });
     if (plan.pitch.starts > 1 && c.start >= 0 && c.start != e.start)
-      return differ(fmt::format("start {}, plan start {}", c.start + 1, e.start + 1));
+      return differ(
+          [&] { return fmt::format("start {}, plan start {}", c.start + 1, e.start + 1); });
     if (c.start_angle) {
       const double want = plan.starts_by_angle ? e.start_angle : 0;
       if (angle_diff(*c.start_angle, want) > 0.01)
-        return differ(fmt::format("start angle {:g} deg, plan {:g} deg", *c.start_angle, want));
+        return differ([&] {
+          return fmt::format("start angle {:g} deg, plan {:g} deg", *c.start_angle, want);
+        });
     }
     if (plan.form != ThreadForm::kMulti) {
       if (length(c.from - e.from) > tol)
-        return differ(fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from),
-                                  point(e.from), tol_));
+        return differ([&] {
+          return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
+                             tol_);
+        });
       for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
         if (length(c.chain[i] - e.chain[i]) > tol)
-          return differ(fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
-                                    point(c.chain[i]), point(e.chain[i]), tol_));
+          return differ([&] {
+            return fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
+                               point(c.chain[i]), point(e.chain[i]), tol_);
+          });
       if (c.chain.size() != e.chain.size())
-        return differ(
-            fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size()));
+        return differ([&] {
+          return fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size());
+        });
       return r;
     }
     const SectionPass at = measure(e, c);
     const double depth = at.depth;
     if (std::fabs(depth - e.depth) > tol)
-      return differ(
-          fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_));
+      return differ([&] {
+        return fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_);
+      });
     const double shift = at.shift;
     if (std::fabs(shift - e.shift) > tol)
-      return differ(
-          fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_));
+      return differ([&] {
+        return fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_);
+      });
     if (length(c.from - e.from) > tol)
-      return differ(fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from),
-                                point(e.from), tol_));
+      return differ([&] {
+        return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
+                           tol_);
+      });
     const bool accept_end = c.fixed_end && m_.accept_pass_end;
     if (length(c.to - e.to) > tol) {
       if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > tol)
-        return differ(
-            fmt::format("ends at {}, plan {} (tolerance {:g})", point(c.to), point(e.to), tol_));
+        return differ([&] {
+          return fmt::format("ends at {}, plan {} (tolerance {:g})", point(c.to), point(e.to),
+                             tol_);
+        });
       r.accepted = std::max(r.accepted, std::fabs(dot(c.to - e.to, f.u)));
     }
     // A pull-out cut with G1 (chamfer angle outside the G33 range) ends after the cut.
@@ -196,8 +216,10 @@ class Comparer {
         planned_pullout && c.chain.size() == 1 && c.linear_pullout ? *c.linear_pullout : c.end;
     if (length(end - e.end) > tol) {
       if (!accept_end || std::fabs(dot(end - e.end, f.n)) > tol)
-        return differ(fmt::format("pull-out ends at {}, plan {} (tolerance {:g})", point(end),
-                                  point(e.end), tol_));
+        return differ([&] {
+          return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})", point(end),
+                             point(e.end), tol_);
+        });
       r.accepted = std::max(r.accepted, std::fabs(dot(end - e.end, f.u)));
     }
     return r;
@@ -236,7 +258,7 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
   const Comparer cmp(plans, m, report.tolerance);
   std::vector<AlignedPair> pairs = align_sequences(
       expected.size(), order.size(),
-      [&](size_t i, size_t j) { return cmp.compare(expected[i], sim.cuts[order[j]]).cost; });
+      [&](size_t i, size_t j) { return cmp.compare(expected[i], sim.cuts[order[j]], false).cost; });
 
   auto thread_name = [&](size_t t) {
     return fmt::format("thread at {}:{}", options.plan_name, plans[t].loc.line);
