@@ -13,6 +13,7 @@
 #include "plot/thread_section.h"
 #include "plot/thread_section_svg.h"
 #include "simulator/control_sim.h"
+#include "support/input_file.h"
 #include "support/output_file.h"
 #include "verify/verify.h"
 
@@ -27,11 +28,9 @@ struct Plans {
   std::string diagnostics;
 };
 
-Plans plans_of(const std::string& cl, const Machine& m) {
+Plans plans_of_cl(const std::string& cl, const Machine& m) {
   Plans p;
-  PostRequest req{cl, "", &m, PostOptions{}, [&](const ThreadPlan& t) { p.plans.push_back(t); }};
-  req.program = &p.program;
-  PostOutcome r = post_file(req);
+  PostOutcome r = plans_of(cl, m, p.plans, &p.program);
   p.ok = r.ok;
   p.diagnostics = r.diagnostics;
   return p;
@@ -48,15 +47,15 @@ bool simulate_text(std::string_view text, const std::string& name, const Machine
 
 bool simulate_file(const std::string& path, const Machine& m, Simulation& sim,
                    std::string& diagnostics) {
-  std::FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
-  if (f == nullptr) {
-    diagnostics += fmt::format("{}: error: cannot open: {}\n", path, std::strerror(errno));
+  InputFile f;
+  std::string error;
+  if (!f.open(path, error)) {
+    diagnostics += fmt::format("{}: error: {}\n", path, error);
     return false;
   }
   Diagnostics d(display_name(path));
-  reader::LineSource src(f);
+  reader::LineSource src(f.get());
   const bool ok = simulate_nc(src, m, d, sim);
-  if (f != stdin) std::fclose(f);
   diagnostics += d.render_all();
   return ok;
 }
@@ -70,7 +69,7 @@ PlotOutcome plot_file(const PlotRequest& req) {
   std::vector<ThreadSection> sections;
   std::string title;
   if (is_cl_file_name(req.input)) {
-    Plans p = plans_of(req.input, m);
+    Plans p = plans_of_cl(req.input, m);
     out.diagnostics += p.diagnostics;
     if (!p.ok) return out;
     if (!simulate_text(p.program, "<program of " + display_name(req.input) + ">", m, sim,
@@ -82,7 +81,7 @@ PlotOutcome plot_file(const PlotRequest& req) {
     if (!simulate_file(req.input, m, sim, out.diagnostics)) return out;
     title = fmt::format("{} on {}", display_name(req.input), m.name);
     if (!req.cl.empty()) {
-      Plans p = plans_of(req.cl, m);
+      Plans p = plans_of_cl(req.cl, m);
       out.diagnostics += p.diagnostics;
       if (!p.ok) return out;
       Diagnostics d(display_name(req.input));

@@ -9,6 +9,7 @@
 
 #include "cli/verify_command.h"
 #include "reader/cl_reader.h"
+#include "support/input_file.h"
 #include "support/output_file.h"
 #include "writer/nc_program.h"
 
@@ -42,9 +43,10 @@ std::string display_name(const std::string& input) {
 PostOutcome post_file(const PostRequest& req) {
   PostOutcome out;
   Diagnostics diags(display_name(req.input));
-  std::FILE* in = req.input == "-" ? stdin : std::fopen(req.input.c_str(), "rb");
-  if (in == nullptr) {
-    diags.error({}, {}, fmt::format("cannot open: {}", std::strerror(errno)));
+  InputFile input;
+  std::string open_error;
+  if (!input.open(req.input, open_error)) {
+    diags.error({}, {}, open_error);
     out.errors = 1;
     out.diagnostics = diags.render_all();
     out.kept = diags.kept();
@@ -58,7 +60,6 @@ PostOutcome post_file(const PostRequest& req) {
     std::string err;
     if (!file->open(req.output, err)) {
       diags.error({}, {}, err);
-      if (in != stdin) std::fclose(in);
       out.errors = diags.error_count();
       out.diagnostics = diags.render_all();
       out.kept = diags.kept();
@@ -82,7 +83,7 @@ PostOutcome post_file(const PostRequest& req) {
     } else if (req.on_thread) {
       interp.on_thread(req.on_thread);
     }
-    ClReader reader(in, diags);
+    ClReader reader(input.get(), diags);
     Statement st;
     while (reader.next(st)) interp.statement(st);
     if (interp.stats().statements == 0 && !diags.has_errors()) {
@@ -94,7 +95,6 @@ PostOutcome post_file(const PostRequest& req) {
     out.units = interp.units();
     out.bytes_in = reader.bytes_read();
   }
-  if (in != stdin) std::fclose(in);
   std::string verify_diagnostics;
   bool verify_failed = false;
   if (req.verify && !diags.has_errors()) {
@@ -133,6 +133,13 @@ PostOutcome post_file(const PostRequest& req) {
   out.diagnostics = diags.render_all() + verify_diagnostics;
   out.kept = diags.kept();
   return out;
+}
+
+PostOutcome plans_of(const std::string& cl, const Machine& m, std::vector<ThreadPlan>& plans,
+                     std::string* program) {
+  PostRequest req{cl, "", &m, PostOptions{}, [&](const ThreadPlan& p) { plans.push_back(p); }};
+  req.program = program;
+  return post_file(req);
 }
 
 }  // namespace clpost

@@ -44,6 +44,11 @@ struct PostOutcome {
 
 PostOutcome post_file(const PostRequest& req);
 
+// The thread plans of the CL file `cl` on machine `m`, nothing written; `program`, when given,
+// gets the NC program it posts (clpost verify, clpost plot).
+PostOutcome plans_of(const std::string& cl, const Machine& m, std::vector<ThreadPlan>& plans,
+                     std::string* program = nullptr);
+
 // The name a file is shown by in diagnostics ("<stdin>" for "-").
 std::string display_name(const std::string& input);
 

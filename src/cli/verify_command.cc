@@ -8,6 +8,7 @@
 
 #include "cli/post_file.h"
 #include "simulator/control_sim.h"
+#include "support/input_file.h"
 #include "verify/plan_json.h"
 #include "verify/verify.h"
 
@@ -46,18 +47,15 @@ namespace {
 
 bool plans_from_json(const std::string& path, const Machine& m, std::vector<ThreadPlan>& plans,
                      VerifyOutcome& out) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) {
+  InputFile f;
+  std::string error;
+  if (!f.open(path, error)) {
     out.errors = 1;
-    out.diagnostics = fmt::format("{}: error: cannot open: {}\n", path, std::strerror(errno));
+    out.diagnostics = fmt::format("{}: error: {}\n", path, error);
     return false;
   }
-  std::string text;
-  char buf[65536];
-  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
-  std::fclose(f);
   Diagnostics d(path);
-  if (read_plan_json(text, m, plans, d)) return true;
+  if (read_plan_json(f.read_all(), m, plans, d)) return true;
   out.errors = d.error_count();
   out.diagnostics = d.render_all();
   return false;
@@ -72,8 +70,7 @@ VerifyOutcome verify_files(const std::string& program, const std::string& cl,
     VerifyOutcome out;
     if (!plans_from_json(plan_json, m, plans, out)) return out;
   } else {
-    PostRequest req{cl, "", &m, PostOptions{}, [&](const ThreadPlan& p) { plans.push_back(p); }};
-    PostOutcome posted = post_file(req);
+    PostOutcome posted = plans_of(cl, m, plans);
     if (!posted.ok) {
       VerifyOutcome out;
       out.errors = posted.errors;
@@ -83,19 +80,19 @@ VerifyOutcome verify_files(const std::string& program, const std::string& cl,
       return out;
     }
   }
-  std::FILE* f = program == "-" ? stdin : std::fopen(program.c_str(), "rb");
-  if (f == nullptr) {
+  InputFile f;
+  std::string error;
+  if (!f.open(program, error)) {
     VerifyOutcome out;
     out.errors = 1;
-    out.diagnostics = fmt::format("{}: error: cannot open: {}\n", program, std::strerror(errno));
+    out.diagnostics = fmt::format("{}: error: {}\n", program, error);
     return out;
   }
-  reader::LineSource src(f);
+  reader::LineSource src(f.get());
   VerifyOutcome out = verify_program(src, display_name(program), plans,
                                      cl.empty() ? plan_json : display_name(cl), m, tolerance);
   // The CL file's own notes and warnings were shown when it was posted; verify is about the
   // program.
-  if (f != stdin) std::fclose(f);
   return out;
 }
 
