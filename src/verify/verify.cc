@@ -71,23 +71,20 @@ std::vector<size_t> cutting_order(const std::vector<NcCut>& cuts) {
   for (size_t g = 0; g < groups.size();) {
     size_t h = g + 1;
     while (h < groups.size() && same_shape(groups[g], groups[h])) ++h;
-    // (rank within its start, start) for every cut of groups g..h-1.
+    // Each cut's rank within its start (its call's start, or its call when one call is one
+    // start); a stable sort by rank keeps the starts in the order they were cut.
     struct Key {
       size_t rank;
-      size_t start;
       size_t index;
     };
     std::vector<Key> keys;
     for (size_t k = g; k < h; ++k) {
       std::map<int, size_t> rank;
-      for (size_t i = groups[k].begin; i < groups[k].end; ++i) {
-        const int start = cuts[i].start >= 0 ? cuts[i].start : 0;
-        keys.push_back({rank[start]++, (k - g) * 1000 + static_cast<size_t>(start), i});
-      }
+      for (size_t i = groups[k].begin; i < groups[k].end; ++i)
+        keys.push_back({rank[cuts[i].start]++, i});
     }
-    std::stable_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-      return a.rank != b.rank ? a.rank < b.rank : a.start < b.start;
-    });
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const Key& a, const Key& b) { return a.rank < b.rank; });
     for (const Key& k : keys) order.push_back(k.index);
     g = h;
   }
