@@ -40,6 +40,9 @@ std::string suggestion(std::string_view key, const std::vector<std::string>& val
   size_t best = 3;  // at most two edits away
   std::string found;
   for (const std::string& v : valid) {
+    // The distance is at least the difference in length: a long garbage key costs nothing.
+    size_t gap = key.size() > v.size() ? key.size() - v.size() : v.size() - key.size();
+    if (gap >= best) continue;
     size_t d = edit_distance(key, v);
     if (d < best) best = d, found = v;
   }
