@@ -50,7 +50,7 @@ void Interpreter::note_once(const Statement& st, std::string_view key, std::stri
   diags_.note(st.loc, st.line_text(st.loc.line), std::move(msg));
 }
 
-bool Interpreter::number_arg(const Statement& st, size_t i, std::string_view what, double& out) {
+bool Interpreter::bad_number_arg(const Statement& st, size_t i, std::string_view what) {
   if (i >= st.args.size()) {
     SourceLoc end = st.args.empty() ? st.loc : st.args.back().loc;
     error(st, end, fmt::format("{}/ needs {} (argument {})", st.major, what, i + 1));
@@ -61,9 +61,7 @@ bool Interpreter::number_arg(const Statement& st, size_t i, std::string_view wha
     error(st, a.loc, fmt::format("expected {} but found '{}'", what, a.text));
     return false;
   }
-  if (!in_range(st, a, what)) return false;
-  out = a.number;
-  return true;
+  return in_range(st, a, what);  // false: its error is reported
 }
 
 bool Interpreter::in_range(const Statement& st, const Arg& a, std::string_view what) {

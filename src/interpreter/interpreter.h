@@ -2,6 +2,7 @@
 // The interpreter: CL statements in, NC program out. It keeps the CL's modal state (units, feed,
 // spindle, RAPID, CIRCLE, PITCH, thread sequences), maps the CL frame onto the lathe, and drives
 // NcProgram and the machine's thread emitter. One Interpreter per file; no shared state.
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -92,7 +93,16 @@ class Interpreter {
   void error(const Statement& st, SourceLoc loc, std::string msg);
   void warning(const Statement& st, SourceLoc loc, std::string msg);
   void note_once(const Statement& st, std::string_view key, std::string msg);
-  bool number_arg(const Statement& st, size_t i, std::string_view what, double& out);
+  // Argument i as a number within ±kMaxValue: inline for the common case (every GOTO coordinate
+  // comes here), the diagnostics out of line.
+  bool number_arg(const Statement& st, size_t i, std::string_view what, double& out) {
+    if (i < st.args.size() && st.args[i].is_number() && std::abs(st.args[i].number) <= kMaxValue) {
+      out = st.args[i].number;
+      return true;
+    }
+    return bad_number_arg(st, i, what);
+  }
+  bool bad_number_arg(const Statement& st, size_t i, std::string_view what);
   bool in_range(const Statement& st, const Arg& a, std::string_view what);
 
  public:

@@ -8,30 +8,18 @@
 
 namespace clpost {
 
-NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_(m.block_start) {
-  line_.reserve(256);
-}
+NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_(m.block_start) {}
 
-void NcWriter::separate() {
-  if (open_) {
-    line_ += ' ';
-    return;
-  }
+void NcWriter::open_block() {
   open_ = true;
   line_.clear();
   if (m_.block_numbers) {
-    // "N120 " built on the stack and appended at once.
-    char number[48];
-    char* end = number;
-    const std::string& address = m_.block_address;
-    if (address.size() <= 16) {
-      end = std::copy(address.begin(), address.end(), end);
-    } else {
-      line_ += address;
-    }
-    end = std::to_chars(end, number + sizeof number - 1, next_number_).ptr;
-    *end++ = ' ';
-    line_.append(number, end);
+    // "N120 ": the address, the number, a blank.
+    line_.append(m_.block_address);
+    char* p = line_.room(16);
+    p = std::to_chars(p, p + 15, next_number_).ptr;
+    *p++ = ' ';
+    line_.commit(p);
   }
   words_at_ = line_.size();
 }
@@ -47,13 +35,6 @@ NcWriter& NcWriter::word(std::string_view address, double value) {
   return word(address, value, m_.format_for(address));
 }
 
-NcWriter& NcWriter::word(std::string_view address, double value, const NumberFormat& format) {
-  separate();
-  line_.append(address);
-  append_number(line_, value, format);
-  return *this;
-}
-
 NcWriter& NcWriter::text(std::string_view raw) {
   return code(raw);
 }
@@ -66,14 +47,14 @@ void NcWriter::end_block() {
     for (const std::string& prefix : m_.block_skip)
       if (!prefix.empty() && w[0] == prefix[0] && w.starts_with(prefix)) unnumbered = true;
     if (unnumbered) {
-      line_.erase(0, words_at_);
+      line_.erase_front(words_at_);
     } else {
       next_number_ += m_.block_step;
       if (next_number_ > m_.block_max) next_number_ = m_.block_start;
     }
   }
-  line_ += m_.line_ending;
-  out_.write(line_);
+  line_.append(m_.line_ending);
+  out_.write(line_.view());
   open_ = false;
 }
 

@@ -1,11 +1,14 @@
 #pragma once
 // NC blocks: words formatted per the machine's number formats, optional block numbers, the
 // machine's comment style and line ending. No modal logic here (see nc_program.h).
+#include <algorithm>
 #include <string>
 #include <string_view>
 
 #include "machine/machine.h"
 #include "support/sink.h"
+#include "writer/block_buffer.h"
+#include "writer/number_format.h"
 
 namespace clpost {
 
@@ -17,8 +20,14 @@ class NcWriter {
   NcWriter& code(std::string_view c);
   // Appends address + number in the address's format.
   NcWriter& word(std::string_view address, double value);
-  // The same with the format given (looked up once by the caller: the hot path).
-  NcWriter& word(std::string_view address, double value, const NumberFormat& format);
+  // The same with the format given (looked up once by the caller: the hot path, inline).
+  NcWriter& word(std::string_view address, double value, const NumberFormat& format) {
+    separate();
+    char* p = line_.room(address.size() + max_number_chars(format));
+    p = std::copy(address.begin(), address.end(), p);
+    line_.commit(put_number(p, value, format));
+    return *this;
+  }
   // Appends text as it is (a separating blank is added).
   NcWriter& text(std::string_view raw);
   // Writes the block (with a block number when enabled); an empty block writes nothing.
@@ -33,15 +42,22 @@ class NcWriter {
  private:
   // Before each word: a blank after the words before it, or for the first word of a block, the
   // block's opening (its block number, when numbered).
-  void separate();
-  std::string_view words() const { return std::string_view(line_).substr(words_at_); }
+  void separate() {
+    if (open_) {
+      line_.push_back(' ');
+    } else {
+      open_block();
+    }
+  }
+  void open_block();
+  std::string_view words() const { return line_.view().substr(words_at_); }
 
   const Machine& m_;
   Sink& out_;
   // The block being built, as it is written (block number, words, line ending): one write per
   // block, no copy. The block number is put first as the block opens; end_block() takes it out
   // again for a block that gets none (block_skip), which is rare.
-  std::string line_;
+  BlockBuffer line_;
   size_t words_at_ = 0;  // where the words start in line_
   bool open_ = false;    // a block has words
   int next_number_;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -49,11 +50,14 @@ char* put_low_digits(char* p, uint64_t& q, int n) {
   return p;
 }
 
-// Writes q = |value|·10^decimals (rounded) as format `f` says, from the right: fraction digits
-// (trailing zeros trimmed unless kept), the point, the whole digits.
-void append_scaled(std::string& out, uint64_t q, bool negative, const NumberFormat& f) {
-  char buf[48];
-  char* const end = buf + sizeof buf;
+// Writes q = |value|·10^decimals (rounded, q < 2^50) at `out` as format `f` says, built from
+// the right in a small buffer: fraction digits (trailing zeros trimmed unless kept), the point,
+// the whole digits. At most 19 characters; the copy moves a fixed 24 (a couple of moves, no
+// library call), which put_number's room allows. Returns the end of the number.
+char* put_scaled(char* out, uint64_t q, bool negative, const NumberFormat& f) {
+  constexpr size_t kCopy = 24;
+  char buf[2 * kCopy];
+  char* const end = buf + kCopy;
   int nd = f.decimals;  // fraction digits written
   if (!f.trailing_zeros)
     while (nd > 0 && q % 10 == 0) q /= 10, --nd;
@@ -66,15 +70,17 @@ void append_scaled(std::string& out, uint64_t q, bool negative, const NumberForm
     *--p = '0';
   }
   if (negative) *--p = '-';
-  out.append(p, static_cast<size_t>(end - p));
+  std::memset(end, 0, kCopy);  // what is copied past the number is defined
+  std::memcpy(out, p, kCopy);
+  return out + (end - p);
 }
 
 // The general path: fmt's digits, reshaped. Out of line, so that the hot path in
-// append_number() needs no stack frame for fmt.
-[[gnu::noinline]] void append_with_fmt(std::string& out, double v, const NumberFormat& f) {
-  char buf[64];
-  auto r = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", v, f.decimals);
-  std::string_view s(buf, std::min(r.size, sizeof buf));
+// put_number() needs no stack frame for fmt.
+[[gnu::noinline]] char* put_with_fmt(char* out, double v, const NumberFormat& f) {
+  fmt::memory_buffer buf;
+  fmt::format_to(std::back_inserter(buf), "{:.{}f}", v, f.decimals);
+  std::string_view s(buf.data(), buf.size());
   const bool negative = !s.empty() && s[0] == '-';
   if (negative) s.remove_prefix(1);
   // Whole and fractional digits.
@@ -85,27 +91,35 @@ void append_scaled(std::string& out, uint64_t q, bool negative, const NumberForm
     while (!frac.empty() && frac.back() == '0') frac.remove_suffix(1);
   bool zero = whole.find_first_not_of('0') == std::string_view::npos &&
               frac.find_first_not_of('0') == std::string_view::npos;
-  if (negative && !zero) out += '-';
-  if (f.leading_zero || whole != "0" || frac.empty()) out.append(whole);
+  if (negative && !zero) *out++ = '-';
+  if (f.leading_zero || whole != "0" || frac.empty())
+    out = std::copy(whole.begin(), whole.end(), out);
   if (!frac.empty()) {
-    out += '.';
-    out.append(frac);
+    *out++ = '.';
+    out = std::copy(frac.begin(), frac.end(), out);
   } else if (f.decimals > 0 && f.decimal_point) {
-    out += '.';
+    *out++ = '.';
   }
+  return out;
 }
 
 }  // namespace
 
-void append_number(std::string& out, double value, const NumberFormat& f) {
+char* put_number(char* out, double value, const NumberFormat& f) {
   const double v = value * f.scale;
   uint64_t q = 0;
   if (std::isfinite(v) && scaled_digits(std::fabs(v), f.decimals, q)) {
-    // The hot path: what append_with_fmt() makes of fmt's digits, straight from q.
-    append_scaled(out, q, std::signbit(v) && q != 0, f);
-    return;
+    // The hot path: what put_with_fmt() makes of fmt's digits, straight from q.
+    return put_scaled(out, q, std::signbit(v) && q != 0, f);
   }
-  append_with_fmt(out, v, f);
+  return put_with_fmt(out, v, f);
+}
+
+void append_number(std::string& out, double value, const NumberFormat& f) {
+  const size_t at = out.size();
+  out.resize(at + max_number_chars(f));
+  char* const end = put_number(out.data() + at, value, f);
+  out.resize(static_cast<size_t>(end - out.data()));
 }
 
 }  // namespace clpost

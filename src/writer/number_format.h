@@ -1,5 +1,6 @@
 #pragma once
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -10,6 +11,15 @@ namespace clpost {
 // Appends `value` written in format `f` to `out` ("12.", "0.5", "-.25", "1500", "1.500").
 // Negative zero after rounding is written as zero.
 void append_number(std::string& out, double value, const NumberFormat& f);
+
+// The most characters put_number() writes in format `f`: a sign, the 309 whole digits of the
+// largest double, the point and the decimals, with room to spare.
+inline size_t max_number_chars(const NumberFormat& f) {
+  return 320 + static_cast<size_t>(f.decimals > 0 ? f.decimals : 0);
+}
+// The same as append_number(), written at `out` (room for max_number_chars(f) characters);
+// returns the end of what it wrote.
+char* put_number(char* out, double value, const NumberFormat& f);
 
 namespace number_format_detail {
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace clpost {
@@ -158,6 +159,30 @@ TEST(NumberFormat, RoundedIsStdRound) {
   }
   NumberFormat f;
   EXPECT_TRUE(std::isnan(rounded(NAN, f)));
+}
+
+TEST(NumberFormat, HugeValuesAreWrittenWhole) {
+  // fmt's digits of the exact binary value: 101 whole digits, then the point (a 64-character
+  // buffer used to cut them short).
+  NumberFormat f;
+  EXPECT_EQ(fmt_num(1e100, f),
+            "10000000000000000159028911097599180468360808563945281389781327557747838772170381060"
+            "813469985856815104.");
+  EXPECT_EQ(fmt_num(-1.7976931348623157e308, f).size(), 1u + 309u + 1u);
+  NumberFormat nine{9, true, true, true, 1};
+  EXPECT_EQ(fmt_num(-1.7976931348623157e308, nine).size(), 1u + 309u + 1u + 9u);
+  EXPECT_LE(1u + 309u + 1u + 9u, max_number_chars(nine));
+}
+
+TEST(NumberFormat, PutNumberWritesInPlaceAndReturnsTheEnd) {
+  // The longest fast-path number (sign, whole digits, point, 9 decimals) and a short one, each
+  // written into a buffer full of '#': the characters after the returned end are not part of it.
+  NumberFormat nine{9, true, true, true, 1};
+  std::string buf(max_number_chars(nine) + 8, '#');
+  char* end = put_number(buf.data() + 3, -999999.123456789, nine);
+  EXPECT_EQ(std::string(buf.data(), end), "###-999999.123456789");
+  end = put_number(buf.data(), 0.25, NumberFormat{});
+  EXPECT_EQ(std::string(buf.data(), end), "0.25");
 }
 
 TEST(NumberFormat, NotFiniteValuesAsFmtWritesThem) {
