@@ -22,8 +22,10 @@ namespace {
 
 class CountingSink : public Sink {
  public:
-  void write(std::string_view text) override { bytes += text.size(); }
   size_t bytes = 0;
+
+ private:
+  void overflow(std::string_view text) override { bytes += text.size(); }
 };
 
 const Machine& generic_lathe() {

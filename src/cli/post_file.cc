@@ -18,19 +18,22 @@ namespace clpost {
 namespace {
 class NullSink : public Sink {
  public:
-  void write(std::string_view text) override { bytes += text.size(); }
   size_t bytes = 0;
+
+ private:
+  void overflow(std::string_view text) override { bytes += text.size(); }
 };
 // Keeps a copy of the program for --verify.
 class TeeSink : public Sink {
  public:
   TeeSink(Sink& to, std::string& copy) : to_(to), copy_(copy) {}
-  void write(std::string_view text) override {
+
+ private:
+  void overflow(std::string_view text) override {
     to_.write(text);
     copy_.append(text);
   }
 
- private:
   Sink& to_;
   std::string& copy_;
 };

@@ -42,14 +42,20 @@ OutputFile::~OutputFile() {
 }
 
 bool OutputFile::open(const std::string& path, std::string& error) {
+  if (!open_fd(path, error)) return false;
+  next_ = buffer_.get();
+  limit_ = next_ + kBufferSize;
+  return true;
+}
+
+bool OutputFile::open_fd(const std::string& path, std::string& error) {
   abort();
   path_ = path;
   target_.clear();
   failed_ = false;
   errno_ = 0;
   bytes_ = 0;
-  buffer_.clear();
-  buffer_.reserve(kBufferSize);
+  if (!buffer_) buffer_ = std::make_unique_for_overwrite<char[]>(kBufferSize);
   if (path == "-") {
     std::FILE* tmp = std::tmpfile();
     if (tmp == nullptr) {
@@ -113,27 +119,37 @@ bool OutputFile::open(const std::string& path, std::string& error) {
 }
 
 bool OutputFile::flush_buffer() {
-  if (failed_ || buffer_.empty()) {
-    buffer_.clear();
-    return !failed_;
+  if (failed_) return false;
+  const size_t n = buffered();
+  if (n == 0) return true;
+  next_ = buffer_.get();
+  if (!write_all(fd_, buffer_.get(), n, errno_)) {
+    fail(errno_);
+    return false;
   }
-  if (!write_all(fd_, buffer_.data(), buffer_.size(), errno_)) failed_ = true;
-  buffer_.clear();
-  return !failed_;
+  bytes_ += n;
+  return true;
 }
 
-void OutputFile::write(std::string_view text) {
-  if (fd_ < 0 || failed_) return;
-  bytes_ += text.size();
-  if (buffer_.size() + text.size() > kBufferSize) flush_buffer();
+void OutputFile::fail(int err) {
+  failed_ = true;
+  errno_ = err;
+  next_ = limit_ = nullptr;
+}
+
+void OutputFile::overflow(std::string_view text) {
+  if (next_ == nullptr || !flush_buffer()) return;  // closed or failed: nothing more is written
   if (text.size() >= kBufferSize) {
-    if (!failed_ && !write_all(fd_, text.data(), text.size(), errno_)) failed_ = true;
+    if (!write_all(fd_, text.data(), text.size(), errno_)) return fail(errno_);
+    bytes_ += text.size();
     return;
   }
-  buffer_.append(text);
+  std::memcpy(next_, text.data(), text.size());
+  next_ += text.size();
 }
 
 void OutputFile::close_fd() {
+  next_ = limit_ = nullptr;  // nothing more is written
   if (fd_ >= 0 && owns_fd_) ::close(fd_);
   fd_ = -1;
   owns_fd_ = false;
@@ -189,7 +205,9 @@ bool OutputFile::finish(std::string& error) {
     if (!ok) error = fmt::format("cannot write {}: {}", target, std::strerror(errno_));
     return ok;
   }
-  std::string().swap(buffer_);  // kAtomic: written out; the buffer is not needed any more
+  // kAtomic: written out; the buffer is not needed any more.
+  next_ = limit_ = nullptr;
+  buffer_.reset();
   return true;
 }
 
@@ -250,7 +268,7 @@ void OutputFile::abort() {
   close_fd();
   if (!temp_.empty()) ::unlink(temp_.c_str());
   temp_.clear();
-  buffer_.clear();
+  next_ = limit_ = nullptr;
   mode_ = Mode::kClosed;
 }
 

@@ -10,6 +10,7 @@
 //   over: it is opened and written directly, streaming in 64 KiB blocks, so memory stays bounded.
 //   What was written before an error cannot be taken back; write errors (ENOSPC on /dev/full)
 //   are reported by write() failing silently and commit() returning false.
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,7 +28,6 @@ class OutputFile : public Sink {
 
   // "-" is standard output. Returns false with a message in `error`.
   bool open(const std::string& path, std::string& error);
-  void write(std::string_view text) override;
   // Flushes and publishes the output. Returns false (and leaves nothing, except what was already
   // streamed to a device) on a write error. The same as finish() then publish().
   bool commit(std::string& error);
@@ -45,13 +45,24 @@ class OutputFile : public Sink {
   // Drops everything written so far (a device keeps what it was already sent).
   void abort();
 
-  size_t bytes() const { return bytes_; }
+  // Bytes written so far (flushed or buffered).
+  size_t bytes() const { return bytes_ + buffered(); }
   // The target is written directly (a device or a pipe), not through a temporary file.
   bool direct() const { return mode_ == Mode::kDirect; }
 
  private:
   enum class Mode { kClosed, kAtomic, kSpool, kDirect };
+  // Sink: the buffer is full, or the text is larger than it, or writing is over (closed or
+  // failed: no buffer then, and the text is dropped).
+  void overflow(std::string_view text) override;
+  size_t buffered() const {
+    return next_ == nullptr ? 0 : static_cast<size_t>(next_ - buffer_.get());
+  }
+  // Writes out the buffer; false (and failed_, no buffer any more) on a write error.
   bool flush_buffer();
+  bool open_fd(const std::string& path, std::string& error);
+  // Writing went wrong: errno_ says why; later text is dropped.
+  void fail(int err);
   void close_fd();
   std::string target_name() const;
 
@@ -63,8 +74,9 @@ class OutputFile : public Sink {
   bool owns_fd_ = false;
   bool failed_ = false;
   int errno_ = 0;
-  size_t bytes_ = 0;
-  std::string buffer_;
+  size_t bytes_ = 0;  // written out of the buffer (or past it)
+  // Sink's next_ and limit_ point into it while the file is open and writing has not failed.
+  std::unique_ptr<char[]> buffer_;
 };
 
 }  // namespace clpost
