@@ -134,12 +134,13 @@ void NcProgram::motion_code(const std::string& c) {
 }
 
 void NcProgram::axes(LathePoint p, bool force_both) {
-  double x = rounded(x_out(p.r), fmt_x_);
-  double z = rounded(p.z, fmt_z_);
-  bool write_x = force_both || !m_.modal_words || !last_x_ || *last_x_ != x;
-  bool write_z = force_both || !m_.modal_words || !last_z_ || *last_z_ != z;
-  if (write_x) w_.word("X", x_out(p.r), fmt_x_);
-  if (write_z) w_.word("Z", p.z, fmt_z_);
+  const WrittenNumber x = written(x_out(p.r), fmt_x_);
+  const WrittenNumber z = written(p.z, fmt_z_);
+  // A word is left out when it would repeat the text written last.
+  bool write_x = force_both || !m_.modal_words || !last_x_ || !same_text(*last_x_, x);
+  bool write_z = force_both || !m_.modal_words || !last_z_ || !same_text(*last_z_, z);
+  if (write_x) w_.word("X", x, fmt_x_);
+  if (write_z) w_.word("Z", z, fmt_z_);
   last_x_ = x;
   last_z_ = z;
   pos_ = p;
@@ -151,9 +152,9 @@ void NcProgram::feed_words() {
     written_feed_mode_ = feed_mode_;
     written_feed_.reset();
   }
-  double f = rounded(feed_, fmt_f_);
-  if (!m_.modal_words || !written_feed_ || *written_feed_ != f) {
-    w_.word("F", feed_, fmt_f_);
+  const WrittenNumber f = written(feed_, fmt_f_);
+  if (!m_.modal_words || !written_feed_ || !same_text(*written_feed_, f)) {
+    w_.word("F", f, fmt_f_);
     written_feed_ = f;
   }
 }

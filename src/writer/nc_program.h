@@ -105,11 +105,11 @@ class NcProgram {
   const std::string& code_arc_ccw_;
   const std::string& code_thread_;
   std::optional<LathePoint> pos_;
-  std::string motion_;  // last motion code written
-  std::optional<double> last_x_, last_z_;
+  std::string motion_;                            // last motion code written
+  std::optional<WrittenNumber> last_x_, last_z_;  // as last written
   double feed_ = 0;
   FeedMode feed_mode_ = FeedMode::kPerMinute;
-  std::optional<double> written_feed_;
+  std::optional<WrittenNumber> written_feed_;
   std::optional<FeedMode> written_feed_mode_;
 };
 

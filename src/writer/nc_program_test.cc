@@ -36,6 +36,21 @@ TEST(NcProgram, ModalWordsAndDiameterOutput) {
             "X30. F0.15\n");
 }
 
+TEST(NcProgram, ModalSuppressionComparesTheWrittenText) {
+  // 0.0055 · 1000 is 5.5 in double arithmetic, but the exact binary value of 0.0055 lies below
+  // the half: it is written Z0.005, as printf rounds. The move to Z0.006 after it is a new text
+  // and must be written (comparing values rounded half away from zero took both for 0.006).
+  // Z0.0059 then writes Z0.006 again: left out, and the block is empty.
+  Machine m = test_machine();
+  StringSink out;
+  NcProgram p(m, out);
+  p.rapid({10, 0.0055});
+  p.rapid({10, 0.006});
+  p.rapid({10, 0.0059});
+  p.rapid({11, 0.006});
+  EXPECT_EQ(out.out, "G0 X20. Z0.005\nZ0.006\nX22.\n");
+}
+
 TEST(NcProgram, BlockNumbersWrap) {
   Machine m = test_machine();
   m.block_numbers = true;

@@ -22,10 +22,14 @@ class NcWriter {
   NcWriter& word(std::string_view address, double value);
   // The same with the format given (looked up once by the caller: the hot path, inline).
   NcWriter& word(std::string_view address, double value, const NumberFormat& format) {
+    return word(address, written(value, format), format);
+  }
+  // The same with the value already worked out for `format` (written()).
+  NcWriter& word(std::string_view address, const WrittenNumber& value, const NumberFormat& format) {
     separate();
     char* p = line_.room(address.size() + max_number_chars(format));
     p = std::copy(address.begin(), address.end(), p);
-    line_.commit(put_number(p, value, format));
+    line_.commit(put_written(p, value, format));
     return *this;
   }
   // Appends text as it is (a separating blank is added).

@@ -11,30 +11,18 @@
 
 namespace clpost {
 
-namespace {
-
-using number_format_detail::kPow10;
-
-// `v` (finite, >= 0) rounded to `decimals` digits as the integer v·10^decimals, exactly as
-// printf/fmt round the exact binary value: false when the fast path cannot tell (an exact tie, or
-// too large), and the caller formats with fmt.
-bool scaled_digits(double v, int decimals, uint64_t& q) {
-  if (decimals < 0 || decimals > 15) return false;
-  const double p = kPow10[decimals];
-  const double t = v * p;           // one rounding: |t - v·p| <= ulp(t)/2
-  if (!(t < 0x1p50)) return false;  // ulp(t) <= 1/4: 0.5 lies on t's grid
-  q = static_cast<uint64_t>(t);     // floor: t >= 0 (an integer conversion, not a libm call)
-  const double frac = t - static_cast<double>(q);  // exact (Sterbenz)
-  if (frac > 0.5) {
-    ++q;  // frac >= 0.5 + ulp: the exact value is above the half too
-  } else if (frac == 0.5) {
-    // Which side of the half the exact product lies on: its rounding error, exactly.
-    const double err = std::fma(v, p, -t);
-    if (err == 0) return false;  // an exact tie (printf rounds it half to even): leave it to fmt
-    if (err > 0) ++q;
-  }
+bool number_format_detail::scaled_digits_slow(double v, double p, double t, uint64_t& q) {
+  // t = v·p lies exactly on a half: which side the exact product lies on is its rounding
+  // error, exactly.
+  const double err = std::fma(v, p, -t);
+  if (err == 0) return false;  // an exact tie (printf rounds it half to even): leave it to fmt
+  if (err > 0) ++q;
   return true;
 }
+
+namespace {
+
+using number_format_detail::scaled_digits;
 
 constexpr char kDigitPairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
@@ -105,14 +93,13 @@ char* put_scaled(char* out, uint64_t q, bool negative, const NumberFormat& f) {
 
 }  // namespace
 
+char* put_written(char* out, const WrittenNumber& w, const NumberFormat& f) {
+  if (w.exact) return put_scaled(out, w.digits, w.negative, f);
+  return put_with_fmt(out, w.value * f.scale, f);
+}
+
 char* put_number(char* out, double value, const NumberFormat& f) {
-  const double v = value * f.scale;
-  uint64_t q = 0;
-  if (std::isfinite(v) && scaled_digits(std::fabs(v), f.decimals, q)) {
-    // The hot path: what put_with_fmt() makes of fmt's digits, straight from q.
-    return put_scaled(out, q, std::signbit(v) && q != 0, f);
-  }
-  return put_with_fmt(out, v, f);
+  return put_written(out, written(value, f), f);
 }
 
 void append_number(std::string& out, double value, const NumberFormat& f) {

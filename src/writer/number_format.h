@@ -21,29 +21,57 @@ inline size_t max_number_chars(const NumberFormat& f) {
 // returns the end of what it wrote.
 char* put_number(char* out, double value, const NumberFormat& f);
 
+// A value as format `f` writes it, worked out once: for modal suppression (a word is left out
+// when its text would be the text written last) and for writing it.
+struct WrittenNumber {
+  double value = 0;     // as given (unscaled)
+  uint64_t digits = 0;  // |value|·scale·10^decimals, rounded as printf rounds the exact value
+  bool negative = false;
+  bool exact = false;  // false: `digits` unknown (an exact tie, huge, not finite): fmt writes it
+};
+
 namespace number_format_detail {
+constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                             1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
-constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-
-// std::round (half away from zero), the same value bit for bit, without a libm call.
-inline double round_half_away(double x) {
-  if (!(std::fabs(x) < 0x1p52)) return std::round(x);  // already whole, or not finite
-  const double whole = static_cast<double>(static_cast<int64_t>(x));  // towards zero, exact
-  const double frac = x - whole;                                      // exact
-  const double r = frac >= 0.5 ? whole + 1 : frac <= -0.5 ? whole - 1 : whole;
-  return std::copysign(r, x);  // -0.4 gives -0., as std::round does
+// `v` (finite, >= 0) rounded to `decimals` digits as the integer v·10^decimals, exactly as
+// printf/fmt round the exact binary value: false when this cannot tell (an exact tie, or too
+// large).
+bool scaled_digits_slow(double v, double p, double t, uint64_t& q);
+inline bool scaled_digits(double v, int decimals, uint64_t& q) {
+  if (decimals < 0 || decimals > 15) return false;
+  const double p = kPow10[decimals];
+  const double t = v * p;           // one rounding: |t - v·p| <= ulp(t)/2
+  if (!(t < 0x1p50)) return false;  // ulp(t) <= 1/4: 0.5 lies on t's grid
+  q = static_cast<uint64_t>(t);     // floor: t >= 0 (an integer conversion, not a libm call)
+  const double frac = t - static_cast<double>(q);  // exact (Sterbenz)
+  if (frac > 0.5) {
+    ++q;  // frac >= 0.5 + ulp: the exact value is above the half too
+  } else if (frac == 0.5) {
+    return scaled_digits_slow(v, p, t, q);
+  }
+  return true;
 }
-
 }  // namespace number_format_detail
 
-// `value` rounded to what format `f` writes (so modal suppression compares what is written):
-// std::round(value · scale · 10^decimals) / 10^decimals, inline (it runs for every axis word).
-inline double rounded(double value, const NumberFormat& f) {
-  using namespace number_format_detail;
-  const double p =
-      f.decimals >= 0 && f.decimals <= 22 ? kPow10[f.decimals] : std::pow(10.0, f.decimals);
-  return round_half_away(value * f.scale * p) / p;
+inline WrittenNumber written(double value, const NumberFormat& f) {
+  WrittenNumber w;
+  w.value = value;
+  const double v = value * f.scale;
+  if (std::isfinite(v) && number_format_detail::scaled_digits(std::fabs(v), f.decimals, w.digits)) {
+    w.exact = true;
+    w.negative = std::signbit(v) && w.digits != 0;  // no "-0"
+  }
+  return w;
 }
+
+// Whether `a` and `b` are written with the same text. False when either is not exact: such a
+// word is always written, never wrongly left out.
+inline bool same_text(const WrittenNumber& a, const WrittenNumber& b) {
+  return a.exact && b.exact && a.digits == b.digits && a.negative == b.negative;
+}
+
+// put_number() for a value already worked out.
+char* put_written(char* out, const WrittenNumber& w, const NumberFormat& f);
 
 }  // namespace clpost
