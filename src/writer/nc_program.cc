@@ -133,9 +133,18 @@ void NcProgram::motion_code(const std::string& c) {
   }
 }
 
+namespace {
+// `v` as format `f` writes it, taken from `last` when it is the same value (the common case:
+// one axis moves, the feed stays).
+WrittenNumber written_after(const std::optional<WrittenNumber>& last, double v,
+                            const NumberFormat& f) {
+  return last && last->value == v ? *last : written(v, f);
+}
+}  // namespace
+
 void NcProgram::axes(LathePoint p, bool force_both) {
-  const WrittenNumber x = written(x_out(p.r), fmt_x_);
-  const WrittenNumber z = written(p.z, fmt_z_);
+  const WrittenNumber x = written_after(last_x_, x_out(p.r), fmt_x_);
+  const WrittenNumber z = written_after(last_z_, p.z, fmt_z_);
   // A word is left out when it would repeat the text written last.
   bool write_x = force_both || !m_.modal_words || !last_x_ || !same_text(*last_x_, x);
   bool write_z = force_both || !m_.modal_words || !last_z_ || !same_text(*last_z_, z);
@@ -152,7 +161,7 @@ void NcProgram::feed_words() {
     written_feed_mode_ = feed_mode_;
     written_feed_.reset();
   }
-  const WrittenNumber f = written(feed_, fmt_f_);
+  const WrittenNumber f = written_after(written_feed_, feed_, fmt_f_);
   if (!m_.modal_words || !written_feed_ || !same_text(*written_feed_, f)) {
     w_.word("F", f, fmt_f_);
     written_feed_ = f;

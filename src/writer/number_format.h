@@ -65,10 +65,12 @@ inline WrittenNumber written(double value, const NumberFormat& f) {
   return w;
 }
 
-// Whether `a` and `b` are written with the same text. False when either is not exact: such a
-// word is always written, never wrongly left out.
+// Whether `a` and `b` (in one format) are written with the same text: the same value, or the
+// same digits. Different values of which either is not exact are taken for different texts:
+// such a word is written again rather than wrongly left out.
 inline bool same_text(const WrittenNumber& a, const WrittenNumber& b) {
-  return a.exact && b.exact && a.digits == b.digits && a.negative == b.negative;
+  return a.value == b.value ||
+         (a.exact && b.exact && a.digits == b.digits && a.negative == b.negative);
 }
 
 // put_number() for a value already worked out.
