@@ -23,7 +23,17 @@ namespace fs = std::filesystem;
 
 // Edit distance for "did you mean" suggestions.
 size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
+  // Two rows of b.size() + 1: on the stack for the short names compared here.
+  constexpr size_t kStackRow = 64;
+  size_t stack[2 * kStackRow];
+  std::vector<size_t> heap;
+  size_t* prev = stack;
+  size_t* cur = stack + kStackRow;
+  if (b.size() + 1 > kStackRow) {
+    heap.resize(2 * (b.size() + 1));
+    prev = heap.data();
+    cur = prev + b.size() + 1;
+  }
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
   for (size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
@@ -449,6 +459,13 @@ std::vector<std::string> valid_children(const std::string& prefix) {
   return {out.begin(), out.end()};
 }
 
+// Whether keys start with `prefix` ("limits."): `prefix` names a section, not a scalar. The
+// same as !valid_children(prefix).empty() for a non-empty prefix, without building the list.
+bool has_children(const std::string& prefix) {
+  auto it = scalar_keys().lower_bound(prefix);
+  return it != scalar_keys().end() && it->first.starts_with(prefix);
+}
+
 bool apply_map(Ctx& c, const YAML::Node& node, const std::string& prefix, Machine& m);
 
 bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std::string& prefix,
@@ -523,8 +540,7 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
   }
   auto it = scalar_keys().find(path);
   if (it != scalar_keys().end()) return it->second(c, value, m);
-  std::vector<std::string> children = valid_children(path + ".");
-  if (!children.empty()) {
+  if (has_children(path + ".")) {
     if (!value.IsMap()) return c.error(value, fmt::format("'{}' must be a map", path)), false;
     return apply_map(c, value, path + ".", m);
   }
