@@ -57,6 +57,27 @@ TEST(OutputFile, RegularFileAppearsOnlyAtCommit) {
                                                 fs::perms::group_read | fs::perms::others_read);
 }
 
+TEST(OutputFile, SmallWritesAcrossTheBufferKeepEveryByteInOrder) {
+  // Blocks are copied into the 64 KiB buffer inline and flushed when one does not fit: about
+  // 300 KB of them cross the buffer's end several times, mid-block.
+  TempDir d;
+  const std::string path = d.path + "/many.nc";
+  OutputFile out;
+  std::string err;
+  ASSERT_TRUE(out.open(path, err)) << err;
+  std::string expect;
+  for (int i = 0; i < 20000; ++i) {
+    const std::string block = "N" + std::to_string(i) + " G1 X" + std::to_string(i % 97) + ".\n";
+    out.write(block);
+    expect += block;
+  }
+  EXPECT_GT(expect.size(), 4u * 65536u);
+  EXPECT_EQ(out.bytes(), expect.size());  // what is still in the buffer counts too
+  ASSERT_TRUE(out.commit(err)) << err;
+  EXPECT_EQ(slurp(path), expect);
+  EXPECT_EQ(out.bytes(), expect.size());
+}
+
 TEST(OutputFile, AbortLeavesTheOldFileAndNoTemporary) {
   TempDir d;
   const std::string path = d.path + "/part.nc";
