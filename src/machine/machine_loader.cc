@@ -22,7 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // Edit distance for "did you mean" suggestions.
-size_t edit_distance(std::string_view a, std::string_view b) {
+// The edit distance between `a` and `b`, or `limit` when it is `limit` or more: the rows stop as
+// soon as every cell has reached it (a key of garbage costs a few rows per name, not the whole
+// table).
+size_t edit_distance(std::string_view a, std::string_view b, size_t limit) {
   // Two rows of b.size() + 1: on the stack for the short names compared here.
   constexpr size_t kStackRow = 64;
   size_t stack[2 * kStackRow];
@@ -37,13 +40,16 @@ size_t edit_distance(std::string_view a, std::string_view b) {
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
   for (size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
+    size_t row_min = i;
     for (size_t j = 1; j <= b.size(); ++j) {
-      size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+      const size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min(std::min(prev[j], cur[j - 1]) + 1, sub);
+      row_min = std::min(row_min, cur[j]);
     }
+    if (row_min >= limit) return limit;  // the cells only grow from here on
     std::swap(prev, cur);
   }
-  return prev[b.size()];
+  return std::min(prev[b.size()], limit);
 }
 
 std::string suggestion(std::string_view key, const std::vector<std::string>& valid) {
@@ -53,7 +59,7 @@ std::string suggestion(std::string_view key, const std::vector<std::string>& val
     // The distance is at least the difference in length: a long garbage key costs nothing.
     size_t gap = key.size() > v.size() ? key.size() - v.size() : v.size() - key.size();
     if (gap >= best) continue;
-    size_t d = edit_distance(key, v);
+    size_t d = edit_distance(key, v, best);
     if (d < best) best = d, found = v;
   }
   return found.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", found);
