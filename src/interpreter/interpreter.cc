@@ -65,7 +65,7 @@ bool Interpreter::bad_number_arg(const Statement& st, size_t i, std::string_view
 }
 
 bool Interpreter::in_range(const Statement& st, const Arg& a, std::string_view what) {
-  if (std::abs(a.number) <= kMaxValue) return true;
+  if (within_limits(a.number)) return true;
   error(st, a.loc,
         fmt::format("{} '{}' is out of range: CL values must be between -{} and {}", what, a.text,
                     kMaxValue, kMaxValue));

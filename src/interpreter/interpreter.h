@@ -96,7 +96,7 @@ class Interpreter {
   // Argument i as a number within ±kMaxValue: inline for the common case (every GOTO coordinate
   // comes here), the diagnostics out of line.
   bool number_arg(const Statement& st, size_t i, std::string_view what, double& out) {
-    if (i < st.args.size() && st.args[i].is_number() && std::abs(st.args[i].number) <= kMaxValue) {
+    if (i < st.args.size() && st.args[i].is_number() && within_limits(st.args[i].number)) {
       out = st.args[i].number;
       return true;
     }
@@ -104,6 +104,7 @@ class Interpreter {
   }
   bool bad_number_arg(const Statement& st, size_t i, std::string_view what);
   bool in_range(const Statement& st, const Arg& a, std::string_view what);
+  static bool within_limits(double v) { return std::abs(v) <= kMaxValue; }  // NaN is not
 
  public:
   // The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything

@@ -22,10 +22,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // Edit distance for "did you mean" suggestions.
-// The edit distance between `a` and `b`, or `limit` when it is `limit` or more: the rows stop as
-// soon as every cell has reached it (a key of garbage costs a few rows per name, not the whole
-// table).
+// The edit distance between `a` and `b`, or `limit` when it is `limit` or more: nothing is
+// computed when the lengths alone say so, and the rows stop as soon as every cell has reached
+// it (a key of garbage costs a few rows per name, not the whole table).
 size_t edit_distance(std::string_view a, std::string_view b, size_t limit) {
+  // The distance is at least the difference in length: a long garbage key costs nothing.
+  const size_t gap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+  if (gap >= limit) return limit;
   // Two rows of b.size() + 1: on the stack for the short names compared here.
   constexpr size_t kStackRow = 64;
   size_t stack[2 * kStackRow];
@@ -56,9 +59,6 @@ std::string suggestion(std::string_view key, const std::vector<std::string>& val
   size_t best = 3;  // at most two edits away
   std::string found;
   for (const std::string& v : valid) {
-    // The distance is at least the difference in length: a long garbage key costs nothing.
-    size_t gap = key.size() > v.size() ? key.size() - v.size() : v.size() - key.size();
-    if (gap >= best) continue;
     size_t d = edit_distance(key, v, best);
     if (d < best) best = d, found = v;
   }
