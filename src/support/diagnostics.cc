@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace clpost {
 
 void Diagnostics::error(SourceLoc loc, std::string_view line_text, std::string message) {
@@ -23,9 +25,19 @@ void Diagnostics::add(Severity severity, SourceLoc loc, std::string_view line_te
     ++dropped_;
     return;
   }
-  // A caret display of a huge line is useless and costly: keep at most 200 characters of it.
-  if (line_text.size() > 200) line_text = line_text.substr(0, 200);
-  kept_.push_back(Diagnostic{severity, loc, std::move(message), std::string(line_text)});
+  // A caret display of a huge line is useless and costly: keep a window of kMaxExcerpt
+  // characters, with the column about 80 characters into it when it lies further out.
+  size_t start = 0;
+  bool cut_after = false;
+  if (line_text.size() > kMaxExcerpt) {
+    constexpr size_t kLeadIn = 80;
+    if (loc.col > kLeadIn + 1)
+      start = std::min<size_t>(loc.col - 1 - kLeadIn, line_text.size() - kMaxExcerpt);
+    cut_after = start + kMaxExcerpt < line_text.size();
+    line_text = line_text.substr(start, kMaxExcerpt);
+  }
+  kept_.push_back(Diagnostic{severity, loc, std::move(message), std::string(line_text),
+                             static_cast<uint32_t>(start + 1), cut_after});
 }
 
 std::string_view severity_name(Severity s) {
@@ -51,13 +63,18 @@ std::string Diagnostics::render(const Diagnostic& d) const {
                       d.message);
   }
   if (!d.line_text.empty()) {
+    // A window of a long line is marked "..." at the end it was cut.
+    const std::string_view before = d.first_col > 1 ? "..." : "";
     out += "  ";
+    out += before;
     // Tabs stay tabs so that the caret line lines up under them.
     for (char c : d.line_text) out += (c == '\r' || c == '\n') ? ' ' : c;
+    if (d.cut_after) out += "...";
     out += '\n';
-    if (d.loc.col > 0) {
+    if (d.loc.col >= d.first_col) {
       out += "  ";
-      for (uint32_t i = 1; i < d.loc.col && i <= d.line_text.size(); ++i)
+      out.append(before.size(), ' ');
+      for (uint32_t i = 1; i < d.loc.col - d.first_col + 1 && i <= d.line_text.size(); ++i)
         out += d.line_text[i - 1] == '\t' ? '\t' : ' ';
       out += "^\n";
     }

@@ -19,7 +19,12 @@ struct Diagnostic {
   Severity severity = Severity::kError;
   SourceLoc loc;
   std::string message;
-  std::string line_text;  // the physical source line, for the caret display (may be empty)
+  // The physical source line for the caret display (may be empty). A line longer than
+  // kMaxExcerpt keeps only a window of it around the column: line_text then starts at column
+  // `first_col` of the line, and `cut_after` says whether the line goes on past the window.
+  std::string line_text;
+  uint32_t first_col = 1;
+  bool cut_after = false;
 };
 
 class Diagnostics {
@@ -44,6 +49,8 @@ class Diagnostics {
   void set_warnings_are_errors(bool on) { werror_ = on; }
 
   static constexpr size_t kMaxKept = 200;
+  // The most characters of a source line kept for the caret display.
+  static constexpr size_t kMaxExcerpt = 200;
 
   // `file:line:col: error: message` + source line + caret line (each ending in '\n').
   std::string render(const Diagnostic& d) const;
