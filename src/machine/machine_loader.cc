@@ -2,6 +2,7 @@
 
 #include <fmt/args.h>
 #include <fmt/format.h>
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -590,7 +591,12 @@ bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_po
     root = YAML::Load(std::string(text));
   } catch (const YAML::ParserException& e) {
     SourceLoc l{static_cast<uint32_t>(e.mark.line + 1), static_cast<uint32_t>(e.mark.column + 1)};
-    c.diags.error(l, c.text.line(l.line), "invalid YAML: " + e.msg);
+    // yaml-cpp says "bad file" when it stops recursing (at a depth of 2000): say what it means.
+    const bool too_deep = dynamic_cast<const YAML::DeepRecursion*>(&e) != nullptr;
+    c.diags.error(l, c.text.line(l.line),
+                  too_deep ? "invalid YAML: nested too deeply (a machine or post file needs a "
+                             "few levels, the YAML reader stops at 2000)"
+                           : "invalid YAML: " + e.msg);
     errors += c.diags.render_all();
     return false;
   }

@@ -110,7 +110,24 @@ TEST(MachineLoader, InvalidYamlHasALocation) {
   Machine m;
   std::string errors;
   EXPECT_FALSE(apply_machine_yaml("m.yaml", "units: mm\nlimits: [1, 2\n", false, m, errors));
-  EXPECT_NE(errors.find("m.yaml:3:1: error: invalid YAML: "), std::string::npos) << errors;
+  EXPECT_EQ(errors, "m.yaml:3:1: error: invalid YAML: end of sequence flow not found\n");
+}
+
+// 5000 nested flow maps: yaml-cpp gives up with "bad file"; the diagnostic says why, and where.
+TEST(MachineLoader, DeeplyNestedYamlIsAnErrorNotACrash) {
+  std::string text = "x: ";
+  for (int i = 0; i < 5000; ++i) text += "{a: ";
+  text += "1" + std::string(5000, '}') + "\n";
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", text, false, m, errors));
+  EXPECT_TRUE(
+      errors.starts_with("m.yaml:1:1995: error: invalid YAML: nested too deeply (a "
+                         "machine or post file needs a few levels, the YAML reader stops "
+                         "at 2000)\n  ... {a: {a: "))
+      << errors.substr(0, 400);
+  // The line is shown from column 1915, so the caret stands 80 characters into the window.
+  EXPECT_TRUE(errors.ends_with("{a:...\n" + std::string(2 + 3 + 80, ' ') + "^\n"));
 }
 
 TEST(MachineLoader, UnknownMachineListsShippedOnes) {
