@@ -4,16 +4,31 @@
 # crash, leak, timeout (> 1 s for one input) or out-of-memory (> 2 GB); the input that did it is
 # left in build-fuzz/artifacts/ and the fuzzer's log in build-fuzz/logs/.
 #
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+# Usage: scripts/fuzz.sh [SECONDS | --runs N] [TARGET...]
 #   targets: cl_post_fuzzer machine_yaml_fuzzer nc_verify_fuzzer
+#   --runs N: run each target for N inputs instead of a time (e.g. --runs 1000000).
+#
+# ASan keeps 5 frames of allocation stack and a 32 MB quarantine unless ASAN_OPTIONS says
+# otherwise: the same checks, with shorter allocation stacks in reports and a fifth of the memory.
 #
 # Each target's corpus grows in build-fuzz/corpus/<target>/ from run to run. Seeds are made fresh
 # every run from samples/, fuzz/seeds/, the shipped machines and posts, and the real CAM files in
 # ../shared/realcl/ when that folder is there (read in place, never copied into the tree).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-secs=${1:-60}
-shift || true
+limit=(-max_total_time=60)
+what="60 s"
+if [ "${1:-}" = --runs ]; then
+  [ -n "${2:-}" ] || { echo "fuzz.sh: --runs needs a count" >&2; exit 2; }
+  limit=(-runs="$2")
+  what="$2 inputs"
+  shift 2
+elif [ $# -gt 0 ]; then
+  limit=(-max_total_time="$1")
+  what="$1 s"
+  shift
+fi
+export ASAN_OPTIONS=${ASAN_OPTIONS:-malloc_context_size=5:quarantine_size_mb=32}
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(cl_post_fuzzer machine_yaml_fuzzer nc_verify_fuzzer)
 build=${CLPOST_FUZZ_BUILD:-build-fuzz}
@@ -59,14 +74,14 @@ for t in "${targets[@]}"; do
   corpus="$build/corpus/$t"
   log="$build/logs/$t.log"
   mkdir -p "$corpus"
-  echo "== $t: $secs s"
+  echo "== $t: $what"
   rc=0
-  "$build/fuzz/$t" "$corpus" "$build/seeds/$t" -dict="$dict" -max_total_time="$secs" \
+  "$build/fuzz/$t" "$corpus" "$build/seeds/$t" -dict="$dict" "${limit[@]}" \
     -timeout=1 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1 || rc=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   cov=$(grep -E '^#[0-9]+' "$log" | tail -1 | sed -n 's/.* cov: \([0-9]*\).*/\1/p')
-  line="$t: ${runs:-?} executions in $secs s, coverage ${cov:-?} edges, corpus $(ls "$corpus" | wc -l) files"
+  line="$t: ${runs:-?} executions ($what), coverage ${cov:-?} edges, corpus $(ls "$corpus" | wc -l) files"
   if [ "$rc" -ne 0 ]; then
     line="$line: FAILED (exit $rc, log $log)"
     status=1
