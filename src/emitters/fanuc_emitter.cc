@@ -106,12 +106,6 @@ namespace {
 
 using g76::at_end;
 
-std::string text(const Machine& m, std::string_view f, double v) {
-  std::string s;
-  append_number(s, v, m.format_for(f));
-  return s;
-}
-
 std::string_view depth_format(const ThreadPlan& plan) {
   return plan.units == LengthUnit::kInch ? "g76_depth_in" : "g76_depth";
 }
@@ -238,11 +232,11 @@ std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, 
         return fail(
             fmt::format("G76 ends every pass at Z{}; the plan ends the shallower passes "
                         "up to {:.4f} earlier (threading.accept_pass_end is off)",
-                        text(m, "Z", w.z), most));
+                        number_text(w.z, m.format_for("Z")), most));
       f.notes.push_back(
           fmt::format("G76 ends every pass at Z{}; the plan ends the shallower "
                       "passes up to {:.4f} earlier (threading.accept_pass_end)",
-                      text(m, "Z", w.z), most));
+                      number_text(w.z, m.format_for("Z")), most));
       diff.clear();
     }
   }

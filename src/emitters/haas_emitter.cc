@@ -29,12 +29,6 @@ using g76::at_end;
 
 constexpr const char* kTemplate = "haas_g76";
 
-std::string text(const Machine& m, std::string_view f, double v) {
-  std::string s;
-  append_number(s, v, m.format_for(f));
-  return s;
-}
-
 struct HaasBlock {
   HaasG76Words w;
   Vec2 start;  // A as written
@@ -139,7 +133,7 @@ std::optional<std::vector<HaasBlock>> haas_words(const ThreadPlan& plan, const M
   std::string rest = diff.empty() || m.cycle_shifted_end ? diff : compare_cuts(cuts, moved, opt);
   if (!rest.empty()) diff = rest;  // a difference beyond the pass ends is what to report
   if (!diff.empty() && rest.empty()) {
-    const std::string z = text(m, "Z", blocks.front().w.z);
+    const std::string z = number_text(blocks.front().w.z, m.format_for("Z"));
     if (!m.accept_pass_end)
       return fail(
           fmt::format("G76 ends every pass at Z{}; the plan ends the shallower passes up "

@@ -16,8 +16,7 @@ double unscale(const NumberFormat& nf) {
 
 double as_read(const Machine& m, std::string_view f, double v) {
   const NumberFormat& nf = m.format_for(f);
-  std::string s;
-  append_number(s, v, nf);
+  const std::string s = number_text(v, nf);
   double r = 0;
   std::from_chars(s.data(), s.data() + s.size(), r);
   r /= unscale(nf);

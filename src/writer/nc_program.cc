@@ -13,12 +13,6 @@ namespace {
 
 using Args = TemplateArgs;
 
-std::string num_text(const Machine& m, std::string_view address, double v) {
-  std::string s;
-  append_number(s, v, m.format_for(address));
-  return s;
-}
-
 void write_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
   auto it = m.templates.find(name);
   if (it == m.templates.end()) return;
@@ -73,7 +67,7 @@ void NcProgram::tool_change(int tool, int offset, std::string_view name) {
 
 void NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
   Args a;
-  a.push_back(fmt::arg("rpm", num_text(m_, "S", rpm)));
+  a.push_back(fmt::arg("rpm", number_text(rpm, m_.format_for("S"))));
   a.push_back(
       fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
   write_template(w_, m_, "spindle_rpm", a);
@@ -81,8 +75,8 @@ void NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
 
 void NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
   Args a;
-  a.push_back(fmt::arg("speed", num_text(m_, "S", speed)));
-  a.push_back(fmt::arg("max_rpm", num_text(m_, "S", max_rpm)));
+  a.push_back(fmt::arg("speed", number_text(speed, m_.format_for("S"))));
+  a.push_back(fmt::arg("max_rpm", number_text(max_rpm, m_.format_for("S"))));
   a.push_back(
       fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
   write_template(w_, m_, "spindle_css", a);
@@ -117,8 +111,8 @@ void NcProgram::set_feed(double feed, FeedMode mode) {
 
 void NcProgram::dwell(double seconds) {
   Args a;
-  a.push_back(fmt::arg("seconds", num_text(m_, "dwell", seconds)));
-  a.push_back(fmt::arg("revolutions", num_text(m_, "dwell", seconds)));
+  a.push_back(fmt::arg("seconds", number_text(seconds, m_.format_for("dwell"))));
+  a.push_back(fmt::arg("revolutions", number_text(seconds, m_.format_for("dwell"))));
   write_template(w_, m_, "dwell", a);
 }
 
@@ -233,7 +227,7 @@ bool NcProgram::emit_template(const std::string& name, const TemplateArgs& args)
 }
 
 std::string NcProgram::num(std::string_view format, double v) const {
-  return num_text(m_, format, v);
+  return number_text(v, m_.format_for(format));
 }
 
 void NcProgram::cycle_ended_at(LathePoint p) {

@@ -11,6 +11,12 @@ namespace clpost {
 // Appends `value` written in format `f` to `out` ("12.", "0.5", "-.25", "1500", "1.500").
 // Negative zero after rounding is written as zero.
 void append_number(std::string& out, double value, const NumberFormat& f);
+// `value` written in format `f`, as a string of its own (for templates and messages).
+inline std::string number_text(double value, const NumberFormat& f) {
+  std::string s;
+  append_number(s, value, f);
+  return s;
+}
 
 // The most characters put_number() writes in format `f`: a sign, the 309 whole digits of the
 // largest double, the point and the decimals, with room to spare.

@@ -12,42 +12,36 @@
 namespace clpost {
 namespace {
 
-std::string fmt_num(double v, NumberFormat f) {
-  std::string s;
-  append_number(s, v, f);
-  return s;
-}
-
 TEST(NumberFormat, TrailingZerosTrimmedPointKept) {
   NumberFormat f;  // 3 decimals, no trailing zeros, decimal point, leading zero
-  EXPECT_EQ(fmt_num(12.0, f), "12.");
-  EXPECT_EQ(fmt_num(1.5, f), "1.5");
-  EXPECT_EQ(fmt_num(0.25, f), "0.25");
-  EXPECT_EQ(fmt_num(-0.25, f), "-0.25");
-  EXPECT_EQ(fmt_num(0, f), "0.");
+  EXPECT_EQ(number_text(12.0, f), "12.");
+  EXPECT_EQ(number_text(1.5, f), "1.5");
+  EXPECT_EQ(number_text(0.25, f), "0.25");
+  EXPECT_EQ(number_text(-0.25, f), "-0.25");
+  EXPECT_EQ(number_text(0, f), "0.");
 }
 
 TEST(NumberFormat, RoundsAndNeverWritesNegativeZero) {
   NumberFormat f;
-  EXPECT_EQ(fmt_num(1.23456, f), "1.235");
-  EXPECT_EQ(fmt_num(-0.0004, f), "0.");  // rounds to zero: no "-0."
-  EXPECT_EQ(fmt_num(-0.0005000001, f), "-0.001");
-  EXPECT_EQ(fmt_num(39.99999999, f), "40.");
+  EXPECT_EQ(number_text(1.23456, f), "1.235");
+  EXPECT_EQ(number_text(-0.0004, f), "0.");  // rounds to zero: no "-0."
+  EXPECT_EQ(number_text(-0.0005000001, f), "-0.001");
+  EXPECT_EQ(number_text(39.99999999, f), "40.");
 }
 
 TEST(NumberFormat, VariantsFromMachineFiles) {
   NumberFormat trailing{3, true, true, true, 1};
-  EXPECT_EQ(fmt_num(1.5, trailing), "1.500");
+  EXPECT_EQ(number_text(1.5, trailing), "1.500");
   NumberFormat no_point{3, false, false, true, 1};
-  EXPECT_EQ(fmt_num(12.0, no_point), "12");
+  EXPECT_EQ(number_text(12.0, no_point), "12");
   NumberFormat no_lead{3, false, true, false, 1};
-  EXPECT_EQ(fmt_num(0.5, no_lead), ".5");
-  EXPECT_EQ(fmt_num(-0.5, no_lead), "-.5");
-  EXPECT_EQ(fmt_num(0, no_lead), "0.");
+  EXPECT_EQ(number_text(0.5, no_lead), ".5");
+  EXPECT_EQ(number_text(-0.5, no_lead), "-.5");
+  EXPECT_EQ(number_text(0, no_lead), "0.");
   NumberFormat integer{0, false, true, true, 1};
-  EXPECT_EQ(fmt_num(1199.6, integer), "1200");
+  EXPECT_EQ(number_text(1199.6, integer), "1200");
   NumberFormat micrometres{0, false, false, true, 1000};  // Fanuc G76 Q in least increments
-  EXPECT_EQ(fmt_num(0.15, micrometres), "150");
+  EXPECT_EQ(number_text(0.15, micrometres), "150");
 }
 
 // append_number before its hand-made fast path: every digit from fmt's "{:.{}f}".
@@ -96,7 +90,7 @@ TEST(NumberFormat, SameDigitsAsFmtEverywhere) {
     for (bool trailing : {false, true}) {
       for (bool lead : {false, true}) {
         NumberFormat f{decimals, trailing, !trailing, lead, decimals == 0 ? 1000.0 : 1.0};
-        for (double v : values) ASSERT_EQ(fmt_num(v, f), reference(v, f)) << v << " " << decimals;
+        for (double v : values) ASSERT_EQ(number_text(v, f), reference(v, f)) << v << " " << decimals;
       }
     }
   }
@@ -144,12 +138,12 @@ TEST(NumberFormat, HugeValuesAreWrittenWhole) {
   // fmt's digits of the exact binary value: 101 whole digits, then the point (a 64-character
   // buffer used to cut them short).
   NumberFormat f;
-  EXPECT_EQ(fmt_num(1e100, f),
+  EXPECT_EQ(number_text(1e100, f),
             "10000000000000000159028911097599180468360808563945281389781327557747838772170381060"
             "813469985856815104.");
-  EXPECT_EQ(fmt_num(-1.7976931348623157e308, f).size(), 1u + 309u + 1u);
+  EXPECT_EQ(number_text(-1.7976931348623157e308, f).size(), 1u + 309u + 1u);
   NumberFormat nine{9, true, true, true, 1};
-  EXPECT_EQ(fmt_num(-1.7976931348623157e308, nine).size(), 1u + 309u + 1u + 9u);
+  EXPECT_EQ(number_text(-1.7976931348623157e308, nine).size(), 1u + 309u + 1u + 9u);
   EXPECT_LE(1u + 309u + 1u + 9u, max_number_chars(nine));
 }
 
@@ -166,9 +160,9 @@ TEST(NumberFormat, PutNumberWritesInPlaceAndReturnsTheEnd) {
 
 TEST(NumberFormat, NotFiniteValuesAsFmtWritesThem) {
   NumberFormat f;
-  EXPECT_EQ(fmt_num(INFINITY, f), reference(INFINITY, f));
-  EXPECT_EQ(fmt_num(-INFINITY, f), reference(-INFINITY, f));
-  EXPECT_EQ(fmt_num(NAN, f), reference(NAN, f));
+  EXPECT_EQ(number_text(INFINITY, f), reference(INFINITY, f));
+  EXPECT_EQ(number_text(-INFINITY, f), reference(-INFINITY, f));
+  EXPECT_EQ(number_text(NAN, f), reference(NAN, f));
 }
 
 }  // namespace
