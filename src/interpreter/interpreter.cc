@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace clpost {
 
@@ -497,15 +498,43 @@ void Interpreter::cutcom_stmt(const Statement& st) {
   prog_.cutter_comp(c);
 }
 
+// DELAY/t dwells t seconds, DELAY/REV,n n spindle revolutions. The machine's dwell template
+// asks for {seconds} or {revolutions}; one becomes the other through the spindle speed in RPM.
 void Interpreter::delay_stmt(const Statement& st) {
-  double t = 0;
-  if (!number_arg(st, 0, "a dwell time in seconds", t)) return;
-  if (!(t >= 0)) {
-    error(st, st.args[0].loc, fmt::format("dwell time must not be negative, got {}", t));
+  const bool in_revs = !st.args.empty() && st.args[0].is("REV");
+  const size_t i = in_revs ? 1 : 0;
+  double v = 0;
+  if (!number_arg(st, i, in_revs ? "a dwell in revolutions" : "a dwell time in seconds", v)) return;
+  if (!(v >= 0)) {
+    error(st, st.args[i].loc,
+          fmt::format("{} must not be negative, got {}",
+                      in_revs ? "a dwell in revolutions" : "dwell time", v));
     return;
   }
+  if (!m_.templates.count("dwell")) {
+    error(st, st.loc,
+          fmt::format("machine '{}' has no 'dwell' template: the dwell cannot be posted", m_.name));
+    return;
+  }
+  const bool rpm_known = spindle_on_ && !css_ && spindle_value_ > 0;
+  std::optional<double> seconds, revolutions;
+  if (in_revs) {
+    revolutions = v;
+    if (rpm_known) seconds = v * 60 / spindle_value_;
+  } else {
+    seconds = v;
+    if (rpm_known) revolutions = v * spindle_value_ / 60;
+  }
   ensure_started();
-  prog_.dwell(t);
+  if (prog_.dwell(seconds, revolutions)) return;
+  error(st, st.loc,
+        fmt::format("machine '{}' dwells in {}: a dwell of {} {} needs the spindle turning at a "
+                    "set RPM to convert, and the spindle {}",
+                    m_.name, in_revs ? "seconds" : "revolutions", v,
+                    in_revs ? "revolutions" : "seconds",
+                    !spindle_on_ ? "is stopped"
+                    : css_       ? "runs at constant surface speed"
+                                 : "has no speed"));
 }
 
 void Interpreter::cycle_stmt(const Statement& st) {

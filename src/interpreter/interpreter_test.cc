@@ -165,6 +165,51 @@ TEST(Interpreter, ToolCoolantCompDwellStops) {
             std::string(kHeader) + "T0414\nT0505\nM8\nM9\nG41\nG40\nG4 X2.\nM0\nM1\nM30\n%\n");
 }
 
+// DELAY/REV,n on a machine that dwells in seconds: n revolutions at 600 rpm are n/10 s.
+TEST(Interpreter, DwellInRevolutionsBecomesSecondsThroughTheRpm) {
+  Posted p = post("SPINDL/600,RPM,CLW\nDELAY/REV,3\nDELAY/1.5\nFINI\n", generic());
+  EXPECT_EQ(p.nc, std::string(kHeader) + "G97 S600 M3\nG4 X0.3\nG4 X1.5\nM30\n%\n");
+  EXPECT_EQ(p.diags, "");
+}
+
+// A machine whose dwell is in revolutions: 2 s at 600 rpm are 20 revolutions, never "2".
+TEST(Interpreter, DwellInSecondsBecomesRevolutionsThroughTheRpm) {
+  Machine m = generic({"templates.dwell=[\"G4 U{revolutions}\"]"});
+  Posted p = post("SPINDL/600,RPM,CLW\nDELAY/2\nDELAY/REV,0.5\nFINI\n", m);
+  EXPECT_EQ(p.nc, std::string(kHeader) + "G97 S600 M3\nG4 U20.\nG4 U0.5\nM30\n%\n");
+  EXPECT_EQ(p.diags, "");
+}
+
+TEST(Interpreter, DwellThatCannotBeConvertedIsAnError) {
+  Posted stopped = post("DELAY/REV,3\nFINI\n", generic());
+  EXPECT_EQ(stopped.diags,
+            "t.cl:1:1: error: machine 'generic-lathe' dwells in seconds: a dwell of 3 revolutions "
+            "needs the spindle turning at a set RPM to convert, and the spindle is stopped\n"
+            "  DELAY/REV,3\n"
+            "  ^\n");
+  Machine m = generic({"templates.dwell=[\"G4 U{revolutions}\"]"});
+  Posted css = post("SPINDL/SFM,200,MAXRPM,2000,CLW\nDELAY/2\nFINI\n", m);
+  EXPECT_EQ(css.errors, 1u);
+  EXPECT_NE(css.diags.find("t.cl:2:1: error: machine 'generic-lathe' dwells in revolutions: a "
+                           "dwell of 2 seconds needs the spindle turning at a set RPM to convert, "
+                           "and the spindle runs at constant surface speed\n"),
+            std::string::npos)
+      << css.diags;
+  EXPECT_EQ(css.nc.find("G4 U"), std::string::npos);
+}
+
+// A machine file without a dwell template: the DELAY is an error, not silently left out.
+TEST(Interpreter, DwellWithoutATemplateIsAnError) {
+  Machine m = generic();
+  m.templates.erase("dwell");
+  Posted p = post("DELAY/2\nFINI\n", m);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: error: machine 'generic-lathe' has no 'dwell' template: the dwell cannot "
+            "be posted\n"
+            "  DELAY/2\n"
+            "  ^\n");
+}
+
 TEST(Interpreter, UnitsInchesGiveG20AndInchCoordinates) {
   Posted p = post("UNITS/INCHES\nRAPID\nGOTO/1.25,0,0.1\nFINI\n", generic());
   EXPECT_EQ(p.nc, "%\nO0001\nG18 G20 G40 G90\nG0 X2.5 Z0.1\nM30\n%\n");

@@ -109,11 +109,25 @@ void NcProgram::set_feed(double feed, FeedMode mode) {
   feed_mode_ = mode;
 }
 
-void NcProgram::dwell(double seconds) {
+bool NcProgram::dwell(std::optional<double> seconds, std::optional<double> revolutions) {
+  auto it = m_.templates.find("dwell");
+  if (it == m_.templates.end()) return false;
+  const NumberFormat& f = m_.format_for("dwell");
   Args a;
-  a.push_back(fmt::arg("seconds", number_text(seconds, m_.format_for("dwell"))));
-  a.push_back(fmt::arg("revolutions", number_text(seconds, m_.format_for("dwell"))));
-  write_template(w_, m_, "dwell", a);
+  if (seconds) a.push_back(fmt::arg("seconds", number_text(*seconds, f)));
+  if (revolutions) a.push_back(fmt::arg("revolutions", number_text(*revolutions, f)));
+  // Every line is formatted before any is written: a field left out of `a` fails the whole dwell.
+  std::vector<std::string> lines;
+  for (const std::string& line : it->second) {
+    try {
+      lines.push_back(fmt::vformat(line, a));
+    } catch (const fmt::format_error&) {
+      return false;
+    }
+  }
+  for (const std::string& text : lines)
+    if (!text.empty()) w_.text(text).end_block();
+  return true;
 }
 
 void NcProgram::program_stop(bool optional) {

@@ -53,7 +53,10 @@ class NcProgram {
   void cutter_comp(CutterComp c);
   // The feed for the next feed moves; written with the next feed move when it changed.
   void set_feed(double feed, FeedMode mode);
-  void dwell(double seconds);
+  // A dwell through the machine's `dwell` template, whose fields are {seconds} and
+  // {revolutions}. A value may be unknown (no spindle speed in RPM to convert through): false,
+  // and nothing written, when there is no template or it needs a value that is unknown.
+  bool dwell(std::optional<double> seconds, std::optional<double> revolutions);
   void program_stop(bool optional);
   void comment(std::string_view text) { w_.comment(text); }
   void raw(std::string_view text) { w_.raw_line(text); }
