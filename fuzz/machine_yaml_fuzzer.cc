@@ -24,6 +24,7 @@ constexpr const char* kProgram =
     "CIRCLE/10,0,-1.25,0,1,0,2.5\n"
     "GOTO/10,0,-3.75\n"
     "DELAY/1.5\n"
+    "DELAY/REV,2\n"
     "OPSTOP\n"
     "THREAD/ON,DEPTH,1.534,CUTS,4,FINCUT,1,0.1,OPTION,1,MMPR,2.5,CHAMFR,2.5\n"
     "GOTO/10,0,2\n"
