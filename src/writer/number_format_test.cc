@@ -90,7 +90,8 @@ TEST(NumberFormat, SameDigitsAsFmtEverywhere) {
     for (bool trailing : {false, true}) {
       for (bool lead : {false, true}) {
         NumberFormat f{decimals, trailing, !trailing, lead, decimals == 0 ? 1000.0 : 1.0};
-        for (double v : values) ASSERT_EQ(number_text(v, f), reference(v, f)) << v << " " << decimals;
+        for (double v : values)
+          ASSERT_EQ(number_text(v, f), reference(v, f)) << v << " " << decimals;
       }
     }
   }
