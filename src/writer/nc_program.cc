@@ -13,14 +13,23 @@ namespace {
 
 using Args = TemplateArgs;
 
-void write_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
+// Writes template `name` with `args`. False, and nothing written, when the machine has no such
+// template or one of its lines needs a field `args` lacks (the loader checked the fields' names;
+// a caller may still leave out a value it cannot know, as a dwell does).
+bool write_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
   auto it = m.templates.find(name);
-  if (it == m.templates.end()) return;
+  if (it == m.templates.end()) return false;
+  std::vector<std::string> lines;  // every line formatted before any is written
   for (const std::string& line : it->second) {
-    // Templates were checked when the machine was loaded.
-    std::string text = fmt::vformat(line, args);
-    if (!text.empty()) w.text(text).end_block();
+    try {
+      lines.push_back(fmt::vformat(line, args));
+    } catch (const fmt::format_error&) {
+      return false;
+    }
   }
+  for (const std::string& text : lines)
+    if (!text.empty()) w.text(text).end_block();
+  return true;
 }
 
 }  // namespace
@@ -110,24 +119,11 @@ void NcProgram::set_feed(double feed, FeedMode mode) {
 }
 
 bool NcProgram::dwell(std::optional<double> seconds, std::optional<double> revolutions) {
-  auto it = m_.templates.find("dwell");
-  if (it == m_.templates.end()) return false;
   const NumberFormat& f = m_.format_for("dwell");
   Args a;
   if (seconds) a.push_back(fmt::arg("seconds", number_text(*seconds, f)));
   if (revolutions) a.push_back(fmt::arg("revolutions", number_text(*revolutions, f)));
-  // Every line is formatted before any is written: a field left out of `a` fails the whole dwell.
-  std::vector<std::string> lines;
-  for (const std::string& line : it->second) {
-    try {
-      lines.push_back(fmt::vformat(line, a));
-    } catch (const fmt::format_error&) {
-      return false;
-    }
-  }
-  for (const std::string& text : lines)
-    if (!text.empty()) w_.text(text).end_block();
-  return true;
+  return write_template(w_, m_, "dwell", a);
 }
 
 void NcProgram::program_stop(bool optional) {
@@ -235,9 +231,7 @@ void NcProgram::thread(LathePoint p, const ThreadLead& l) {
 }
 
 bool NcProgram::emit_template(const std::string& name, const TemplateArgs& args) {
-  if (!m_.templates.count(name)) return false;
-  write_template(w_, m_, name, args);
-  return true;
+  return write_template(w_, m_, name, args);
 }
 
 std::string NcProgram::num(std::string_view format, double v) const {

@@ -75,7 +75,8 @@ class NcProgram {
   void thread(LathePoint p, const ThreadLead& l);
 
   // Writes the machine's template `name`, one block per line, with named fields (numbers
-  // already formatted with num()). Returns false when the machine has no such template.
+  // already formatted with num()). Returns false, writing nothing, when the machine has no such
+  // template or a line needs a field `args` lacks.
   bool emit_template(const std::string& name, const TemplateArgs& args);
   // `v` as the machine writes numbers of format `format` (an address or a named format).
   std::string num(std::string_view format, double v) const;
