@@ -1,5 +1,5 @@
-// Multi-pass, single-pass and coupled thread planning (threading.md sections 2-8; the decisions
-// taken where it is silent are in docs/threading.md).
+// Multi-pass thread planning (threading.md sections 4-8; the decisions taken where it is silent
+// are in docs/threading.md). Single-pass and coupled threads: path_threads.cc.
 #include "planner/planner.h"
 
 #include <fmt/format.h>
@@ -11,87 +11,19 @@
 
 #include "planner/depth_ladder.h"
 #include "planner/number_text.h"
+#include "planner/plan_report.h"
 #include "planner/vec2_math.h"
 
 namespace clpost {
 
 using namespace vec2_math;
+using namespace plan_report;
 
 namespace {
-
-// Lengths below this (CL units) are zero.
-constexpr double kLengthEps = 1e-9;
-// Angles closer than this (degrees) are equal.
-constexpr double kAngleEps = 1e-9;
-
-std::string pt(Vec2 p) {
-  return fmt::format("(X {}, Z {})", num_text(p.x), num_text(p.z));
-}
-
-std::string machine_text(const PlannerSettings& s) {
-  return s.machine_name.empty() ? std::string("this machine")
-                                : fmt::format("machine '{}'", s.machine_name);
-}
 
 // pitch/(2 tan 30): the full depth of a 60 degree thread, the default pull-out and return height.
 double default_height(double pitch) {
   return pitch / (2 * std::tan(rad(30)));
-}
-
-bool on_statement(const SavedLines& lines, SourceLoc loc) {
-  return loc.line != 0 && loc.line >= lines.first_line &&
-         loc.line - lines.first_line < lines.lines.size();
-}
-
-// A statement's location and saved lines, for reporting.
-struct Site {
-  SourceLoc loc;
-  const SavedLines* lines;
-};
-
-class Reporter {
- public:
-  explicit Reporter(Diagnostics& d) : diags_(d) {}
-  bool error(Site s, std::string message) {
-    diags_.error(s.loc, s.lines->text(s.loc.line), std::move(message));
-    return false;
-  }
-  void warning(Site s, std::string message) {
-    diags_.warning(s.loc, s.lines->text(s.loc.line), std::move(message));
-  }
-  void note(Site s, std::string message) {
-    diags_.note(s.loc, s.lines->text(s.loc.line), std::move(message));
-  }
-
- private:
-  Diagnostics& diags_;
-};
-
-// The pitch in force: present, and constant unless the machine can cut a variable lead.
-bool check_pitch(const PitchSpec& pitch, Site site, std::string_view word,
-                 const PlannerSettings& settings, Reporter& r) {
-  if (!pitch.set) {
-    return r.error(site, fmt::format("no pitch in force at {}: give PITCH/ before it, or TPI, "
-                                     "IPR, MMPR or PERREV on it",
-                                     word));
-  }
-  if (pitch.lead_change != 0 && !settings.variable_lead) {
-    const SourceLoc cl = pitch.lead_change_loc;
-    const Site at = on_statement(*site.lines, cl) ? Site{cl, site.lines} : site;
-    return r.error(at, fmt::format("variable lead ({} {} per revolution, CL line {}) cannot be "
-                                   "cut on {}: it does not declare variable-lead threading "
-                                   "(G34/G35)",
-                                   pitch.lead_change > 0 ? "INCR" : "DECR",
-                                   num_text(std::fabs(pitch.lead_change)),
-                                   cl.line != 0 ? cl.line : site.loc.line, machine_text(settings)));
-  }
-  return true;
-}
-
-ThreadKind kind_of(Vec2 d) {
-  if (std::fabs(d.x) <= kLengthEps) return ThreadKind::kTurn;
-  if (std::fabs(d.z) <= kLengthEps) return ThreadKind::kFace;
-  return ThreadKind::kTaper;
 }
 
 bool is_axis_angle(double deg_value) {
@@ -359,111 +291,6 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
   plan.end_position = p1 + clear_h * out_dir;
   out = std::move(plan);
   return true;
-}
-
-namespace {
-
-// The shared part of single-pass and coupled threads: `path[0]` is where the tool is, every
-// later point one synchronized move.
-bool plan_path(Site site, std::string_view word, ThreadForm form, const PitchSpec& pitch,
-               LengthUnit units, Vec2 start, const std::vector<ThreadGoto>& gotos,
-               const PlannerSettings& settings, ThreadPlan& out, Reporter& r) {
-  if (!check_pitch(pitch, site, word, settings, r)) return false;
-  ThreadPlan plan;
-  plan.loc = site.loc;
-  plan.form = form;
-  plan.units = units;
-  plan.pitch = pitch;
-  plan.lead = pitch.starts * pitch.pitch;
-  plan.option = 0;
-  plan.tool_angle = 0;
-  plan.cutang = 0;
-  plan.p0 = start;
-  plan.path.push_back(start);
-  for (const ThreadGoto& g : gotos) {
-    const Vec2 from = plan.path.back();
-    if (length(g.point - from) <= kLengthEps) {
-      r.warning(
-          Site{g.loc, &g.lines},
-          fmt::format("this GOTO {} does not move the tool: no synchronized move", pt(g.point)));
-      continue;
-    }
-    ThreadPass p;
-    p.n = static_cast<int>(plan.passes.size()) + 1;
-    p.approach = from;
-    p.from = from;
-    p.to = g.point;
-    p.pullout_end = g.point;
-    p.clear = g.point;
-    plan.passes.push_back(p);
-    plan.path.push_back(g.point);
-  }
-  if (plan.passes.empty()) {
-    return r.error(site, fmt::format("{} has no synchronized move: expected a GOTO that moves "
-                                     "the tool",
-                                     word));
-  }
-  plan.p1 = plan.passes.front().from;
-  plan.p2 = plan.passes.back().to;
-  // The first move is the thread proper; later ones are usually its pull-out.
-  const Vec2 first = plan.passes.front().to - plan.passes.front().from;
-  plan.kind = kind_of(first);
-  plan.lead_along_z = std::fabs(first.z) >= std::fabs(first.x);
-  plan.side = ThreadSide::kExternal;
-  plan.end_position = plan.path.back();
-  if (pitch.starts > 1) {
-    r.warning(site, fmt::format("MULTRD {} on {}: the path is cut once, at lead {} (start 0); "
-                                "program the other starts as their own moves",
-                                pitch.starts, word, num_text(plan.lead)));
-  }
-  out = std::move(plan);
-  return true;
-}
-
-}  // namespace
-
-bool plan_single_thread(const SingleThreadInput& in, const PlannerSettings& settings,
-                        ThreadPlan& out, Diagnostics& diags) {
-  Reporter r(diags);
-  const Site site{in.loc, &in.lines};
-  const size_t n = in.gotos.size();
-  if (n < 2) {
-    return r.error(site, fmt::format("{} needs exactly 2 GOTOs (thread start, thread end); "
-                                     "found {}",
-                                     in.word, n));
-  }
-  if (n > 2) {
-    r.error(Site{in.gotos[2].loc, &in.gotos[2].lines},
-            fmt::format("{} takes exactly 2 GOTOs (thread start, thread end); this is GOTO 3 "
-                        "of {} (use THREAD/ON for a chamfer pull-out)",
-                        in.word, n));
-    r.note(site, "the thread starts here");
-    return false;
-  }
-  const Vec2 a = in.gotos[0].point;
-  const Vec2 b = in.gotos[1].point;
-  if (length(b - a) <= kLengthEps) {
-    r.error(Site{in.gotos[1].loc, &in.gotos[1].lines},
-            fmt::format("the thread end {} is the thread start: the thread has no length", pt(b)));
-    r.note(site, "the thread starts here");
-    return false;
-  }
-  ThreadPlan plan;
-  const std::vector<ThreadGoto> end_only{in.gotos[1]};
-  if (!plan_path(site, in.word, ThreadForm::kSingle, in.pitch, in.units, a, end_only, settings,
-                 plan, r))
-    return false;
-  plan.p0 = in.p0;
-  out = std::move(plan);
-  return true;
-}
-
-bool plan_couple(const CoupleInput& in, const PlannerSettings& settings, ThreadPlan& out,
-                 Diagnostics& diags) {
-  Reporter r(diags);
-  const Site site{in.loc, &in.lines};
-  return plan_path(site, in.word, ThreadForm::kCouple, in.pitch, in.units, in.start, in.gotos,
-                   settings, out, r);
 }
 
 }  // namespace clpost

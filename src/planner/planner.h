@@ -2,6 +2,7 @@
 // The thread planner: pure functions from a thread description to a pass plan. No I/O.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "planner/thread_plan.h"
@@ -80,8 +81,35 @@ struct CoupleInput {
 
 // Plans a coupled sequence: form "couple", `path` = start and every GOTO, one pass per
 // synchronized segment (a GOTO that does not move the tool is skipped with a warning). Returns
-// false (with diagnostics) on any error.
+// false (with diagnostics) on any error. The same as CouplePlanner over `in.gotos`.
 bool plan_couple(const CoupleInput& in, const PlannerSettings& settings, ThreadPlan& out,
                  Diagnostics& diags);
+
+// A coupled sequence planned while it is read, so that memory stays flat however many GOTOs it
+// has: begin() at COUPLE/ON, add() at every GOTO (the synchronized move to cut now), finish() at
+// COUPLE/OFF. Single-pass threads are planned through it too.
+class CouplePlanner {
+ public:
+  // The passes kept in the plan (for clpost plan and verify); the moves after them are cut and
+  // counted (ThreadPlan::passes_not_kept) but not kept.
+  static constexpr size_t kMaxKeptPasses = 10000;
+
+  // `in` without its GOTOs: checks the pitch in force. False (reported): nothing can be cut.
+  bool begin(const CoupleInput& in, const PlannerSettings& settings, Diagnostics& diags);
+  // The synchronized move to `point` (a GOTO at `loc`, on line text `line`), or nullptr when it
+  // does not move the tool (warned). The pointer is valid until the next call.
+  const ThreadPass* add(Vec2 point, SourceLoc loc, std::string_view line, Diagnostics& diags);
+  // The plan of the whole sequence. False (reported) when it had no synchronized move.
+  bool finish(ThreadPlan& out, Diagnostics& diags);
+
+ private:
+  ThreadPlan plan_;
+  SavedLines lines_;
+  SourceLoc loc_;
+  std::string word_;
+  ThreadPass last_;
+  Vec2 at_;
+  size_t count_ = 0;
+};
 
 }  // namespace clpost

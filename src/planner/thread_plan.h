@@ -77,6 +77,7 @@ struct ThreadPlan {
   // Coupled / single-pass threads: the synchronized moves in order (the first point is where
   // the tool is when the thread starts).
   std::vector<Vec2> path;
+  size_t passes_not_kept = 0;  // a coupled path longer than the plan keeps: moves cut, not listed
 };
 
 }  // namespace clpost
