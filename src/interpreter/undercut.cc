@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-#include "interpreter/interpreter.h"
+#include "interpreter/statement_table.h"
 #include "planner/number_text.h"
 
 namespace clpost {
@@ -135,157 +135,177 @@ UndercutContour din76_contour(double d, double at, char form, int side, const Di
   return c;
 }
 
-void Interpreter::undercut_stmt(const Statement& st) {
-  // CYCLE/UNDCUT,DIAM,d,AT,z,FORM,A|B|C|D (words in any order).
-  std::optional<double> diam, at;
-  std::optional<char> form;
-  SourceLoc diam_loc = st.loc, form_loc = st.loc;
+namespace {
+
+// CYCLE/UNDCUT,DIAM,d,AT,z,FORM,A|B|C|D as read (words in any order).
+struct UndercutWords {
+  double diam = 0, at = 0;
+  char form = 'A';
+  SourceLoc diam_loc, form_loc;
+};
+
+// The value after word `a` (at index i) into `u`; false (reported) when it is not right.
+bool read_undercut_value(PostState& s, const Statement& st, const Arg& a, const Arg& v,
+                         UndercutWords& u) {
+  if (a.is("FORM")) {
+    if (!v.is_word() || v.text.size() != 1 || v.text[0] < 'A' || v.text[0] > 'D') {
+      error(s, st, v.loc,
+            fmt::format("CYCLE/UNDCUT: FORM must be A, B (external) or C, D (internal); got {}",
+                        v.text));
+      return false;
+    }
+    u.form = v.text[0];
+    u.form_loc = v.loc;
+    return true;
+  }
+  if (!v.is_number()) {
+    error(s, st, v.loc, fmt::format("CYCLE/UNDCUT: {} needs a number, found '{}'", a.text, v.text));
+    return false;
+  }
+  (a.is("DIAM") ? u.diam : u.at) = v.number;
+  if (a.is("DIAM")) u.diam_loc = v.loc;
+  return true;
+}
+
+bool read_undercut_words(PostState& s, const Statement& st, UndercutWords& u) {
   const char* kValid = "DIAM, AT, FORM";
+  bool seen[3] = {false, false, false};  // DIAM, AT, FORM
+  u.diam_loc = u.form_loc = st.loc;
   for (size_t i = 1; i < st.args.size(); ++i) {
     const Arg& a = st.args[i];
     if (!a.is_word()) {
-      error(st, a.loc,
+      error(s, st, a.loc,
             fmt::format("CYCLE/UNDCUT: expected a word, found number {}; valid words: {}", a.text,
                         kValid));
-      return;
+      return false;
     }
-    if (!a.is("DIAM") && !a.is("AT") && !a.is("FORM")) {
-      error(st, a.loc,
+    const int which = a.is("DIAM") ? 0 : a.is("AT") ? 1 : a.is("FORM") ? 2 : -1;
+    if (which < 0) {
+      error(s, st, a.loc,
             fmt::format("CYCLE/UNDCUT: unknown word '{}'; valid words: {}", a.text, kValid));
-      return;
+      return false;
     }
     if (i + 1 >= st.args.size()) {
-      error(st, a.loc, fmt::format("CYCLE/UNDCUT: {} needs a value", a.text));
-      return;
+      error(s, st, a.loc, fmt::format("CYCLE/UNDCUT: {} needs a value", a.text));
+      return false;
     }
-    const Arg& v = st.args[++i];
-    if (a.is("FORM")) {
-      if (!v.is_word() || v.text.size() != 1 || v.text[0] < 'A' || v.text[0] > 'D') {
-        error(st, v.loc,
-              fmt::format("CYCLE/UNDCUT: FORM must be A, B (external) or C, D (internal); got {}",
-                          v.text));
-        return;
-      }
-      form = v.text[0];
-      form_loc = v.loc;
-      continue;
-    }
-    if (!v.is_number()) {
-      error(st, v.loc, fmt::format("CYCLE/UNDCUT: {} needs a number, found '{}'", a.text, v.text));
-      return;
-    }
-    if (a.is("DIAM")) {
-      diam = v.number;
-      diam_loc = v.loc;
-    } else {
-      at = v.number;
-    }
+    if (!read_undercut_value(s, st, a, st.args[++i], u)) return false;
+    seen[which] = true;
   }
-  if (!diam || !at || !form) {
-    error(
-        st, st.loc,
+  if (seen[0] && seen[1] && seen[2]) return true;
+  error(s, st, st.loc,
         fmt::format("CYCLE/UNDCUT needs DIAM, AT and FORM: CYCLE/UNDCUT,DIAM,d,AT,z,FORM,A|B|C|D; "
                     "missing {}",
-                    !diam ? "DIAM"
-                    : !at ? "AT"
-                          : "FORM"));
+                    !seen[0]   ? "DIAM"
+                    : !seen[1] ? "AT"
+                               : "FORM"));
+  return false;
+}
+
+// CYCLE96 on a machine with the template, with the checks the control makes (seed 001).
+void undercut_cycle96(PostState& s, const Statement& st, const UndercutWords& u, double pitch) {
+  const Din76Row* ext = din76_row('A', pitch);
+  if (!internal_form(u.form) && ext && u.diam - ext->diameter_step < 3 - 1e-9) {
+    error(s, st, u.diam_loc,
+          fmt::format("CYCLE/UNDCUT: the undercut's final diameter {} (M{} pitch {}: DIN 76-1 "
+                      "d - {}) is below 3 mm: CYCLE96 stops with an alarm",
+                      num_text(u.diam - ext->diameter_step), num_text(u.diam), num_text(pitch),
+                      num_text(ext->diameter_step)));
     return;
   }
-  const bool cycle96 = m_.templates.count("cycle96") > 0;
-  if (units_ == LengthUnit::kInch) {
-    error(st, st.loc,
-          "CYCLE/UNDCUT is for metric ISO threads (DIN 76-1, M3 ... M68): this program is in "
-          "inches");
+  if (s.tool_offset <= 0) {
+    error(s, st, st.loc,
+          s.tool_offset < 0
+              ? std::string("CYCLE96 needs an active tool offset: no LOADTL/ before CYCLE/UNDCUT")
+              : std::string("CYCLE96 needs an active tool offset: the tool was loaded with "
+                            "offset 0 (D0), which selects none"));
     return;
   }
-  std::optional<double> pitch = iso_coarse_pitch(*diam);
-  if (!pitch) {
-    error(st, diam_loc,
-          fmt::format("CYCLE/UNDCUT: DIAM {} is not a metric ISO coarse thread M3 ... M68 (3, 4, "
-                      "5, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 27, 30, 33, 36, 39, 42, 45, 48, "
-                      "52, 56, 60, 64, 68){}",
-                      num_text(*diam), cycle96 ? ": CYCLE96 stops with an alarm" : ""));
-    return;
-  }
-  if (!feed_given_) {
-    error(st, st.loc, "CYCLE/UNDCUT cuts at the feed in force: no FEDRAT/ before it");
-    return;
-  }
-  ensure_started();
-  if (cycle96) {
-    // The control's own checks (seed 001): final diameter, active tool offset.
-    const Din76Row* ext = din76_row('A', *pitch);
-    if (!internal_form(*form) && ext && *diam - ext->diameter_step < 3 - 1e-9) {
-      error(st, diam_loc,
-            fmt::format("CYCLE/UNDCUT: the undercut's final diameter {} (M{} pitch {}: DIN 76-1 "
-                        "d - {}) is below 3 mm: CYCLE96 stops with an alarm",
-                        num_text(*diam - ext->diameter_step), num_text(*diam), num_text(*pitch),
-                        num_text(ext->diameter_step)));
-      return;
-    }
-    if (tool_offset_ <= 0) {
-      error(st, st.loc,
-            tool_offset_ < 0
-                ? std::string("CYCLE96 needs an active tool offset: no LOADTL/ before CYCLE/UNDCUT")
-                : std::string("CYCLE96 needs an active tool offset: the tool was loaded with "
-                              "offset 0 (D0), which selects none"));
-      return;
-    }
-    prog_.comment(fmt::format("thread undercut M{} form {} at Z{}", num_text(*diam),
-                              form_name(*form), num_text(*at)));
-    // CYCLE96 moves at the feed programmed before it: make sure it is written.
-    prog_.writer()
-        .code(m_.code(feed_mode_ == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"))
-        .word("F", feed_)
-        .end_block();
-    TemplateArgs args;
-    args.push_back(fmt::arg("diath", prog_.num("X", *diam)));
-    args.push_back(fmt::arg("axsa", prog_.num("Z", *at)));
-    args.push_back(fmt::arg("form", std::string(1, *form)));
-    prog_.emit_template("cycle96", args);
-    // The cycle returns to its starting point with G0 (seed 001).
-    LathePoint here = prog_.position().value_or(LathePoint{});
-    prog_.cycle_ended_at(here);
-    return;
-  }
-  const Din76Row* row = din76_row(*form, *pitch);
+  NcProgram& prog = s.prog;
+  prog.comment(fmt::format("thread undercut M{} form {} at Z{}", num_text(u.diam),
+                           form_name(u.form), num_text(u.at)));
+  // CYCLE96 moves at the feed programmed before it: make sure it is written.
+  prog.writer()
+      .code(s.m.code(s.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"))
+      .word("F", s.feed)
+      .end_block();
+  TemplateArgs args;
+  args.push_back(fmt::arg("diath", prog.num("X", u.diam)));
+  args.push_back(fmt::arg("axsa", prog.num("Z", u.at)));
+  args.push_back(fmt::arg("form", std::string(1, u.form)));
+  prog.emit_template("cycle96", args);
+  // The cycle returns to its starting point with G0 (seed 001).
+  prog.cycle_ended_at(prog.position().value_or(LathePoint{}));
+}
+
+// The DIN 76-1 undercut cut as a contour (no cycle on the machine).
+void undercut_contour(PostState& s, const Statement& st, const UndercutWords& u, double pitch) {
+  const Din76Row* row = din76_row(u.form, pitch);
   if (!row) {
-    error(st, form_loc,
+    error(s, st, u.form_loc,
           fmt::format("CYCLE/UNDCUT: no DIN 76-1 row for form {}, pitch {} (M{}) in clpost's "
                       "table: only the normal forms A and C are carried (cited in "
                       "src/interpreter/undercut.cc); use FORM,{} or a machine with CYCLE96",
-                      form_name(*form), num_text(*pitch), num_text(*diam),
-                      internal_form(*form) ? 'C' : 'A'));
+                      form_name(u.form), num_text(pitch), num_text(u.diam),
+                      internal_form(u.form) ? 'C' : 'A'));
     return;
   }
-  if (!pos_) {
-    error(st, st.loc,
+  if (!s.pos) {
+    error(s, st, st.loc,
           "CYCLE/UNDCUT needs the tool position to tell the undercut's side: no GOTO or FROM "
           "before it");
     return;
   }
-  const Vec2 here = cl2(*pos_);
-  if (std::fabs(here.z - *at) < 1e-9) {
-    error(st, st.loc,
+  const Vec2 here = cl2(s.m, *s.pos);
+  if (std::fabs(here.z - u.at) < 1e-9) {
+    error(s, st, st.loc,
           fmt::format("CYCLE/UNDCUT: the tool is at the undercut's Z {}: it must be on the side "
                       "of AT where the undercut lies",
-                      num_text(*at)));
+                      num_text(u.at)));
     return;
   }
-  const int side = here.z > *at ? 1 : -1;
-  UndercutContour c = din76_contour(*diam, *at, *form, side, *row);
-  prog_.comment(fmt::format(
-      "thread undercut DIN 76-1 form {} for M{} at Z{}: diameter {}, width "
-      "{}, radius {}",
-      form_name(*form), num_text(*diam), num_text(*at),
-      num_text(internal_form(*form) ? *diam + row->diameter_step : *diam - row->diameter_step),
+  const UndercutContour c = din76_contour(u.diam, u.at, u.form, here.z > u.at ? 1 : -1, *row);
+  const double step = internal_form(u.form) ? row->diameter_step : -row->diameter_step;
+  s.prog.comment(fmt::format(
+      "thread undercut DIN 76-1 form {} for M{} at Z{}: diameter {}, width {}, radius {}",
+      form_name(u.form), num_text(u.diam), num_text(u.at), num_text(u.diam + step),
       num_text(row->width), num_text(row->radius)));
-  prog_.rapid(lp(c.start));
-  for (Vec2 p : c.to_fillet) prog_.linear(lp(p));
-  prog_.arc(lp(c.fillet_end), lp(c.fillet_center), c.fillet_ccw);
-  prog_.linear(lp(c.end));
-  prog_.rapid(lp(here));
-  stats_.motions += c.to_fillet.size() + 4;
+  s.prog.rapid(lp(c.start));
+  for (Vec2 p : c.to_fillet) s.prog.linear(lp(p));
+  s.prog.arc(lp(c.fillet_end), lp(c.fillet_center), c.fillet_ccw);
+  s.prog.linear(lp(c.end));
+  s.prog.rapid(lp(here));
+  s.stats.motions += c.to_fillet.size() + 4;
+}
+
+}  // namespace
+
+void undercut_stmt(PostState& s, const Statement& st) {
+  UndercutWords u;
+  if (!read_undercut_words(s, st, u)) return;
+  const bool cycle96 = s.m.templates.count("cycle96") > 0;
+  if (s.units == LengthUnit::kInch) {
+    error(s, st, st.loc,
+          "CYCLE/UNDCUT is for metric ISO threads (DIN 76-1, M3 ... M68): this program is in "
+          "inches");
+    return;
+  }
+  const std::optional<double> pitch = iso_coarse_pitch(u.diam);
+  if (!pitch) {
+    error(s, st, u.diam_loc,
+          fmt::format("CYCLE/UNDCUT: DIAM {} is not a metric ISO coarse thread M3 ... M68 (3, 4, "
+                      "5, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 27, 30, 33, 36, 39, 42, 45, 48, "
+                      "52, 56, 60, 64, 68){}",
+                      num_text(u.diam), cycle96 ? ": CYCLE96 stops with an alarm" : ""));
+    return;
+  }
+  if (!s.feed_given) {
+    error(s, st, st.loc, "CYCLE/UNDCUT cuts at the feed in force: no FEDRAT/ before it");
+    return;
+  }
+  ensure_started(s);
+  if (cycle96) return undercut_cycle96(s, st, u, *pitch);
+  undercut_contour(s, st, u, *pitch);
 }
 
 }  // namespace clpost

@@ -2,8 +2,8 @@
 // Thread undercuts: CL `CYCLE/UNDCUT,DIAM,d,AT,z,FORM,A|B|C|D`. On a machine with a `cycle96`
 // template (SINUMERIK) it becomes one CYCLE96(DIATH, AXSA, FORM) call with the checks the
 // control makes (seed 001_…); elsewhere the DIN 76-1 undercut is cut as a contour from the table
-// below, or refused where the table has no row. The interpreter's statement handler is
-// Interpreter::undercut_stmt (undercut.cc).
+// below, or refused where the table has no row. The statement handler is undercut_stmt
+// (statement_table.h, undercut.cc).
 #include <optional>
 #include <vector>
 

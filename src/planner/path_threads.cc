@@ -30,7 +30,7 @@ bool CouplePlanner::begin(const CoupleInput& in, const PlannerSettings& settings
   plan_.pitch = in.pitch;
   plan_.lead = in.pitch.starts * in.pitch.pitch;
   plan_.option = 0;
-  plan_.tool_angle = 0;
+  plan_.tool_angle = settings.default_tool_angle;  // the CL gives none: drawn with the default
   plan_.cutang = 0;
   plan_.p0 = in.start;
   plan_.side = ThreadSide::kExternal;

@@ -101,6 +101,8 @@ class CouplePlanner {
   const ThreadPass* add(Vec2 point, SourceLoc loc, std::string_view line, Diagnostics& diags);
   // The plan of the whole sequence. False (reported) when it had no synchronized move.
   bool finish(ThreadPlan& out, Diagnostics& diags);
+  // The plan so far: pitch, lead and units from begin(), the path up to the last add().
+  const ThreadPlan& plan() const { return plan_; }
 
  private:
   ThreadPlan plan_;

@@ -1,0 +1,23 @@
+// CYCLE/: thread undercuts (CYCLE/UNDCUT, undercut.cc); other cycles are refused with their
+// holes, so that no hole is posted as a plain move.
+#include <fmt/format.h>
+
+#include "interpreter/statement_table.h"
+
+namespace clpost {
+
+void cycle_stmt(PostState& s, const Statement& st) {
+  if (!st.args.empty() && st.args[0].is("OFF")) {
+    s.in_cycle = false;
+    return;
+  }
+  if (!st.args.empty() && st.args[0].is("UNDCUT")) return undercut_stmt(s, st);
+  s.in_cycle = true;  // its hole positions are not posted as plain moves
+  const std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
+  error(s, st, st.loc,
+        fmt::format("CYCLE/{} is not supported on machine '{}': its holes would be lost; "
+                    "post the drilling with a milling post or output it as motion",
+                    kind, s.m.name));
+}
+
+}  // namespace clpost

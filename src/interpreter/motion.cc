@@ -1,0 +1,156 @@
+// Motion statements: GOTO, FROM, GODLTA, CIRCLE (+ the GOTO that ends its arc), RAPID.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter/statement_table.h"
+
+namespace clpost {
+
+namespace {
+
+// The arc of CIRCLE/ `c` from where the tool is to `p`; false when it cannot be cut (reported).
+bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
+  if (!s.pos) {
+    error(s, st, st.loc, "an arc needs a start point: no GOTO or FROM before CIRCLE/");
+    return false;
+  }
+  const Machine& m = s.m;
+  const LathePoint from = lathe(m, *s.pos), target = lathe(m, p);
+  const LathePoint center = lathe(m, Point3{c.cx, c.cy, c.cz});
+  const double r0 = std::hypot(from.r - center.r, from.z - center.z);
+  const double r1 = std::hypot(target.r - center.r, target.z - center.z);
+  const double tol = std::max(1e-3, 1e-4 * std::max(r0, r1));
+  if (std::abs(r0 - r1) > tol) {
+    error(s, st, st.loc,
+          fmt::format("arc end point is not on the circle of line {}: distance from the centre "
+                      "{:.6g} at the start, {:.6g} at the end",
+                      c.loc.line, r0, r1));
+    return false;
+  }
+  // Positive rotation about the axis: G3 when it turns axial toward radial (axis along
+  // axial x radial), as ISO G18 defines it.
+  const double axis[3] = {c.ax, c.ay, c.az};
+  const double normal =
+      axis[static_cast<int>(third_axis(m))] / std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
+  const int e_r = static_cast<int>(m.cl_radial), e_z = static_cast<int>(m.cl_axial);
+  // Sign of the permutation (e_z, e_r, third): cross(e_z, e_r) = +third when even.
+  const bool even = (e_z + 1) % 3 == e_r;
+  s.prog.arc(target, center, (normal > 0) == even);
+  return true;
+}
+
+// A point off the lathe plane: the third axis is ignored, with one warning per file.
+void check_plane(PostState& s, const Statement& st, Point3 p) {
+  const ClAxis third = third_axis(s.m);
+  const double off = axis_value(p, third);
+  if (std::abs(off) > 1e-6 && s.y_warnings++ == 0) {
+    warning(s, st, st.loc,
+            fmt::format("{} = {} but a lathe has no such axis: ignored (the first of such points; "
+                        "is this a milling program?)",
+                        "XYZ"[static_cast<int>(third)], off));
+  }
+}
+
+}  // namespace
+
+void move_to(PostState& s, const Statement& st, Point3 p) {
+  check_plane(s, st, p);
+  ensure_started(s);
+  ++s.stats.motions;
+  if (s.circle) {
+    const Circle c = *s.circle;
+    s.circle.reset();
+    if (arc_to(s, st, c, p)) {
+      s.pos = p;
+      s.rapid_next = false;
+      return;
+    }
+  }
+  if (s.rapid_next) {
+    s.prog.rapid(lathe(s.m, p));
+  } else {
+    if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
+    s.prog.linear(lathe(s.m, p));
+  }
+  s.rapid_next = false;
+  s.pos = p;
+}
+
+void goto_stmt(PostState& s, const Statement& st) {
+  const size_t n = st.args.size();
+  if (n != 2 && n != 3 && n != 6) {
+    error(s, st, n ? st.args[std::min<size_t>(n, 6) - 1].loc : st.loc,
+          fmt::format("GOTO/ takes x,y[,z[,i,j,k]]: 2, 3 or 6 numbers, found {}", n));
+    return;
+  }
+  Point3 p;
+  if (!number_arg(s, st, 0, "X", p.x) || !number_arg(s, st, 1, "Y", p.y)) return;
+  if (n >= 3) {
+    if (!number_arg(s, st, 2, "Z", p.z)) return;
+  } else {
+    p.z = s.pos ? s.pos->z : 0;
+  }
+  if (n == 6) {
+    for (size_t i = 3; i < 6; ++i) {
+      double v;
+      if (!number_arg(s, st, i, "a tool axis component", v)) return;
+    }
+    note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
+  }
+  if (s.in_cycle) return;  // reported at CYCLE/
+  if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
+  move_to(s, st, p);
+}
+
+void from_stmt(PostState& s, const Statement& st) {
+  Point3 p;
+  if (!number_arg(s, st, 0, "X", p.x) || !number_arg(s, st, 1, "Y", p.y)) return;
+  if (st.args.size() >= 3 && !number_arg(s, st, 2, "Z", p.z)) return;
+  s.pos = p;
+}
+
+void godlta_stmt(PostState& s, const Statement& st) {
+  if (!s.pos) {
+    error(s, st, st.loc, "GODLTA/ needs a known position: no GOTO or FROM before it");
+    return;
+  }
+  Point3 d;
+  if (st.args.size() == 1) {
+    if (!number_arg(s, st, 0, "a Z distance", d.z)) return;
+  } else {
+    if (!number_arg(s, st, 0, "dX", d.x) || !number_arg(s, st, 1, "dY", d.y)) return;
+    if (st.args.size() >= 3 && !number_arg(s, st, 2, "dZ", d.z)) return;
+  }
+  const Point3 p{s.pos->x + d.x, s.pos->y + d.y, s.pos->z + d.z};
+  if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
+  move_to(s, st, p);
+}
+
+void circle_stmt(PostState& s, const Statement& st) {
+  Circle c;
+  if (!number_arg(s, st, 0, "the centre X", c.cx) || !number_arg(s, st, 1, "the centre Y", c.cy) ||
+      !number_arg(s, st, 2, "the centre Z", c.cz) || !number_arg(s, st, 3, "the axis I", c.ax) ||
+      !number_arg(s, st, 4, "the axis J", c.ay) || !number_arg(s, st, 5, "the axis K", c.az) ||
+      !number_arg(s, st, 6, "the radius", c.radius))
+    return;
+  c.loc = st.loc;
+  // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
+  const double axis[3] = {c.ax, c.ay, c.az};
+  const double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
+  if (!(len > 0) || std::abs(std::abs(axis[static_cast<int>(third_axis(s.m))] / len) - 1) > 1e-6) {
+    error(s, st, st.loc,
+          fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot "
+                      "be cut on a lathe",
+                      c.ax, c.ay, c.az));
+    return;
+  }
+  s.circle = c;
+}
+
+void rapid_stmt(PostState& s, const Statement&) {
+  s.rapid_next = true;
+}
+
+}  // namespace clpost

@@ -1,0 +1,83 @@
+// PostState: construction, diagnostics at a statement, the lathe frame (post_state.h).
+#include "interpreter/post_state.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace clpost {
+
+PostState::PostState(const Machine& machine, NcProgram& program, Diagnostics& d,
+                     const PostOptions& o)
+    : m(machine), prog(program), diags(d), opts(o) {
+  units = machine.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+  thread.settings = planner_settings(machine);
+  thread.emitter = make_emitter(machine);
+}
+
+void error(PostState& s, const Statement& st, SourceLoc loc, std::string msg) {
+  s.diags.error(loc, st.line_text(loc.line), std::move(msg));
+}
+
+void warning(PostState& s, const Statement& st, SourceLoc loc, std::string msg) {
+  s.diags.warning(loc, st.line_text(loc.line), std::move(msg));
+}
+
+void note_once(PostState& s, const Statement& st, std::string_view key, std::string msg) {
+  if (std::find(s.noted.begin(), s.noted.end(), key) != s.noted.end()) return;
+  s.noted.emplace_back(key);
+  s.diags.note(st.loc, st.line_text(st.loc.line), std::move(msg));
+}
+
+bool bad_number_arg(PostState& s, const Statement& st, size_t i, std::string_view what) {
+  if (i >= st.args.size()) {
+    SourceLoc end = st.args.empty() ? st.loc : st.args.back().loc;
+    error(s, st, end, fmt::format("{}/ needs {} (argument {})", st.major, what, i + 1));
+    return false;
+  }
+  const Arg& a = st.args[i];
+  if (!a.is_number()) {
+    error(s, st, a.loc, fmt::format("expected {} but found '{}'", what, a.text));
+    return false;
+  }
+  return in_range(s, st, a, what);  // false: its error is reported
+}
+
+bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view what) {
+  if (within_limits(a.number)) return true;
+  error(s, st, a.loc,
+        fmt::format("{} '{}' is out of range: CL values must be between -{} and {}", what, a.text,
+                    kMaxClValue, kMaxClValue));
+  return false;
+}
+
+void ensure_started(PostState& s) {
+  if (s.started) return;
+  s.started = true;
+  s.prog.start(s.partno, s.units == LengthUnit::kInch, s.diags.file());
+  if (!s.partno.empty()) s.prog.comment(s.partno);
+}
+
+double axis_value(Point3 p, ClAxis a) {
+  return a == ClAxis::kX ? p.x : a == ClAxis::kY ? p.y : p.z;
+}
+
+ClAxis third_axis(const Machine& m) {
+  return static_cast<ClAxis>(3 - static_cast<int>(m.cl_radial) - static_cast<int>(m.cl_axial));
+}
+
+Vec2 cl2(const Machine& m, Point3 p) {
+  double r = axis_value(p, m.cl_radial);
+  if (m.cl_x_is_diameter) r /= 2;
+  return Vec2{r, axis_value(p, m.cl_axial)};
+}
+
+Point3 cl_point(const Machine& m, Vec2 v) {
+  Point3 p;
+  double* axes[3] = {&p.x, &p.y, &p.z};
+  *axes[static_cast<int>(m.cl_radial)] = m.cl_x_is_diameter ? v.x * 2 : v.x;
+  *axes[static_cast<int>(m.cl_axial)] = v.z;
+  return p;
+}
+
+}  // namespace clpost

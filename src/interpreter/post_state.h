@@ -1,0 +1,122 @@
+#pragma once
+// The state of one post in progress: the machine, the program being written, the diagnostics and
+// the CL's modal state (units, position, feed, spindle, tool, thread sequences). Every statement
+// handler (statement_table.h) reads and changes it; one PostState per file, nothing shared.
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interpreter/thread_sequence.h"
+#include "machine/machine.h"
+#include "planner/thread_plan.h"
+#include "reader/statement.h"
+#include "support/diagnostics.h"
+#include "writer/nc_program.h"
+
+namespace clpost {
+
+struct PostOptions {
+  bool strict = false;  // unknown statements are errors, not warnings
+};
+
+struct PostStats {
+  size_t statements = 0;
+  size_t motions = 0;
+  size_t threads = 0;
+  size_t passes = 0;
+};
+
+// A CL point as read (before the lathe frame is applied).
+struct Point3 {
+  double x = 0, y = 0, z = 0;
+};
+
+// CIRCLE/ waiting for the GOTO that ends its arc.
+struct Circle {
+  double cx = 0, cy = 0, cz = 0, ax = 0, ay = 0, az = 0, radius = 0;
+  SourceLoc loc;
+};
+
+// The spindle as last programmed.
+struct SpindleState {
+  bool on = false;
+  bool css = false;
+  double value = 0;  // rpm, or the surface speed when css
+  double css_max_rpm = 0;
+  SpindleDir dir = SpindleDir::kCw;
+};
+
+// The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything larger
+// is a units mistake or garbage, and would not fit an NC address anyway.
+inline constexpr double kMaxClValue = 1e6;
+inline bool within_limits(double v) {
+  return std::abs(v) <= kMaxClValue;  // NaN is not
+}
+
+struct PostState {
+  PostState(const Machine& machine, NcProgram& program, Diagnostics& d, const PostOptions& o);
+
+  const Machine& m;
+  NcProgram& prog;
+  Diagnostics& diags;
+  PostOptions opts;
+  PostStats stats;
+  std::function<void(const ThreadPlan&)> on_thread;  // every thread plan (clpost plan)
+
+  LengthUnit units;
+  bool started = false;  // the program's start template is written
+  bool ended = false;    // FINI seen (or the end written)
+  std::string partno;
+  std::optional<Point3> pos;  // where the tool is, in the CL frame (unknown at first)
+  bool rapid_next = false;    // RAPID: the next move only
+  std::optional<Circle> circle;
+  bool feed_given = false;
+  FeedMode feed_mode = FeedMode::kPerMinute;
+  double feed = 0;  // output units
+  SpindleState spindle;
+  int tool_offset = -1;   // offset of the last tool change (-1: no tool loaded yet)
+  bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
+  size_t y_warnings = 0;  // points off the lathe plane (warned once)
+  std::vector<std::string> noted;  // keys of notes already given once
+  ThreadSequence thread;           // the thread sequence being read, if any
+};
+
+// Diagnostics at statement `st` (its own line text is shown).
+void error(PostState& s, const Statement& st, SourceLoc loc, std::string msg);
+void warning(PostState& s, const Statement& st, SourceLoc loc, std::string msg);
+// A note at `st`, given once per `key` in a file.
+void note_once(PostState& s, const Statement& st, std::string_view key, std::string msg);
+
+// Argument `i` of `st` as a number within ±kMaxClValue into `out`; false (reported) otherwise.
+// Inline for the common case (every GOTO coordinate comes here), the diagnostics out of line.
+bool bad_number_arg(PostState& s, const Statement& st, size_t i, std::string_view what);
+inline bool number_arg(PostState& s, const Statement& st, size_t i, std::string_view what,
+                       double& out) {
+  if (i < st.args.size() && st.args[i].is_number() && within_limits(st.args[i].number)) {
+    out = st.args[i].number;
+    return true;
+  }
+  return bad_number_arg(s, st, i, what);
+}
+// `a` within ±kMaxClValue; false (reported) otherwise.
+bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view what);
+
+// Writes the program start (once) before the first block.
+void ensure_started(PostState& s);
+
+// The lathe frame: a CL point as (radius, axial) in CL units, and as NcProgram's point.
+Vec2 cl2(const Machine& m, Point3 p);
+inline LathePoint lathe(const Machine& m, Point3 p) {
+  const Vec2 v = cl2(m, p);
+  return LathePoint{v.x, v.z};
+}
+// The CL point of lathe-frame point `v` (the third axis 0).
+Point3 cl_point(const Machine& m, Vec2 v);
+// The CL axis that is neither radial nor axial: a lathe has none.
+ClAxis third_axis(const Machine& m);
+double axis_value(Point3 p, ClAxis a);
+
+}  // namespace clpost

@@ -1,0 +1,125 @@
+// Program words: UNITS, COOLNT, CUTCOM, STOP/OPSTOP, END, FINI, GOHOME, MULTAX, spline motion
+// (refused) and the records a lathe program skips.
+#include <fmt/format.h>
+
+#include "interpreter/statement_table.h"
+
+namespace clpost {
+
+void units_stmt(PostState& s, const Statement& st) {
+  if (st.args.empty() || !st.args[0].is_word()) {
+    error(s, st, st.args.empty() ? st.loc : st.args[0].loc, "expected UNITS/MM or UNITS/INCHES");
+    return;
+  }
+  const Arg& a = st.args[0];
+  LengthUnit u;
+  if (a.is("MM") || a.is("MILLIMETERS") || a.is("METRIC")) {
+    u = LengthUnit::kMm;
+  } else if (a.is("INCHES") || a.is("INCH") || a.is("IN")) {
+    u = LengthUnit::kInch;
+  } else {
+    error(s, st, a.loc, fmt::format("unknown unit '{}': expected MM or INCHES", a.text));
+    return;
+  }
+  if (s.started && u != s.units) {
+    if (s.pos)
+      warning(s, st, st.loc,
+              "units change after motion: later coordinates are read in the new units");
+    s.prog.writer().code(s.m.code(u == LengthUnit::kInch ? "inch" : "metric")).end_block();
+  }
+  s.units = u;
+}
+
+void coolnt_stmt(PostState& s, const Statement& st) {
+  constexpr const char* kExpected = "expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF";
+  if (st.args.empty() || !st.args[0].is_word()) {
+    error(s, st, st.args.empty() ? st.loc : st.args[0].loc, kExpected);
+    return;
+  }
+  const Arg& a = st.args[0];
+  Coolant c;
+  if (a.is("ON") || a.is("FLOOD")) {
+    c = Coolant::kFlood;
+  } else if (a.is("MIST")) {
+    c = Coolant::kMist;
+  } else if (a.is("THRU") || a.is("TOOL")) {
+    c = Coolant::kThrough;
+  } else if (a.is("AIR")) {
+    c = Coolant::kAir;
+  } else if (a.is("OFF")) {
+    c = Coolant::kOff;
+  } else {
+    error(s, st, a.loc,
+          fmt::format("unknown COOLNT word '{}': expected ON, FLOOD, MIST, THRU, AIR or OFF",
+                      a.text));
+    return;
+  }
+  ensure_started(s);
+  s.prog.coolant(c);
+}
+
+void cutcom_stmt(PostState& s, const Statement& st) {
+  if (st.args.empty() || !st.args[0].is_word()) {
+    error(s, st, st.args.empty() ? st.loc : st.args[0].loc, "expected CUTCOM/LEFT, RIGHT or OFF");
+    return;
+  }
+  const Arg& a = st.args[0];
+  CutterComp c;
+  if (a.is("LEFT")) {
+    c = CutterComp::kLeft;
+  } else if (a.is("RIGHT")) {
+    c = CutterComp::kRight;
+  } else if (a.is("OFF")) {
+    c = CutterComp::kOff;
+  } else {
+    error(s, st, a.loc,
+          fmt::format("unknown CUTCOM word '{}': expected LEFT, RIGHT or OFF", a.text));
+    return;
+  }
+  ensure_started(s);
+  s.prog.cutter_comp(c);
+}
+
+void stop_stmt(PostState& s, const Statement& st) {
+  ensure_started(s);
+  s.prog.program_stop(st.major == "OPSTOP");
+}
+
+void end_stmt(PostState&, const Statement&) {
+  // APT's END (end of a tape section) asks nothing of a lathe program.
+}
+
+void finish_program(PostState& s) {
+  if (s.ended) return;
+  end_sequences(s);
+  ensure_started(s);
+  s.prog.end(s.partno);
+  s.ended = true;
+}
+
+void fini_stmt(PostState& s, const Statement&) {
+  finish_program(s);
+}
+
+void gohome_stmt(PostState& s, const Statement& st) {
+  warning(s, st, st.loc, "GOHOME: this machine has no home position in its machine file; ignored");
+}
+
+void multax_stmt(PostState& s, const Statement& st) {
+  if (!st.args.empty() && st.args[0].is("ON"))
+    note_once(s, st, "MULTAX", "MULTAX/ON: tool axis vectors are ignored on a lathe");
+}
+
+void spline_stmt(PostState& s, const Statement& st) {
+  error(s, st, st.loc,
+        fmt::format("{}/ spline motion cannot be cut on a lathe post; output it as GOTO points "
+                    "from the CAM system",
+                    st.major));
+}
+
+void skipped_stmt(PostState& s, const Statement& st) {
+  note_once(s, st, st.major,
+            fmt::format("{} records skipped (nothing a lathe program needs)", st.major));
+}
+
+}  // namespace clpost

@@ -1,0 +1,206 @@
+// Feed, spindle and dwell: FEDRAT/, SPINDL/, DELAY/.
+#include <fmt/format.h>
+
+#include <optional>
+
+#include "interpreter/statement_table.h"
+
+namespace clpost {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+// SPINDL/ as read: the words in any order.
+struct SpindleWords {
+  std::optional<double> value, max_rpm;
+  SourceLoc value_loc;
+  bool css = false, off = false, on = false;
+  std::optional<SpindleDir> dir;
+};
+
+// Reads SPINDL/'s words into `w`; false (reported) on a bad one.
+bool read_spindle_words(PostState& s, const Statement& st, SpindleWords& w) {
+  w.value_loc = st.loc;
+  for (size_t i = 0; i < st.args.size(); ++i) {
+    const Arg& a = st.args[i];
+    if (a.is_number()) {
+      if (w.value) {
+        error(s, st, a.loc,
+              fmt::format("SPINDL/ takes one speed; found a second number '{}'", a.text));
+        return false;
+      }
+      if (!in_range(s, st, a, "spindle speed")) return false;
+      w.value = a.number, w.value_loc = a.loc;
+    } else if (a.is("RPM")) {
+      w.css = false;
+    } else if (a.is("SMM") || a.is("SFM")) {
+      w.css = true;
+      // SMM: metres per minute, SFM: feet per minute; converted to the output unit's speed.
+      if (a.is("SMM") && s.units == LengthUnit::kInch)
+        note_once(s, st, "SMM-inch",
+                  "SMM in an inch program: written as metres per minute in the G96 word");
+    } else if (a.is("CLW") || a.is("CCLW")) {
+      w.dir = a.is("CLW") ? SpindleDir::kCw : SpindleDir::kCcw;
+    } else if (a.is("OFF") || a.is("ON")) {
+      (a.is("OFF") ? w.off : w.on) = true;
+    } else if (a.is("MAXRPM")) {
+      if (i + 1 >= st.args.size() || !st.args[i + 1].is_number()) {
+        error(s, st, a.loc, "MAXRPM needs a speed limit");
+        return false;
+      }
+      if (!in_range(s, st, st.args[i + 1], "MAXRPM")) return false;
+      w.max_rpm = st.args[++i].number;
+    } else if (a.is("RANGE")) {
+      if (i + 1 < st.args.size() && st.args[i + 1].is_number()) ++i;
+    } else {
+      error(s, st, a.loc,
+            fmt::format("unknown SPINDL word '{}': expected a speed and RPM, SMM, SFM, CLW, "
+                        "CCLW, MAXRPM, OFF, ON",
+                        a.text));
+      return false;
+    }
+  }
+  return true;
+}
+
+// Turns the spindle on at the speed of `w` (the earlier speed for SPINDL/ON).
+void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
+  SpindleState& sp = s.spindle;
+  if (!w.value) {
+    if (!w.on || !(sp.value > 0)) {
+      error(s, st, st.loc, "SPINDL/ needs a speed (or SPINDL/ON after an earlier speed)");
+      return;
+    }
+    w.value = sp.value, w.css = sp.css;
+  }
+  if (!(*w.value > 0)) {
+    error(s, st, w.value_loc, fmt::format("spindle speed must be positive, got {}", *w.value));
+    return;
+  }
+  if (w.dir) sp.dir = *w.dir;
+  if (!w.css && s.m.max_rpm > 0 && *w.value > s.m.max_rpm) {
+    error(s, st, w.value_loc,
+          fmt::format("spindle speed {} rpm exceeds the machine's maximum {} rpm", *w.value,
+                      s.m.max_rpm));
+    return;
+  }
+  sp.css = w.css;
+  sp.value = *w.value;
+  sp.on = true;
+  if (!w.css) return s.prog.spindle_rpm(*w.value, sp.dir);
+  double limit = w.max_rpm.value_or(s.m.max_rpm);
+  if (!(limit > 0)) {
+    error(s, st, st.loc,
+          "constant surface speed needs a speed limit: add MAXRPM,n or set limits.max_rpm in the "
+          "machine file");
+    return;
+  }
+  if (s.m.max_rpm > 0 && limit > s.m.max_rpm) limit = s.m.max_rpm;
+  sp.css_max_rpm = limit;
+  s.prog.spindle_css(*w.value, limit, sp.dir);
+}
+
+}  // namespace
+
+void fedrat_stmt(PostState& s, const Statement& st) {
+  double value = 0;
+  bool have_value = false;
+  FeedMode mode = FeedMode::kPerMinute;
+  double factor = 1;  // to CL units
+  const double to_cl_from_mm = s.units == LengthUnit::kInch ? 1 / kMmPerInch : 1;
+  const double to_cl_from_in = s.units == LengthUnit::kInch ? 1 : kMmPerInch;
+  SourceLoc value_loc = st.loc;
+  for (const Arg& a : st.args) {
+    if (a.is_number()) {
+      if (have_value) {
+        error(s, st, a.loc,
+              fmt::format("FEDRAT/ takes one feed value; found a second number '{}'", a.text));
+        return;
+      }
+      if (!in_range(s, st, a, "feed")) return;
+      value = a.number, have_value = true, value_loc = a.loc;
+    } else if (a.is("MMPM") || a.is("MMPR")) {
+      mode = a.is("MMPM") ? FeedMode::kPerMinute : FeedMode::kPerRev, factor = to_cl_from_mm;
+    } else if (a.is("IPM") || a.is("IPR")) {
+      mode = a.is("IPM") ? FeedMode::kPerMinute : FeedMode::kPerRev, factor = to_cl_from_in;
+    } else if (a.is("PERMIN") || a.is("FPM")) {
+      mode = FeedMode::kPerMinute;
+    } else if (a.is("PERREV") || a.is("FPR")) {
+      mode = FeedMode::kPerRev;
+    } else {
+      error(s, st, a.loc,
+            fmt::format("unknown FEDRAT word '{}': expected a feed and one of MMPM, MMPR, IPM, "
+                        "IPR, PERMIN, PERREV",
+                        a.text));
+      return;
+    }
+  }
+  if (!have_value) return error(s, st, st.loc, "FEDRAT/ needs a feed value");
+  if (!(value > 0))
+    return error(s, st, value_loc, fmt::format("feed must be positive, got {}", value));
+  s.feed = value * factor;
+  s.feed_mode = mode;
+  s.feed_given = true;
+  if (s.m.max_feed > 0 && mode == FeedMode::kPerMinute && s.feed > s.m.max_feed) {
+    warning(s, st, st.loc,
+            fmt::format("feed {} exceeds the machine's maximum feed {}", s.feed, s.m.max_feed));
+  }
+  s.prog.set_feed(s.feed, s.feed_mode);
+}
+
+void spindl_stmt(PostState& s, const Statement& st) {
+  SpindleWords w;
+  if (!read_spindle_words(s, st, w)) return;
+  ensure_started(s);
+  if (w.off) {
+    s.spindle.on = false;
+    s.prog.spindle_stop();
+    return;
+  }
+  spindle_on(s, st, w);
+}
+
+// DELAY/t dwells t seconds, DELAY/REV,n n spindle revolutions. The machine's dwell template
+// asks for {seconds} or {revolutions}; one becomes the other through the spindle speed in RPM.
+void delay_stmt(PostState& s, const Statement& st) {
+  const bool in_revs = !st.args.empty() && st.args[0].is("REV");
+  const size_t i = in_revs ? 1 : 0;
+  double v = 0;
+  if (!number_arg(s, st, i, in_revs ? "a dwell in revolutions" : "a dwell time in seconds", v))
+    return;
+  if (!(v >= 0)) {
+    error(s, st, st.args[i].loc,
+          fmt::format("{} must not be negative, got {}",
+                      in_revs ? "a dwell in revolutions" : "dwell time", v));
+    return;
+  }
+  if (!s.m.templates.count("dwell")) {
+    error(
+        s, st, st.loc,
+        fmt::format("machine '{}' has no 'dwell' template: the dwell cannot be posted", s.m.name));
+    return;
+  }
+  const SpindleState& sp = s.spindle;
+  const bool rpm_known = sp.on && !sp.css && sp.value > 0;
+  std::optional<double> seconds, revolutions;
+  if (in_revs) {
+    revolutions = v;
+    if (rpm_known) seconds = v * 60 / sp.value;
+  } else {
+    seconds = v;
+    if (rpm_known) revolutions = v * sp.value / 60;
+  }
+  ensure_started(s);
+  if (s.prog.dwell(seconds, revolutions)) return;
+  error(s, st, st.loc,
+        fmt::format("machine '{}' dwells in {}: a dwell of {} {} needs the spindle turning at a "
+                    "set RPM to convert, and the spindle {}",
+                    s.m.name, in_revs ? "seconds" : "revolutions", v,
+                    in_revs ? "revolutions" : "seconds",
+                    !sp.on   ? "is stopped"
+                    : sp.css ? "runs at constant surface speed"
+                             : "has no speed"));
+}
+
+}  // namespace clpost

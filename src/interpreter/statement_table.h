@@ -1,0 +1,77 @@
+#pragma once
+// Statement handlers by major word. Each family lives in its own file: motion.cc (GOTO, FROM,
+// GODLTA, CIRCLE, RAPID), spindle_feed.cc (FEDRAT, SPINDL, DELAY), tool.cc (LOADTL, LOAD/TOOL,
+// TURRET), program_words.cc (UNITS, COOLNT, CUTCOM, STOP, FINI, … and the words skipped),
+// text_words.cc (PARTNO, PPRINT, INSERT, TOOL PATH, unknown words), thread_statements.cc
+// (PITCH, THREAD, OP/THREAD, COUPLE), cycles.cc (CYCLE/). A new CL word is one entry in
+// statement_table.cc and one handler.
+#include <span>
+#include <string_view>
+
+#include "interpreter/post_state.h"
+
+namespace clpost {
+
+using StatementHandler = void (*)(PostState&, const Statement&);
+
+struct StatementEntry {
+  std::string_view major;
+  StatementHandler handler;
+};
+
+// The handler of major word `major` (upper case), or nullptr when the word is unknown.
+const StatementEntry* find_statement(std::string_view major);
+// Every entry, sorted by major word (tests).
+std::span<const StatementEntry> statement_table();
+
+// Handlers (declared here so that the table can name them).
+void goto_stmt(PostState& s, const Statement& st);
+void from_stmt(PostState& s, const Statement& st);
+void godlta_stmt(PostState& s, const Statement& st);
+void circle_stmt(PostState& s, const Statement& st);
+void rapid_stmt(PostState& s, const Statement& st);
+void fedrat_stmt(PostState& s, const Statement& st);
+void spindl_stmt(PostState& s, const Statement& st);
+void delay_stmt(PostState& s, const Statement& st);
+void loadtl_stmt(PostState& s, const Statement& st);
+void load_stmt(PostState& s, const Statement& st);
+void units_stmt(PostState& s, const Statement& st);
+void coolnt_stmt(PostState& s, const Statement& st);
+void cutcom_stmt(PostState& s, const Statement& st);
+void stop_stmt(PostState& s, const Statement& st);
+void end_stmt(PostState& s, const Statement& st);
+void fini_stmt(PostState& s, const Statement& st);
+void gohome_stmt(PostState& s, const Statement& st);
+void multax_stmt(PostState& s, const Statement& st);
+void spline_stmt(PostState& s, const Statement& st);
+void skipped_stmt(PostState& s, const Statement& st);
+void partno_stmt(PostState& s, const Statement& st);
+void pprint_stmt(PostState& s, const Statement& st);
+void insert_stmt(PostState& s, const Statement& st);
+void tool_path_stmt(PostState& s, const Statement& st);
+void pitch_stmt(PostState& s, const Statement& st);
+void thread_stmt(PostState& s, const Statement& st);
+void op_stmt(PostState& s, const Statement& st);
+void couple_stmt(PostState& s, const Statement& st);
+void cycle_stmt(PostState& s, const Statement& st);
+void undercut_stmt(PostState& s, const Statement& st);  // CYCLE/UNDCUT (undercut.cc)
+
+// A statement no handler knows: a warning and an NC comment, or an error with --strict.
+void unknown_stmt(PostState& s, const Statement& st);
+
+// Thread sequences (thread_statements.cc). A GOTO's point while a sequence is open.
+void thread_goto(PostState& s, const Statement& st, Point3 p);
+// Whether statement `st` may stand inside the open sequence; false: reported, skip it. A
+// single-pass thread ends at the first statement that is not a GOTO: it is cut here.
+bool sequence_accepts(PostState& s, const Statement& st);
+// The input ends: a single-pass thread is cut, an open THREAD/ON or COUPLE/ON is an error.
+void end_sequences(PostState& s);
+
+// FINI or the end of input: a single-pass thread is cut, open sequences reported, the program
+// end written (once).
+void finish_program(PostState& s);
+
+// The ordinary move to `p` (motion.cc): rapid, feed or the arc of a CIRCLE/ before it.
+void move_to(PostState& s, const Statement& st, Point3 p);
+
+}  // namespace clpost

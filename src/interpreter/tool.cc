@@ -1,0 +1,56 @@
+// Tool changes: LOADTL/n[,ADJUST|OSETNO|OFFSET,m], LOAD/TOOL,n, TURRET/n.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interpreter/statement_table.h"
+
+namespace clpost {
+
+namespace {
+
+// A whole number 0..9999 (tool and offset numbers).
+bool whole_0_9999(double v) {
+  return v >= 0 && v == std::floor(v) && v <= 9999;
+}
+
+// The tool change whose tool number is argument `first`.
+void tool_change(PostState& s, const Statement& st, size_t first) {
+  double tool = 0;
+  if (!number_arg(s, st, first, "a tool number", tool)) return;
+  if (!whole_0_9999(tool)) {
+    error(s, st, st.args[first].loc,
+          fmt::format("tool number must be a whole number 0..9999, got {}", st.args[first].text));
+    return;
+  }
+  int offset = static_cast<int>(tool);
+  for (size_t i = first + 1; i + 1 < st.args.size(); ++i) {
+    const Arg& word = st.args[i];
+    if (!(word.is("ADJUST") || word.is("OSETNO") || word.is("OFFSET")) ||
+        !st.args[i + 1].is_number())
+      continue;
+    const Arg& o = st.args[i + 1];
+    if (!whole_0_9999(o.number)) {
+      error(s, st, o.loc,
+            fmt::format("tool offset must be a whole number 0..9999, got {}", o.text));
+      return;
+    }
+    offset = static_cast<int>(o.number);
+  }
+  ensure_started(s);
+  s.tool_offset = offset;
+  s.prog.tool_change(static_cast<int>(tool), offset, "");
+}
+
+}  // namespace
+
+void loadtl_stmt(PostState& s, const Statement& st) {
+  tool_change(s, st, 0);
+}
+
+void load_stmt(PostState& s, const Statement& st) {
+  if (st.args.empty() || !st.args[0].is("TOOL")) return unknown_stmt(s, st);
+  tool_change(s, st, 1);
+}
+
+}  // namespace clpost
