@@ -9,7 +9,7 @@
 
 #include "cl_generator.h"
 #include "emitters/emitter.h"
-#include "interpreter/interpreter.h"
+#include "interpreter/post.h"
 #include "machine/machine_loader.h"
 #include "planner/planner.h"
 #include "planner/thread_words.h"
@@ -136,12 +136,8 @@ void BM_PostInMemory(benchmark::State& state) {
   for (auto _ : state) {
     CountingSink sink;
     Diagnostics diags("bench.cl");
-    NcProgram prog(m, sink);
-    Interpreter interp(m, prog, diags, PostOptions{});
     ClReader reader(text, diags);
-    Statement st;
-    while (reader.next(st)) interp.statement(st);
-    interp.end_of_input(reader.line());
+    post(reader, m, sink, diags);
     if (diags.has_errors()) std::abort();
     benchmark::DoNotOptimize(sink.bytes);
   }

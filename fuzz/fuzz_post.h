@@ -1,12 +1,12 @@
 #pragma once
-// What the fuzz targets share: posting CL text on a machine the way `clpost` does (post_file.cc),
-// into memory.
+// What the fuzz targets share: posting CL text on a machine through post() (interpreter/post.h),
+// as `clpost` does, into memory.
 #include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "interpreter/interpreter.h"
+#include "interpreter/post.h"
 #include "machine/machine.h"
 #include "machine/machine_loader.h"
 #include "planner/plan_format.h"
@@ -28,29 +28,16 @@ inline Machine shipped_machine(const char* name) {
   return m;
 }
 
-// Reads CL text from `in` (a ClReader over memory or a FILE*) and posts it on `m`, like
-// post_file(): the NC program, the rendered diagnostics and the thread plans as text and JSON.
-// Returns the number of errors.
+// Reads CL text from `in` (a ClReader over memory or a FILE*) and posts it on `m`: the NC program,
+// the rendered diagnostics and the thread plans as text and JSON. Returns the number of errors.
 inline size_t post(ClReader& reader, Diagnostics& diags, const Machine& m, PostOptions opts,
                    std::string* nc_out = nullptr) {
   StringSink sink;
   std::vector<ThreadPlan> plans;
-  LengthUnit units = LengthUnit::kMm;
-  {
-    NcProgram prog(m, sink);
-    Interpreter interp(m, prog, diags, opts);
-    interp.on_thread([&](const ThreadPlan& p) {
-      if (plans.size() < 64) plans.push_back(p);
-    });
-    Statement st;
-    while (reader.next(st)) interp.statement(st);
-    if (interp.stats().statements == 0 && !diags.has_errors()) {
-      diags.error({}, {}, "no CL statements in the file");
-    } else if (!reader.gave_up()) {
-      interp.end_of_input(reader.line());
-    }
-    units = interp.units();
-  }
+  const PostSummary summary = clpost::post(reader, m, sink, diags, opts, [&](const ThreadPlan& p) {
+    if (plans.size() < 64) plans.push_back(p);
+  });
+  const LengthUnit units = summary.units;
   std::string text = diags.render_all();
   text += plan_to_text("fuzz.cl", units, plans);
   text += plan_to_json("fuzz.cl", units, plans);

@@ -33,15 +33,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   for (const char* name : kMachines) {
     auto t = std::make_unique<Target>();
     t->machine = clpost::fuzz::shipped_machine(name);
-    clpost::Diagnostics diags("plan.cl");
-    clpost::ClReader reader(std::string_view(kPlan), diags);
-    clpost::StringSink sink;
-    clpost::NcProgram prog(t->machine, sink);
-    clpost::Interpreter interp(t->machine, prog, diags, {});
-    interp.on_thread([&](const clpost::ThreadPlan& p) { t->plans.push_back(p); });
-    clpost::Statement st;
-    while (reader.next(st)) interp.statement(st);
-    interp.end_of_input(reader.line());
+    t->plans = clpost::post_text(kPlan, t->machine, "plan.cl").plans;
     g_targets->push_back(std::move(t));
   }
   return 0;

@@ -76,27 +76,15 @@ PostOutcome post_file(const PostRequest& req) {
   TeeSink tee(*sink, program);
   if (req.verify || req.program != nullptr) sink = &tee;
   {
-    NcProgram prog(*req.machine, *sink);
-    Interpreter interp(*req.machine, prog, diags, req.options);
-    if (req.verify) {
-      interp.on_thread([&](const ThreadPlan& p) {
-        if (req.on_thread) req.on_thread(p);
-        plans.push_back(p);
-      });
-    } else if (req.on_thread) {
-      interp.on_thread(req.on_thread);
-    }
+    auto on_thread = [&](const ThreadPlan& p) {
+      if (req.on_thread) req.on_thread(p);
+      if (req.verify) plans.push_back(p);
+    };
     ClReader reader(input.get(), diags);
-    Statement st;
-    while (reader.next(st)) interp.statement(st);
-    if (interp.stats().statements == 0 && !diags.has_errors()) {
-      diags.error({}, {}, "no CL statements in the file");
-    } else if (!reader.gave_up()) {
-      interp.end_of_input(reader.line());
-    }
-    out.stats = interp.stats();
-    out.units = interp.units();
-    out.bytes_in = reader.bytes_read();
+    const PostSummary summary = post(reader, *req.machine, *sink, diags, req.options, on_thread);
+    out.stats = summary.stats;
+    out.units = summary.units;
+    out.bytes_in = summary.bytes_in;
   }
   std::string verify_diagnostics;
   bool verify_failed = false;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "interpreter/interpreter.h"
+#include "interpreter/post.h"
 #include "machine/machine.h"
 #include "support/output_file.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The interpreter: CL statements in, NC program out. It keeps the CL's modal state (PostState),
 // hands each statement to its handler by major word (statement_table.h), and says how the input
-// ends. One Interpreter per file; no shared state. post() (post/post.h) drives it from a reader.
+// ends. One Interpreter per file; no shared state. post() (post.h) drives it from a reader.
 #include <functional>
 #include <memory>
 

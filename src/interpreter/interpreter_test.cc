@@ -1,4 +1,6 @@
 #include "interpreter/interpreter.h"
+#include "interpreter/post.h"
+#include "interpreter/statement_table.h"
 
 #include <gtest/gtest.h>
 
@@ -23,19 +25,8 @@ Machine generic(std::vector<std::string> sets = {}) {
 }
 
 Posted post(const std::string& cl, const Machine& m, PostOptions opts = {}) {
-  Posted p;
-  Diagnostics d("t.cl");
-  StringSink sink;
-  NcProgram prog(m, sink);
-  Interpreter in(m, prog, d, opts);
-  ClReader reader(std::string_view(cl), d);
-  Statement st;
-  while (reader.next(st)) in.statement(st);
-  in.end_of_input(reader.line());
-  p.nc = sink.out;
-  p.diags = d.render_all();
-  p.errors = d.error_count();
-  return p;
+  PostedText r = post_text(cl, m, "t.cl", opts);
+  return Posted{r.program, r.diags.render_all(), r.diags.error_count()};
 }
 
 constexpr const char* kHeader = "%\nO0001\nG18 G21 G40 G90\n";
@@ -345,21 +336,13 @@ struct OddRun {
 };
 
 OddRun run_cl(const std::string& cl) {
-  Machine m = generic();
+  PostedText p = post_text(cl, generic(), "t.cl");
   OddRun r;
-  Diagnostics d("t.cl");
-  StringSink sink;
-  NcProgram prog(m, sink);
-  Interpreter in(m, prog, d, {});
-  ClReader reader(std::string_view(cl), d);
-  Statement st;
-  while (reader.next(st)) in.statement(st);
-  in.end_of_input(reader.line());
-  r.nc = sink.out;
-  r.diags = d.render_all();
-  r.errors = d.error_count();
-  r.kept = d.kept().size();
-  r.stats = in.stats();
+  r.nc = p.program;
+  r.diags = p.diags.render_all();
+  r.errors = p.diags.error_count();
+  r.kept = p.diags.kept().size();
+  r.stats = p.summary.stats;
   return r;
 }
 
@@ -539,6 +522,90 @@ TEST(OddInput, MillionsOfErrorsKeepMemoryBounded) {
   EXPECT_EQ(r.diags.substr(0, 60), "t.cl:1:1: error: feed move before any FEDRAT/: the feed is u");
   const std::string last = "t.cl: note: 299801 more diagnostics not shown\n";
   EXPECT_EQ(r.diags.substr(r.diags.size() - last.size()), last);
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+TEST(StatementTable, EveryWordHasOneHandlerAndTheLookupIsExact) {
+  std::span<const StatementEntry> t = statement_table();
+  ASSERT_GT(t.size(), 40u);
+  for (size_t i = 0; i < t.size(); ++i) {
+    EXPECT_NE(t[i].handler, nullptr) << t[i].major;
+    if (i > 0) {
+      EXPECT_LT(t[i - 1].major, t[i].major);  // sorted, no word twice
+    }
+    EXPECT_EQ(find_statement(t[i].major), &t[i]);
+  }
+  EXPECT_EQ(find_statement("GOTO")->handler, &goto_stmt);
+  EXPECT_EQ(find_statement("TOOL PATH")->handler, &tool_path_stmt);
+  EXPECT_EQ(find_statement("TURRET")->handler, find_statement("LOADTL")->handler);
+  for (std::string_view unknown : {"", "GOT", "GOTOX", "goto", "AAA", "ZZZZ"}) {
+    EXPECT_EQ(find_statement(unknown), nullptr) << unknown;
+  }
+}
+
+TEST(InterpreterThreads, OnlyGotosStandInsideCouple) {
+  // A RAPID, CIRCLE or SPINDL inside COUPLE/ON cannot be cut synchronized: each is an error (a
+  // RAPID used to be carried past COUPLE/OFF to the next move).
+  Posted p = post(
+      "SPINDL/500,RPM,CLW\nRAPID\nGOTO/10,0,2\nCOUPLE/ON,MMPR,2\nGOTO/10,0,-18\nRAPID\n"
+      "SPINDL/600,RPM\nGOTO/10,0,-28\nCOUPLE/OFF\nFINI\n",
+      generic());
+  EXPECT_EQ(p.diags,
+            "t.cl:6:1: error: RAPID is not allowed inside COUPLE/ON (line 4) ... COUPLE/OFF; "
+            "expected GOTO or COUPLE/OFF\n"
+            "  RAPID\n"
+            "  ^\n"
+            "t.cl:7:1: error: SPINDL is not allowed inside COUPLE/ON (line 4) ... COUPLE/OFF; "
+            "expected GOTO or COUPLE/OFF\n"
+            "  SPINDL/600,RPM\n"
+            "  ^\n");
+}
+
+TEST(InterpreterThreads, SinglePassThreadEndsAtTheFirstOtherStatement) {
+  // THREAD/TURN, its start and end; the third GOTO belongs to it too (no statement between):
+  // the planner's error, at that GOTO.
+  Posted three = post(
+      "SPINDL/500,RPM,CLW\nRAPID\nGOTO/12,0,5\nTHREAD/TURN,MMPR,2\nRAPID\nGOTO/10,0,2\n"
+      "GOTO/10,0,-18\nGOTO/12,0,-20\nFINI\n",
+      generic());
+  EXPECT_EQ(three.diags,
+            "t.cl:8:1: error: THREAD/TURN takes exactly 2 GOTOs (thread start, thread end); this "
+            "is GOTO 3 of 3 (use THREAD/ON for a chamfer pull-out)\n"
+            "  GOTO/12,0,-20\n"
+            "  ^\n"
+            "t.cl:4:1: note: the thread starts here\n"
+            "  THREAD/TURN,MMPR,2\n"
+            "  ^\n");
+  // A RAPID after the end GOTO ends the thread: cut, then the rapid away.
+  Posted ok = post(
+      "SPINDL/500,RPM,CLW\nRAPID\nGOTO/12,0,5\nTHREAD/TURN,MMPR,2\nRAPID\nGOTO/10,0,2\n"
+      "GOTO/10,0,-18\nRAPID\nGOTO/12,0,-20\nFINI\n",
+      generic());
+  EXPECT_EQ(ok.diags, "");
+  EXPECT_EQ(ok.nc,
+            std::string(kHeader) +
+                "G97 S500 M3\nG0 X24. Z5.\nX20. Z2.\nG33 Z-18. F2.\nG0 X24. Z-20.\nM30\n%\n");
+}
+
+TEST(InterpreterThreads, CoupledVariableLeadStartsEachMoveAtItsLead) {
+  // INCR 0.1 per revolution from lead 2: after the first 20 mm the lead is
+  // sqrt(2^2 + 2 x 0.1 x 20) = sqrt(8) = 2.828427 (K^2 grows by 2 dK per unit of travel).
+  Machine m;
+  std::string errors;
+  ASSERT_TRUE(load_machine("sinumerik-840d", {CLPOST_SOURCE_DIR}, {"block_numbers.enabled=false"},
+                           m, errors))
+      << errors;
+  Posted p = post(
+      "SPINDL/500,RPM,CLW\nRAPID\nGOTO/10,0,2\nCOUPLE/ON,MMPR,2,INCR,0.1\nGOTO/10,0,-18\n"
+      "GOTO/10,0,-28\nCOUPLE/OFF\nFINI\n",
+      m);
+  EXPECT_EQ(p.diags, "");
+  EXPECT_NE(p.nc.find("G34 Z-18 K2 F0.1\nZ-28 K2.828427 F0.1\n"), std::string::npos) << p.nc;
 }
 
 }  // namespace

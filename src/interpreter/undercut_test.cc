@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "interpreter/interpreter.h"
+#include "interpreter/post.h"
 #include "machine/machine_loader.h"
 #include "reader/cl_reader.h"
 
@@ -26,19 +26,8 @@ Machine load(const std::string& name) {
 }
 
 Posted post(const std::string& cl, const Machine& m) {
-  Posted p;
-  Diagnostics d("t.cl");
-  StringSink sink;
-  NcProgram prog(m, sink);
-  Interpreter in(m, prog, d, {});
-  ClReader reader(std::string_view(cl), d);
-  Statement st;
-  while (reader.next(st)) in.statement(st);
-  in.end_of_input(reader.line());
-  p.nc = sink.out;
-  p.diags = d.render_all();
-  p.errors = d.error_count();
-  return p;
+  PostedText r = post_text(cl, m, "t.cl");
+  return Posted{r.program, r.diags.render_all(), r.diags.error_count()};
 }
 
 // Tool 3 loaded, feed 0.1 mm/rev, tool at X30 Z5 (diameter), then `line` (line 6).

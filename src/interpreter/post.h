@@ -1,0 +1,46 @@
+#pragma once
+// The library's entry point: a CL input and a machine in; the NC program, its diagnostics and its
+// thread plans out. The CLI (post, check, plan, verify, plot, batches), the fuzzers, the
+// benchmark and the tests all post through here, so that how a file is read to its end is said
+// once.
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interpreter/post_state.h"
+#include "machine/machine.h"
+#include "planner/thread_plan.h"
+#include "reader/cl_reader.h"
+#include "support/diagnostics.h"
+#include "support/sink.h"
+
+namespace clpost {
+
+// What a post saw besides the program and the diagnostics.
+struct PostSummary {
+  PostStats stats;
+  LengthUnit units = LengthUnit::kMm;  // of the CL file (its last UNITS/, else the machine's)
+  size_t bytes_in = 0;
+};
+
+// Posts every statement `reader` delivers on machine `m`: the program to `out`, the diagnostics
+// to `diags` (the reader's own among them), every thread plan to `on_thread` as it is planned.
+// A file without a statement is an error; one that ends without FINI is closed with a warning,
+// unless the reader gave up before its end. `out` gets a program even when there are errors:
+// the caller decides what to keep (diags.has_errors()).
+PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& diags,
+                 const PostOptions& opts = {},
+                 const std::function<void(const ThreadPlan&)>& on_thread = {});
+
+// post() of CL text in memory, collected: the program, the diagnostics and every plan.
+struct PostedText {
+  std::string program;
+  Diagnostics diags;
+  std::vector<ThreadPlan> plans;
+  PostSummary summary;
+};
+PostedText post_text(std::string_view cl, const Machine& m, std::string file_name = "<cl>",
+                     const PostOptions& opts = {});
+
+}  // namespace clpost
