@@ -36,6 +36,13 @@ check_prefix() {
   local prefix=$1
   diff <(expected_files) <(cd "$prefix" && find . -type f -printf '%P\n' | sort) ||
     fail "$prefix holds other files than the install rules name"
+  diff -r "$src/machines" "$prefix/share/clpost/machines" || fail "installed machines differ"
+  diff -r "$src/posts" "$prefix/share/clpost/posts" || fail "installed posts differ"
+  # The schema line of every shipped file leads to the installed schema, once there is one.
+  if [ -d "$src/schema" ]; then
+    [ -f "$prefix/share/clpost/machines/../schema/clpost-machine.schema.json" ] ||
+      fail "no schema where the machines' first line says"
+  fi
   cmp "$src/docs/clpost.1" "$prefix/share/man/man1/clpost.1" || fail "man page differs"
   cmp "$src/completions/clpost.bash" "$prefix/share/bash-completion/completions/clpost" ||
     fail "completion differs"
