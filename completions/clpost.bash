@@ -5,10 +5,12 @@
 # Completes subcommands, each command's options, shipped machine names after -m/--machine
 # (asked from the clpost being completed: `clpost machines`), and files.
 #
-# To add a subcommand: add its name to _clpost_commands (or, for `clpost machines NAME`, to the
-# machines line of _clpost_subcommands_of), its options to _clpost_options and any option that
-# takes a value to _clpost_value_options. tests/packaging/cli_surface_test.sh checks that the
-# options offered equal the options `clpost ... --help` lists, for every command.
+# To add a subcommand: add its name to the post line of _clpost_subcommands_of (a subcommand of
+# machines, such as `machines show`, to its machines line), its options to _clpost_options (as
+# "machines show" for a nested one), any option that takes a value to _clpost_value_options (and
+# what to offer for it to _clpost_complete_value), and what its positional arguments are to
+# _clpost_positionals. tests/packaging/cli_surface_test.sh checks that the subcommands and
+# options offered are exactly those `clpost ... --help` lists, for every command.
 
 # Subcommands of clpost and of each subcommand (nested ones as "machines show").
 _clpost_subcommands_of() {
@@ -34,6 +36,16 @@ _clpost_options() {
   esac
 }
 
+# What a command's positional arguments are: files (CL files, NC programs), machines (names
+# or machine files), or none.
+_clpost_positionals() {
+  case $1 in
+    machines) echo none ;;
+    "machines show" | "machines diff") echo machines ;;
+    *) echo files ;;
+  esac
+}
+
 # Options that take a value (the next word is the value, not a command or an input).
 _clpost_value_options="-m --machine --set -o --output -d --output-dir -j --jobs --report --format
   --cl --plan --tolerance --thread"
@@ -45,6 +57,14 @@ _clpost_machine_names() {
   # shellcheck disable=SC2088  # a literal "~/" typed on the command line
   [[ $bin == "~/"* ]] && bin=$HOME/${bin#"~/"}
   "$bin" machines 2>/dev/null | while read -r name _; do printf '%s\n' "$name"; done
+}
+
+# Appends to COMPREPLY the machine names and machine files (*.yaml, and folders) matching $1.
+_clpost_machines() {
+  local name
+  while IFS= read -r name; do COMPREPLY+=("$name"); done \
+    < <(compgen -W "$(_clpost_machine_names "${COMP_WORDS[0]}")" -- "$1")
+  _clpost_files "$1" "*.yaml"
 }
 
 # Appends to COMPREPLY the files and directories whose names start with $1; $2: a glob that
@@ -62,10 +82,7 @@ _clpost_files() {
 _clpost_complete_value() {
   local opt=$1 cur=$2
   case $opt in
-    -m | --machine)
-      mapfile -t COMPREPLY < <(compgen -W "$(_clpost_machine_names "${COMP_WORDS[0]}")" -- "$cur")
-      _clpost_files "$cur" "*.yaml"
-      ;;
+    -m | --machine) _clpost_machines "$cur" ;;
     --format) mapfile -t COMPREPLY < <(compgen -W "text json" -- "$cur") ;;
     -d | --output-dir)
       compopt -o filenames 2>/dev/null || :
@@ -109,7 +126,10 @@ _clpost() {
     return 0
   fi
   mapfile -t COMPREPLY < <(compgen -W "$(_clpost_subcommands_of "$command")" -- "$cur")
-  [[ $command == machines ]] || _clpost_files "$cur"
+  case $(_clpost_positionals "$command") in
+    files) _clpost_files "$cur" ;;
+    machines) _clpost_machines "$cur" ;;
+  esac
   return 0
 }
 
