@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds and runs every test: the formatting check (.clang-format), the release build, then the
 # same suite under AddressSanitizer and UndefinedBehaviorSanitizer, then a 30-second libFuzzer run
-# of each fuzz target (scripts/fuzz.sh).
+# of each fuzz target (scripts/fuzz.sh). The suite includes tests/packaging: `cmake --install` and
+# `cpack -G DEB` (the unpacked binary posts a sample), the man page and the bash completion.
 # Installs what is missing first (rs274 included, so the LinuxCNC checks run rather than skip).
 set -euo pipefail
 cd "$(dirname "$0")/.."
