@@ -247,7 +247,8 @@ void Interpreter::unknown(const Statement& st) {
 void Interpreter::ensure_started() {
   if (started_) return;
   started_ = true;
-  prog_.start(partno_, units_ == LengthUnit::kInch, diags_.file());
+  if (TemplateWrite r = prog_.start(partno_, units_ == LengthUnit::kInch, diags_.file()); !r)
+    diags_.error(SourceLoc{}, {}, template_error(m_, r));  // required at load: unreachable
   if (!partno_.empty()) prog_.comment(partno_);
 }
 
@@ -382,7 +383,7 @@ void Interpreter::spindl_stmt(const Statement& st) {
   ensure_started();
   if (off) {
     spindle_on_ = false;
-    prog_.spindle_stop();
+    if (TemplateWrite r = prog_.spindle_stop(); !r) error(st, st.loc, template_error(m_, r));
     return;
   }
   if (!value) {
@@ -417,9 +418,10 @@ void Interpreter::spindl_stmt(const Statement& st) {
     }
     if (m_.max_rpm > 0 && limit > m_.max_rpm) limit = m_.max_rpm;
     css_max_rpm_ = limit;
-    prog_.spindle_css(*value, limit, spindle_dir_);
-  } else {
-    prog_.spindle_rpm(*value, spindle_dir_);
+    if (TemplateWrite r = prog_.spindle_css(*value, limit, spindle_dir_); !r)
+      error(st, st.loc, template_error(m_, r));
+  } else if (TemplateWrite r = prog_.spindle_rpm(*value, spindle_dir_); !r) {
+    error(st, st.loc, template_error(m_, r));
   }
 }
 
@@ -445,7 +447,8 @@ void Interpreter::loadtl_stmt(const Statement& st, size_t first) {
   }
   ensure_started();
   tool_offset_ = offset;
-  prog_.tool_change(static_cast<int>(tool), offset, "");
+  if (TemplateWrite r = prog_.tool_change(static_cast<int>(tool), offset, ""); !r)
+    error(st, st.loc, template_error(m_, r));
   // A tool change cancels what the control knew of the position.
 }
 
@@ -526,7 +529,9 @@ void Interpreter::delay_stmt(const Statement& st) {
     if (rpm_known) revolutions = v * spindle_value_ / 60;
   }
   ensure_started();
-  if (prog_.dwell(seconds, revolutions)) return;
+  const TemplateWrite r = prog_.dwell(seconds, revolutions);
+  if (r) return;
+  if (r.status != TemplateWrite::Status::kNoValue) return error(st, st.loc, template_error(m_, r));
   error(st, st.loc,
         fmt::format("machine '{}' dwells in {}: a dwell of {} {} needs the spindle turning at a "
                     "set RPM to convert, and the spindle {}",
@@ -713,7 +718,8 @@ void Interpreter::finish(uint32_t last_line) {
   if (ended_) return;
   end_sequence_errors(last_line);
   ensure_started();
-  prog_.end(partno_);
+  if (TemplateWrite r = prog_.end(partno_); !r)
+    diags_.error(SourceLoc{last_line, 0}, {}, template_error(m_, r));
   ended_ = true;
 }
 

@@ -271,7 +271,8 @@ bool Interpreter::begin_thread_spindle(const ThreadPlan& plan, const SavedLines&
     ensure_started();
     prog_.comment(
         fmt::format("constant surface speed {} off for the thread: {} rpm", spindle_value_, rpm));
-    prog_.spindle_rpm(rpm, spindle_dir_);
+    if (TemplateWrite r = prog_.spindle_rpm(rpm, spindle_dir_); !r)
+      return fail(template_error(m_, r));
     forced_rpm_ = true;
   }
   double lead = plan.pitch.pitch * plan.pitch.starts;
@@ -302,7 +303,9 @@ bool Interpreter::begin_thread_spindle(const ThreadPlan& plan, const SavedLines&
 void Interpreter::end_thread_spindle() {
   if (!forced_rpm_) return;
   forced_rpm_ = false;
-  prog_.spindle_css(spindle_value_, css_max_rpm_, spindle_dir_);
+  // CSS was written at its SPINDL line, so the template is there.
+  if (TemplateWrite r = prog_.spindle_css(spindle_value_, css_max_rpm_, spindle_dir_); !r)
+    diags_.error(SourceLoc{}, {}, template_error(m_, r));
 }
 
 void Interpreter::emit_thread(ThreadPlan& plan, const SavedLines& lines) {

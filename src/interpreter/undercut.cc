@@ -238,11 +238,12 @@ void Interpreter::undercut_stmt(const Statement& st) {
         .code(m_.code(feed_mode_ == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"))
         .word("F", feed_)
         .end_block();
-    TemplateArgs args;
-    args.push_back(fmt::arg("diath", prog_.num("X", *diam)));
-    args.push_back(fmt::arg("axsa", prog_.num("Z", *at)));
-    args.push_back(fmt::arg("form", std::string(1, *form)));
-    prog_.emit_template("cycle96", args);
+    TemplateFill<tmpl::kCycle96> args;
+    args.text<"diath">(prog_.num("X", *diam))
+        .text<"axsa">(prog_.num("Z", *at))
+        .text<"form">(std::string(1, *form));
+    if (TemplateWrite r = prog_.write_template(args); !r)
+      return error(st, st.loc, template_error(m_, r));
     // The cycle returns to its starting point with G0 (seed 001).
     LathePoint here = prog_.position().value_or(LathePoint{});
     prog_.cycle_ended_at(here);

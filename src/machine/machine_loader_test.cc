@@ -73,10 +73,10 @@ TEST(MachineLoader, BadTemplateFieldIsCaughtAtLoad) {
                                   false, m, errors));
   EXPECT_EQ(
       errors,
-      "m.yaml:2:17: error: bad template line 'T{tool}{ofset}' in 'tool_change': argument not found "
-      "(fields: {tool}, {offset}, {tool_name})\n"
+      "m.yaml:2:25: error: bad template line 'T{tool}{ofset}' in 'tool_change': unknown field "
+      "'{ofset}' (did you mean 'offset'?) (fields: {tool}, {offset}, {tool_name})\n"
       "    tool_change: [\"T{tool}{ofset}\"]\n"
-      "                  ^\n");
+      "                          ^\n");
 }
 
 // Fuzzer find: a template field's width is how many characters fmt writes, so
@@ -205,6 +205,85 @@ TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
   EXPECT_TRUE(m.extra_spring_passes);
   EXPECT_EQ(m.tpi_address, "E");
   EXPECT_EQ(m.thread_lead_address_x, "I");
+}
+
+// Issue 14: every name under codes, formats and templates is declared; an unknown one is an
+// error at its line and column with the closest declared name.
+TEST(MachineLoader, UnknownCodeFormatAndTemplateNames) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(apply_machine_yaml("m.yaml",
+                                  "codes:\n  rapdi: G0\nformats:\n  dwel: {decimals: 2}\n"
+                                  "templates:\n  spindle_cs: [\"G96\"]\n",
+                                  false, m, errors));
+  EXPECT_EQ(errors,
+            "m.yaml:2:3: error: unknown code 'codes.rapdi' (did you mean 'rapid'?)\n"
+            "    rapdi: G0\n"
+            "    ^\n"
+            "m.yaml:4:3: error: unknown format 'formats.dwel' (did you mean 'dwell'?): a format is "
+            "an address the machine writes or a named format (docs/machines.md)\n"
+            "    dwel: {decimals: 2}\n"
+            "    ^\n"
+            "m.yaml:6:3: error: unknown template 'templates.spindle_cs' (did you mean "
+            "'spindle_css'?)\n"
+            "    spindle_cs: [\"G96\"]\n"
+            "    ^\n");
+}
+
+// A format for an address a key of the machine names (here H, the start-angle word) is known.
+TEST(MachineLoader, FormatOfAnAddressTheMachineNames) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(apply_machine_yaml(
+      "m.yaml", "formats:\n  H: {decimals: 1}\nthreading: {start_angle_address: H}\n", false, m,
+      errors))
+      << errors;
+  EXPECT_EQ(m.format_for("H").decimals, 1);
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "formats:\n  W: {decimals: 1}\n", false, m, errors));
+}
+
+TEST(MachineLoader, SetOfAnUnknownCodeOrFormatIsAnError) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"codes.rapdi=G0"}, m, errors));
+  EXPECT_EQ(errors,
+            "--set codes.rapdi=G0: error: unknown code 'codes.rapdi' (did you mean 'rapid'?)\n");
+  errors.clear();
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"formats.x.decimals=4"}, m, errors));
+  EXPECT_EQ(errors,
+            "--set formats.x.decimals=4: error: unknown format 'formats.x' (did you mean 'X'?): a "
+            "format is an address the machine writes or a named format (docs/machines.md)\n");
+  errors.clear();
+  EXPECT_TRUE(load_machine("generic-lathe", kDirs,
+                           {"codes.coolant_air=M12", "formats.X.decimals=4"}, m, errors))
+      << errors;
+  EXPECT_EQ(m.code("coolant_air"), "M12");
+}
+
+// A template that a setting selects is required when it selects it.
+TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.cycle=fanuc_g76"}, m, errors));
+  EXPECT_EQ(errors, std::string(CLPOST_SOURCE_DIR) +
+                        "/machines/generic-lathe.yaml:2:1: error: threading.cycle is 'fanuc_g76', "
+                        "which writes template 'templates.fanuc_g76': absent in this machine and "
+                        "its post 'iso-lathe'\n"
+                        "  extends: iso-lathe\n"
+                        "  ^\n");
+  errors.clear();
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.loop=g92"}, m, errors));
+  EXPECT_NE(errors.find("threading.loop is 'g92', which writes template 'templates.g92':"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("threading.loop is 'g92', which writes template 'templates.g92_next':"),
+            std::string::npos)
+      << errors;
+  errors.clear();
+  EXPECT_TRUE(load_machine("generic-lathe", kDirs,
+                           {"threading.cycle=fanuc_g76", "templates.fanuc_g76=[\"G76 X{x} Z{z}\"]"},
+                           m, errors))
+      << errors;
 }
 
 }  // namespace

@@ -22,8 +22,8 @@ TEST(NcProgram, ModalWordsAndDiameterOutput) {
   Machine m = test_machine();
   StringSink out;
   NcProgram p(m, out);
-  p.start("", false, "x.cl");
-  p.spindle_rpm(1200, SpindleDir::kCw);
+  EXPECT_TRUE(p.start("", false, "x.cl"));
+  EXPECT_TRUE(p.spindle_rpm(1200, SpindleDir::kCw));
   p.rapid({22, 2});  // radius 22 -> X44.
   p.rapid({22, 0});  // only Z changes
   p.set_feed(0.2, FeedMode::kPerRev);
