@@ -286,5 +286,76 @@ TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
       << errors;
 }
 
+// One case per template a machine must have: the five every program reaches, each missing in
+// turn from a machine of its own, and the cycle templates a setting selects.
+TEST(MachineLoader, EveryRequiredTemplateIsRequired) {
+  const std::string codes =
+      "codes: {rapid: G0, linear: G1, arc_cw: G2, arc_ccw: G3, thread: G33, metric: G21, inch: "
+      "G20, spindle_cw: M3, spindle_ccw: M4}\n";
+  const std::vector<std::string> always = {"program_start", "program_end", "tool_change",
+                                           "spindle_rpm", "spindle_stop"};
+  for (const std::string& left_out : always) {
+    std::string text = codes + "templates:\n";
+    for (const std::string& t : always)
+      if (t != left_out) text += "  " + t + ": []\n";
+    const std::string path = write_temp("one-less.yaml", text);
+    Machine m;
+    std::string errors;
+    EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+    EXPECT_EQ(errors, path + ":1:1: error: missing required key 'templates." + left_out +
+                          "' (a machine file normally 'extends' a post from posts/ that defines "
+                          "them)\n  " +
+                          codes.substr(0, codes.find('\n')) + "\n  ^\n");
+  }
+  const std::vector<std::pair<std::string, std::string>> selected = {
+      {"threading.cycle=cycle99",
+       "threading.cycle is 'cycle99', which writes template "
+       "'templates.cycle99'"},
+      {"threading.cycle=fanuc_g76",
+       "threading.cycle is 'fanuc_g76', which writes template "
+       "'templates.fanuc_g76'"},
+      {"threading.cycle=haas_g76",
+       "threading.cycle is 'haas_g76', which writes template "
+       "'templates.haas_g76'"},
+      {"threading.cycle=heidenhain_g31",
+       "threading.cycle is 'heidenhain_g31', which writes "
+       "template 'templates.heidenhain_g31'"},
+      {"threading.cycle=linuxcnc_g76",
+       "threading.cycle is 'linuxcnc_g76', which writes template "
+       "'templates.linuxcnc_g76'"},
+      {"threading.cycle=linuxcnc_g76",
+       "threading.cycle is 'linuxcnc_g76', which writes template "
+       "'templates.linuxcnc_g76_taper'"},
+      {"threading.loop=g92", "threading.loop is 'g92', which writes template 'templates.g92'"},
+      {"threading.loop=g92",
+       "threading.loop is 'g92', which writes template "
+       "'templates.g92_next'"},
+  };
+  const std::string dir = CLPOST_SOURCE_DIR;
+  for (const auto& [set, message] : selected) {
+    Machine m;
+    std::string errors;
+    EXPECT_FALSE(load_machine("generic-lathe", kDirs, {set}, m, errors));
+    const std::string line = dir + "/machines/generic-lathe.yaml:2:1: error: " + message +
+                             ": absent in this machine and its post 'iso-lathe'\n"
+                             "  extends: iso-lathe\n"
+                             "  ^\n";
+    EXPECT_NE(errors.find(line), std::string::npos) << set << "\n" << errors;
+  }
+}
+
+// `dwell: []` is the integrator's choice to write nothing; a template selected by a setting may
+// be that too.
+TEST(MachineLoader, AnEmptyTemplateIsPresent) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(load_machine(
+      "generic-lathe", kDirs,
+      {"templates.dwell=[]", "threading.loop=g92", "templates.g92=[]", "templates.g92_next=[]"}, m,
+      errors))
+      << errors;
+  EXPECT_TRUE(m.templates.at("dwell").empty());
+}
+
 }  // namespace
 }  // namespace clpost
