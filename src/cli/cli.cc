@@ -19,6 +19,7 @@
 #include "cli/data_dirs.h"
 #include "cli/plot_command.h"
 #include "cli/post_file.h"
+#include "cli/schema_command.h"
 #include "cli/verify_command.h"
 #include "emitters/emitter.h"
 #include "machine/machine_loader.h"
@@ -203,6 +204,11 @@ int run_cli(int argc, char** argv) {
 
   CLI::App* machines = app.add_subcommand("machines", "List the shipped machines");
 
+  CLI::App* schema =
+      app.add_subcommand("schema", "The JSON Schema of machine and post files (draft 2020-12)");
+  bool schema_md = false;
+  schema->add_flag("--markdown", schema_md, "The key tables of docs/machines.md instead");
+
   CLI::App* check = app.add_subcommand("check", "Parse and validate CL files without writing");
   MachineOpts check_opts;
   std::vector<std::string> check_inputs;
@@ -275,6 +281,13 @@ int run_cli(int argc, char** argv) {
                             m.description));
     }
     return rc;
+  }
+
+  if (*schema) {
+    CommandOutput r = schema_command(schema_md);
+    print_out(r.out);
+    print_err(r.err);
+    return r.exit_code;
   }
 
   if (*verify) {
