@@ -17,6 +17,7 @@
 #include "cli/batch.h"
 #include "cli/batch_report.h"
 #include "cli/data_dirs.h"
+#include "cli/machines_command.h"
 #include "cli/plot_command.h"
 #include "cli/post_file.h"
 #include "cli/schema_command.h"
@@ -203,6 +204,17 @@ int run_cli(int argc, char** argv) {
                  "CL file to post ('-' for standard input); with -d: files and directories");
 
   CLI::App* machines = app.add_subcommand("machines", "List the shipped machines");
+  CLI::App* show = machines->add_subcommand("show", "A machine exactly as loaded: every key");
+  MachineOpts show_opts;
+  bool show_origin = false;
+  show->add_option("machine", show_opts.machine, "Shipped machine name or machine file")
+      ->required();
+  show->add_option("--set", show_opts.sets, "Override a machine key")->type_name("KEY=VALUE");
+  show->add_flag("--origin", show_origin, "Where each value came from (file:line, --set, default)");
+  CLI::App* diff = machines->add_subcommand("diff", "The keys whose values differ");
+  std::string diff_a, diff_b;
+  diff->add_option("a", diff_a, "Machine name or file")->required();
+  diff->add_option("b", diff_b, "Machine name or file")->required();
 
   CLI::App* schema =
       app.add_subcommand("schema", "The JSON Schema of machine and post files (draft 2020-12)");
@@ -265,6 +277,18 @@ int run_cli(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
+  if (*show) {
+    CommandOutput r = machines_show(show_opts.machine, show_opts.sets, show_origin, data_dirs());
+    print_out(r.out);
+    print_err(r.err);
+    return r.exit_code;
+  }
+  if (*diff) {
+    CommandOutput r = machines_diff(diff_a, diff_b, data_dirs());
+    print_out(r.out);
+    print_err(r.err);
+    return r.exit_code;
+  }
   if (*machines) {
     // Each machine is loaded in full, so a broken file shows here rather than mid-batch.
     int rc = kExitOk;

@@ -38,6 +38,7 @@ struct Ctx {
   // Addresses the machine's keys name (threading.lead_address, …): formats.<address> for them
   // is known too.
   std::vector<std::string> addresses = {};
+  KeyOrigins* origins = nullptr;  // where each key was set, when asked for
 
   SourceLoc loc(const YAML::Node& n) const {
     const YAML::Mark m = n.Mark();
@@ -47,6 +48,13 @@ struct Ctx {
   void error(const YAML::Node& n, std::string msg) {
     SourceLoc l = loc(n);
     diags.error(l, text.line(l.line), std::move(msg));
+  }
+  // Key `path` was set from node `n` (its key) of this file.
+  void set_from(const std::string& path, const YAML::Node& n) {
+    if (!origins) return;
+    const std::string& file = diags.file();
+    (*origins)[path] =
+        file.starts_with("--set ") ? std::string("--set") : fmt::format("{}:{}", file, loc(n).line);
   }
 };
 
@@ -201,6 +209,7 @@ bool apply_format(Ctx& c, const YAML::Node& key, const YAML::Node& node, NumberF
     const std::string name = kv.first.Scalar();
     const std::string path = "formats." + addr + "." + name;
     if (const FormatKeySpec* k = find_format_key(name)) {
+      c.set_from(path, kv.first);
       ok &= std::visit(
           [&](auto member) {
             return set_member(c, kv.second, path, k->type, k->lo, k->hi, {}, f, member);
@@ -228,6 +237,7 @@ bool apply_codes(Ctx& c, const YAML::Node& value, Machine& m) {
       ok = false;
       continue;
     }
+    c.set_from("codes." + name, kv.first);
     ok &= get_string(c, kv.second, "codes." + name, m.codes[name]);
   }
   return ok;
@@ -265,6 +275,7 @@ bool apply_template(Ctx& c, const YAML::Node& key, const YAML::Node& value, Mach
   }
   bool ok = true;
   for (size_t i = 0; i < lines.size(); ++i) ok &= check_template(c, nodes[i], *spec, lines[i]);
+  c.set_from("templates." + tname, key);
   m.templates[tname] = std::move(lines);
   return ok;
 }
@@ -322,6 +333,7 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
       c.error(key, fmt::format("a post cannot '{}' another post", path));
       return false;
     }
+    c.set_from(path, key);
     return set_key(c, value, *k, m);
   }
   if (has_children(path + ".")) {
@@ -373,8 +385,9 @@ bool looks_like_path(std::string_view s) {
 }  // namespace
 
 bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_post, Machine& m,
-                        std::string& errors) {
+                        std::string& errors, KeyOrigins* origins) {
   Ctx c{Diagnostics(std::string(file)), YamlText(text), is_post};
+  c.origins = origins;
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
@@ -445,7 +458,8 @@ bool check_required(const std::string& path, const std::string& text, const Mach
 }  // namespace
 
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
-                  const std::vector<std::string>& overrides, Machine& out, std::string& errors) {
+                  const std::vector<std::string>& overrides, Machine& out, std::string& errors,
+                  KeyOrigins* origins) {
   std::string path;
   if (looks_like_path(name_or_path)) {
     path = std::string(name_or_path);
@@ -514,9 +528,9 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
       errors += fmt::format("{}: error: cannot read post file\n", post_path);
       return false;
     }
-    if (!apply_machine_yaml(post_path, post_text, true, m, errors)) return false;
+    if (!apply_machine_yaml(post_path, post_text, true, m, errors, origins)) return false;
   }
-  if (!apply_machine_yaml(path, machine_text, false, m, errors)) return false;
+  if (!apply_machine_yaml(path, machine_text, false, m, errors, origins)) return false;
   for (const std::string& ov : overrides) {
     size_t eq = ov.find('=');
     if (eq == std::string::npos || eq == 0) {
@@ -531,7 +545,7 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
       doc += key.substr(start, dot - start) + ": {";
     doc += key.substr(start) + ": " + (value.empty() ? "''" : value) + std::string(depth, '}');
     std::string set_errors;
-    if (!apply_machine_yaml("--set " + ov, doc, false, m, set_errors)) {
+    if (!apply_machine_yaml("--set " + ov, doc, false, m, set_errors, origins)) {
       // The YAML document was made here, so its line, column and text mean nothing to the user:
       // keep only `--set key=value: error: message`.
       std::string prefix = "--set " + ov + ":1:";

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "support/json_text.h"
+
 namespace clpost {
 namespace {
 
@@ -229,13 +231,13 @@ std::string number_text(double v) {
   return fmt::format("{}", v);
 }
 
-std::string quoted_list(const std::vector<std::string>& items) {
+}  // namespace
+
+std::string text_list(const std::vector<std::string>& items) {
   std::string s = "[";
-  for (const std::string& i : items) s += fmt::format("{}\"{}\"", s.size() > 1 ? ", " : "", i);
+  for (const std::string& i : items) s += (s.size() > 1 ? ", " : "") + json_string(i);
   return s + "]";
 }
-
-}  // namespace
 
 std::span<const KeySpec> machine_keys() {
   return kKeys;
@@ -284,7 +286,7 @@ std::string key_value_text(const KeySpec& k, const Machine& m) {
         const auto& v = m.*member;
         using V = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<V, std::vector<std::string>>) {
-          return quoted_list(v);
+          return text_list(v);
         } else if constexpr (std::is_same_v<V, std::string>) {
           if (k.type != KeyType::kChoice) return v;
           for (const Choice& c : k.choices)

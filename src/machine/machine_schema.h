@@ -271,6 +271,8 @@ bool template_required(const TemplateSpec& spec, const Machine& m);
 
 // Key `k`'s value in `m` as a machine file would write it ("cycle", "0.005", "[\"%\", \"O\"]").
 std::string key_value_text(const KeySpec& k, const Machine& m);
+// A list of text as a flow sequence of JSON strings: ["%", "O"].
+std::string text_list(const std::vector<std::string>& items);
 // A format key's value as written.
 std::string format_key_value_text(const FormatKeySpec& k, const NumberFormat& f);
 
