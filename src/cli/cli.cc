@@ -56,6 +56,9 @@ constexpr const char* kFooter = R"(Examples:
   clpost -m generic-lathe -d out/ -j 4 --keep-going *.cl   batch: out/<stem>.nc for each
   clpost -d out/ -r cl-files/ --report report.json          a directory tree, with a report
   clpost machines                         list the shipped machines
+  clpost machines show fanuc-0i-t --origin   every key as loaded, and where it came from
+  clpost machines diff fanuc-0i-t haas-st    the keys whose values differ
+  clpost schema > clpost-machine.schema.json  the JSON Schema of machine and post files
   clpost -m fanuc-0i-t --verify -o part.nc part.cl     post, then check the program cuts the plan
   clpost verify -m fanuc-0i-t part.nc --cl part.cl     check a program (edited by hand?)
   clpost plot -o part.svg part.cl         backplot and every thread's cross-section, as SVG
