@@ -110,7 +110,7 @@ std::string_view depth_format(const ThreadPlan& plan) {
   return plan.units == LengthUnit::kInch ? "g76_depth_in" : "g76_depth";
 }
 
-constexpr const char* kFanucTemplate = "fanuc_g76";
+constexpr const char* kFanucTemplate = tmpl::kFanucG76.name.data();
 constexpr const char* kAllowance = "g76_allowance";
 
 struct FanucBlock {
@@ -267,7 +267,7 @@ std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& 
         fmt::format("pull-out ({}): G92 cuts the control's own chamfer (a parameter), "
                     "not the plan's",
                     g76::describe_pullout(plan)));
-  for (const char* t : {"g92", "g92_next"})
+  for (const char* t : {tmpl::kG92.name.data(), tmpl::kG92Next.name.data()})
     if (!m.templates.count(t))
       return fail(fmt::format("machine '{}' has no template '{}'", m.name, t));
   const Vec2 d = plan.p2 - plan.p1;

@@ -27,7 +27,7 @@ namespace {
 
 using g76::at_end;
 
-constexpr const char* kTemplate = "haas_g76";
+constexpr const char* kTemplate = tmpl::kHaasG76.name.data();
 
 struct HaasBlock {
   HaasG76Words w;

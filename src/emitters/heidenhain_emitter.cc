@@ -16,7 +16,7 @@ namespace {
 
 using namespace vec2_math;
 
-constexpr const char* kTemplate = "heidenhain_g31";
+constexpr const char* kTemplate = tmpl::kHeidenhainG31.name.data();
 
 int code_int(const Machine& m, const char* key, int fallback) {
   const std::string& c = m.code(key);

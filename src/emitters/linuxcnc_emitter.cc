@@ -16,8 +16,8 @@ namespace {
 
 using namespace vec2_math;
 
-constexpr const char* kTemplate = "linuxcnc_g76";
-constexpr const char* kTaperTemplate = "linuxcnc_g76_taper";
+constexpr const char* kTemplate = tmpl::kLinuxcncG76.name.data();
+constexpr const char* kTaperTemplate = tmpl::kLinuxcncG76Taper.name.data();
 
 double deepest(const ThreadPlan& plan) {
   double d = 0;

@@ -42,7 +42,7 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
   };
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return fail("CYCLE99 cuts multi-pass threads (THREAD/ON) only");
-  if (!m.templates.count("cycle99"))
+  if (!m.templates.count(std::string(tmpl::kCycle99.name)))
     return fail(fmt::format("machine '{}' has no 'cycle99' template", m.name));
   if (plan.pitch.lead_change != 0)
     return fail(fmt::format("CYCLE99 cuts a constant lead; this lead {} by {} per revolution",

@@ -1,6 +1,5 @@
 #include "machine/machine_loader.h"
 
-#include <fmt/args.h>
 #include <fmt/format.h>
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
@@ -25,10 +24,6 @@ namespace clpost {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string suggestion(std::string_view key, const std::vector<std::string>& valid) {
-  return did_you_mean(key, valid);
-}
 
 // The loader's view of one YAML file: diagnostics with the file's own line text.
 struct Ctx {
@@ -180,7 +175,8 @@ bool check_template(Ctx& c, const YAML::Node& n, const TemplateSpec& spec,
   // Point at the field when it is found on the node's line (a quoted or plain scalar).
   const std::string_view text = c.text.line(l.line);
   if (offset > 0 && l.col >= 1) {
-    const std::string_view from = line.substr(offset, line.find('}', offset) - offset);
+    const std::string_view from =
+        std::string_view(line).substr(offset, line.find('}', offset) - offset);
     const size_t at = text.find(from, l.col - 1);
     if (at != std::string_view::npos) l.col = static_cast<uint32_t>(at + 1);
   }
@@ -340,7 +336,7 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
     if (!value.IsMap()) return c.error(value, fmt::format("'{}' must be a map", path)), false;
     return apply_map(c, value, path + ".", m);
   }
-  c.error(key, fmt::format("unknown key '{}'{}", path, suggestion(name, valid_children(prefix))));
+  c.error(key, fmt::format("unknown key '{}'{}", path, did_you_mean(name, valid_children(prefix))));
   return false;
 }
 
@@ -478,7 +474,7 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
       for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
       errors +=
           fmt::format("clpost: error: unknown machine '{}'{}; shipped machines: {}\n", name_or_path,
-                      suggestion(name_or_path, names), list.empty() ? "none found" : list);
+                      did_you_mean(name_or_path, names), list.empty() ? "none found" : list);
       return false;
     }
   }
