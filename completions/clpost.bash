@@ -15,8 +15,8 @@
 # Subcommands of clpost and of each subcommand (nested ones as "machines show").
 _clpost_subcommands_of() {
   case $1 in
-    post) echo "check machines plan plot verify" ;;
-    machines) echo "" ;;
+    post) echo "check machines plan plot schema verify" ;;
+    machines) echo "diff show" ;;
   esac
 }
 
@@ -32,7 +32,9 @@ _clpost_options() {
     plan) echo "-h --help $machine --format" ;;
     verify) echo "-h --help $machine --cl --plan --tolerance" ;;
     plot) echo "-h --help $machine --cl -o --output --thread" ;;
-    machines) echo "-h --help" ;;
+    machines | "machines diff") echo "-h --help" ;;
+    "machines show") echo "-h --help --set --origin" ;;
+    schema) echo "-h --help --markdown" ;;
   esac
 }
 
@@ -40,7 +42,7 @@ _clpost_options() {
 # or machine files), or none.
 _clpost_positionals() {
   case $1 in
-    machines) echo none ;;
+    machines | schema) echo none ;;
     "machines show" | "machines diff") echo machines ;;
     *) echo files ;;
   esac

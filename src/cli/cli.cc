@@ -17,8 +17,10 @@
 #include "cli/batch.h"
 #include "cli/batch_report.h"
 #include "cli/data_dirs.h"
+#include "cli/machines_command.h"
 #include "cli/plot_command.h"
 #include "cli/post_file.h"
+#include "cli/schema_command.h"
 #include "cli/verify_command.h"
 #include "emitters/emitter.h"
 #include "machine/machine_loader.h"
@@ -54,6 +56,9 @@ constexpr const char* kFooter = R"(Examples:
   clpost -m generic-lathe -d out/ -j 4 --keep-going *.cl   batch: out/<stem>.nc for each
   clpost -d out/ -r cl-files/ --report report.json          a directory tree, with a report
   clpost machines                         list the shipped machines
+  clpost machines show fanuc-0i-t --origin   every key as loaded, and where it came from
+  clpost machines diff fanuc-0i-t haas-st    the keys whose values differ
+  clpost schema > clpost-machine.schema.json  the JSON Schema of machine and post files
   clpost -m fanuc-0i-t --verify -o part.nc part.cl     post, then check the program cuts the plan
   clpost verify -m fanuc-0i-t part.nc --cl part.cl     check a program (edited by hand?)
   clpost plot -o part.svg part.cl         backplot and every thread's cross-section, as SVG
@@ -202,6 +207,22 @@ int run_cli(int argc, char** argv) {
                  "CL file to post ('-' for standard input); with -d: files and directories");
 
   CLI::App* machines = app.add_subcommand("machines", "List the shipped machines");
+  CLI::App* show = machines->add_subcommand("show", "A machine exactly as loaded: every key");
+  MachineOpts show_opts;
+  bool show_origin = false;
+  show->add_option("machine", show_opts.machine, "Shipped machine name or machine file")
+      ->required();
+  show->add_option("--set", show_opts.sets, "Override a machine key")->type_name("KEY=VALUE");
+  show->add_flag("--origin", show_origin, "Where each value came from (file:line, --set, default)");
+  CLI::App* diff = machines->add_subcommand("diff", "The keys whose values differ");
+  std::string diff_a, diff_b;
+  diff->add_option("a", diff_a, "Machine name or file")->required();
+  diff->add_option("b", diff_b, "Machine name or file")->required();
+
+  CLI::App* schema =
+      app.add_subcommand("schema", "The JSON Schema of machine and post files (draft 2020-12)");
+  bool schema_md = false;
+  schema->add_flag("--markdown", schema_md, "The key tables of docs/machines.md instead");
 
   CLI::App* check = app.add_subcommand("check", "Parse and validate CL files without writing");
   MachineOpts check_opts;
@@ -259,6 +280,18 @@ int run_cli(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
+  if (*show) {
+    CommandOutput r = machines_show(show_opts.machine, show_opts.sets, show_origin, data_dirs());
+    print_out(r.out);
+    print_err(r.err);
+    return r.exit_code;
+  }
+  if (*diff) {
+    CommandOutput r = machines_diff(diff_a, diff_b, data_dirs());
+    print_out(r.out);
+    print_err(r.err);
+    return r.exit_code;
+  }
   if (*machines) {
     // Each machine is loaded in full, so a broken file shows here rather than mid-batch.
     int rc = kExitOk;
@@ -275,6 +308,13 @@ int run_cli(int argc, char** argv) {
                             m.description));
     }
     return rc;
+  }
+
+  if (*schema) {
+    CommandOutput r = schema_command(schema_md);
+    print_out(r.out);
+    print_err(r.err);
+    return r.exit_code;
   }
 
   if (*verify) {

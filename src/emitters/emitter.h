@@ -61,6 +61,11 @@ class Emitter {
 bool unfit_error(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
                  std::string_view emitter, std::string_view why);
 
+// For a template that cannot be written (template_error(): the machine and the template) at
+// the thread's statement. Returns false, for `return template_failed(...)`.
+bool template_failed(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
+                     const TemplateWrite& w);
+
 // The thread output for machine `m`: its strategy's emitter, falling back as the machine says
 // (an NC comment names the reason), or an error diagnostic with `fallback: error`.
 std::unique_ptr<Emitter> make_emitter(const Machine& m);

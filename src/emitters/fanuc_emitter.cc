@@ -110,7 +110,7 @@ std::string_view depth_format(const ThreadPlan& plan) {
   return plan.units == LengthUnit::kInch ? "g76_depth_in" : "g76_depth";
 }
 
-constexpr const char* kFanucTemplate = "fanuc_g76";
+constexpr const char* kFanucTemplate = tmpl::kFanucG76.name.data();
 constexpr const char* kAllowance = "g76_allowance";
 
 struct FanucBlock {
@@ -267,7 +267,7 @@ std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& 
         fmt::format("pull-out ({}): G92 cuts the control's own chamfer (a parameter), "
                     "not the plan's",
                     g76::describe_pullout(plan)));
-  for (const char* t : {"g92", "g92_next"})
+  for (const char* t : {tmpl::kG92.name.data(), tmpl::kG92Next.name.data()})
     if (!m.templates.count(t))
       return fail(fmt::format("machine '{}' has no template '{}'", m.name, t));
   const Vec2 d = plan.p2 - plan.p1;
@@ -311,19 +311,19 @@ bool FanucG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCo
   const FanucG76Words& w = b->w;
   const std::string_view df = depth_format(plan);
   prog.rapid(lp(b->start));
-  TemplateArgs a;
-  a.push_back(fmt::arg("m", fmt::format("{:02}", w.finish_passes)));
-  a.push_back(fmt::arg("chamfer", fmt::format("{:02}", w.chamfer)));
-  a.push_back(fmt::arg("angle", fmt::format("{:02}", w.tool_angle)));
-  a.push_back(fmt::arg("min_cut", prog.num(df, w.min_cut)));
-  a.push_back(fmt::arg("allowance", prog.num(kAllowance, w.allowance)));
-  a.push_back(fmt::arg("x", prog.num("X", w.x)));
-  a.push_back(fmt::arg("z", prog.num("Z", w.z)));
-  a.push_back(fmt::arg("taper", w.taper != 0 ? " R" + prog.num("R", w.taper) : std::string()));
-  a.push_back(fmt::arg("height", prog.num(df, w.height)));
-  a.push_back(fmt::arg("first_cut", prog.num(df, w.first_cut)));
-  a.push_back(fmt::arg("lead", prog.num("F", w.lead)));
-  prog.emit_template(kFanucTemplate, a);
+  TemplateFill<tmpl::kFanucG76> a;
+  a.text<"m">(fmt::format("{:02}", w.finish_passes));
+  a.text<"chamfer">(fmt::format("{:02}", w.chamfer));
+  a.text<"angle">(fmt::format("{:02}", w.tool_angle));
+  a.text<"min_cut">(prog.num(df, w.min_cut));
+  a.text<"allowance">(prog.num(kAllowance, w.allowance));
+  a.text<"x">(prog.num("X", w.x));
+  a.text<"z">(prog.num("Z", w.z));
+  a.text<"taper">(w.taper != 0 ? " R" + prog.num("R", w.taper) : std::string());
+  a.text<"height">(prog.num(df, w.height));
+  a.text<"first_cut">(prog.num(df, w.first_cut));
+  a.text<"lead">(prog.num("F", w.lead));
+  if (TemplateWrite r = prog.write_template(a); !r) return template_failed(plan, ctx, m, r);
   prog.cycle_ended_at(lp(b->start));
   const Vec2 e = point_as_read(m, plan.end_position);
   if (!at_end(prog, e)) prog.rapid(lp(plan.end_position));
@@ -335,6 +335,23 @@ Fit G92Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
   g92_words(plan, m, f);
   return f;
 }
+
+namespace {
+
+// One G92 block through template `T` (g92 or g92_next).
+template <const TemplateSpec& T>
+TemplateWrite write_g92(NcProgram& prog, std::string x, std::string z, std::string taper,
+                        std::string lead, std::string start_angle) {
+  TemplateFill<T> a;
+  a.template text<"x">(std::move(x))
+      .template text<"z">(std::move(z))
+      .template text<"taper">(std::move(taper))
+      .template text<"lead">(std::move(lead))
+      .template text<"start_angle">(std::move(start_angle));
+  return prog.write_template(a);
+}
+
+}  // namespace
 
 bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
   const Machine& m = prog.machine();
@@ -362,22 +379,18 @@ bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext
     const G92Words& q = p.words;
     const std::string angle =
         q.start_angle ? " Q" + prog.num("thread_angle", *q.start_angle) : std::string();
-    TemplateArgs a;
-    a.push_back(fmt::arg("x", prog.num("X", q.x)));
-    if (!modal) {
-      a.push_back(fmt::arg("z", prog.num("Z", q.z)));
-      a.push_back(fmt::arg("taper", q.taper != 0 ? " R" + prog.num("R", q.taper) : std::string()));
-      a.push_back(fmt::arg("lead", prog.num("F", q.lead)));
-      a.push_back(fmt::arg("start_angle", angle));
-      prog.emit_template("g92", a);
-    } else {
-      a.push_back(fmt::arg("z", q.z != last.z ? " Z" + prog.num("Z", q.z) : std::string()));
-      a.push_back(
-          fmt::arg("taper", q.taper != last.taper ? " R" + prog.num("R", q.taper) : std::string()));
-      a.push_back(fmt::arg("lead", std::string()));
-      a.push_back(fmt::arg("start_angle", angle));
-      prog.emit_template("g92_next", a);
-    }
+    // The first block of a thread says every word; the next ones, while G92 is modal, only
+    // what changed.
+    const TemplateWrite r =
+        !modal ? write_g92<tmpl::kG92>(prog, prog.num("X", q.x), prog.num("Z", q.z),
+                                       q.taper != 0 ? " R" + prog.num("R", q.taper) : std::string(),
+                                       prog.num("F", q.lead), angle)
+               : write_g92<tmpl::kG92Next>(
+                     prog, prog.num("X", q.x),
+                     q.z != last.z ? " Z" + prog.num("Z", q.z) : std::string(),
+                     q.taper != last.taper ? " R" + prog.num("R", q.taper) : std::string(),
+                     std::string(), angle);
+    if (!r) return template_failed(plan, ctx, m, r);
     last = q;
     modal = true;
     at = p.start;

@@ -27,7 +27,7 @@ namespace {
 
 using g76::at_end;
 
-constexpr const char* kTemplate = "haas_g76";
+constexpr const char* kTemplate = tmpl::kHaasG76.name.data();
 
 struct HaasBlock {
   HaasG76Words w;
@@ -172,19 +172,18 @@ bool HaasG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
   for (const HaasBlock& b : *blocks) {
     const HaasG76Words& w = b.w;
     prog.rapid(lp(b.start));
-    TemplateArgs a;
-    a.push_back(fmt::arg("x", prog.num("X", w.x)));
-    a.push_back(fmt::arg("z", prog.num("Z", w.z)));
-    a.push_back(fmt::arg("taper", w.taper != 0 ? " I" + prog.num("I", w.taper) : std::string()));
-    a.push_back(fmt::arg("height", prog.num("K", w.height)));
-    a.push_back(fmt::arg("first_cut", prog.num("D", w.first_cut)));
-    a.push_back(fmt::arg("angle", fmt::format("{}", w.tool_angle)));
-    a.push_back(fmt::arg("mode", fmt::format("{}", w.mode)));
-    a.push_back(fmt::arg("start_angle", w.start_angle
-                                            ? " Q" + prog.num("thread_angle", *w.start_angle)
-                                            : std::string()));
-    a.push_back(fmt::arg("lead", prog.num("F", w.lead)));
-    prog.emit_template(kTemplate, a);
+    TemplateFill<tmpl::kHaasG76> a;
+    a.text<"x">(prog.num("X", w.x));
+    a.text<"z">(prog.num("Z", w.z));
+    a.text<"taper">(w.taper != 0 ? " I" + prog.num("I", w.taper) : std::string());
+    a.text<"height">(prog.num("K", w.height));
+    a.text<"first_cut">(prog.num("D", w.first_cut));
+    a.text<"angle">(fmt::format("{}", w.tool_angle));
+    a.text<"mode">(fmt::format("{}", w.mode));
+    a.text<"start_angle">(w.start_angle ? " Q" + prog.num("thread_angle", *w.start_angle)
+                                        : std::string());
+    a.text<"lead">(prog.num("F", w.lead));
+    if (TemplateWrite r = prog.write_template(a); !r) return template_failed(plan, ctx, m, r);
     prog.cycle_ended_at(lp(b.start));
   }
   const Vec2 e = point_as_read(m, plan.end_position);

@@ -16,7 +16,7 @@ namespace {
 
 using namespace vec2_math;
 
-constexpr const char* kTemplate = "heidenhain_g31";
+constexpr const char* kTemplate = tmpl::kHeidenhainG31.name.data();
 
 int code_int(const Machine& m, const char* key, int fallback) {
   const std::string& c = m.code(key);
@@ -132,25 +132,25 @@ bool HeidenhainG31Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const E
     prog.linear(lp(clear_start(plan)));
   else
     prog.rapid(lp(clear_start(plan)));
-  TemplateArgs a;
-  a.push_back(fmt::arg("f", prog.num("F", w->f)));
-  a.push_back(fmt::arg("u", prog.num("U", w->u)));
-  a.push_back(fmt::arg("ic", fmt::format("{}", w->ic)));
-  a.push_back(fmt::arg("v", fmt::format("{}", w->v)));
-  a.push_back(fmt::arg("h", fmt::format("{}", w->h)));
-  a.push_back(fmt::arg("a", prog.num("A", w->a)));
-  a.push_back(fmt::arg("d", fmt::format("{}", w->d)));
-  a.push_back(fmt::arg("q", fmt::format("{}", w->q)));
-  a.push_back(fmt::arg("c", prog.num("C", w->c)));
-  a.push_back(fmt::arg("bd", fmt::format("{}", w->bd)));
-  a.push_back(fmt::arg("b", prog.num("B", w->b)));
-  a.push_back(fmt::arg("p", prog.num("P", w->p)));
-  a.push_back(fmt::arg("k", prog.num("K", w->k)));
-  a.push_back(fmt::arg("x1", prog.num("X", dm * w->from.x)));
-  a.push_back(fmt::arg("z1", prog.num("Z", w->from.z)));
-  a.push_back(fmt::arg("x2", prog.num("X", dm * w->to.x)));
-  a.push_back(fmt::arg("z2", prog.num("Z", w->to.z)));
-  prog.emit_template(kTemplate, a);
+  TemplateFill<tmpl::kHeidenhainG31> a;
+  a.text<"f">(prog.num("F", w->f));
+  a.text<"u">(prog.num("U", w->u));
+  a.text<"ic">(fmt::format("{}", w->ic));
+  a.text<"v">(fmt::format("{}", w->v));
+  a.text<"h">(fmt::format("{}", w->h));
+  a.text<"a">(prog.num("A", w->a));
+  a.text<"d">(fmt::format("{}", w->d));
+  a.text<"q">(fmt::format("{}", w->q));
+  a.text<"c">(prog.num("C", w->c));
+  a.text<"bd">(fmt::format("{}", w->bd));
+  a.text<"b">(prog.num("B", w->b));
+  a.text<"p">(prog.num("P", w->p));
+  a.text<"k">(prog.num("K", w->k));
+  a.text<"x1">(prog.num("X", dm * w->from.x));
+  a.text<"z1">(prog.num("Z", w->from.z));
+  a.text<"x2">(prog.num("X", dm * w->to.x));
+  a.text<"z2">(prog.num("Z", w->to.z));
+  if (TemplateWrite r = prog.write_template(a); !r) return template_failed(plan, ctx, m, r);
   // Where the cycle leaves the tool is not documented: take it as unknown and go to the
   // thread's end position with both axes written.
   prog.cycle_ended_at(lp(clear_start(plan)));

@@ -16,8 +16,8 @@ namespace {
 
 using namespace vec2_math;
 
-constexpr const char* kTemplate = "linuxcnc_g76";
-constexpr const char* kTaperTemplate = "linuxcnc_g76_taper";
+constexpr const char* kTemplate = tmpl::kLinuxcncG76.name.data();
+constexpr const char* kTaperTemplate = tmpl::kLinuxcncG76Taper.name.data();
 
 double deepest(const ThreadPlan& plan) {
   double d = 0;
@@ -178,6 +178,27 @@ Fit LinuxcncG76Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
   return f;
 }
 
+namespace {
+
+// G76 through template `T` (linuxcnc_g76 or, with an exit taper, linuxcnc_g76_taper).
+template <const TemplateSpec& T>
+TemplateWrite write_g76(NcProgram& prog, const LinuxcncG76& w) {
+  TemplateFill<T> a;
+  a.template text<"p">(prog.num("g76_lead", w.p));
+  a.template text<"z">(prog.num("Z", w.z));
+  a.template text<"i">(prog.num("g76_depth", w.i));
+  a.template text<"j">(prog.num("g76_depth", w.j));
+  a.template text<"k">(prog.num("g76_depth", w.k));
+  a.template text<"r">(fmt::format("{}", w.r));
+  a.template text<"q">(prog.num("g76_angle", w.q));
+  a.template text<"h">(fmt::format("{}", w.h));
+  a.template text<"e">(prog.num("g76_taper", w.e));
+  a.template text<"l">(fmt::format("{}", w.l));
+  return prog.write_template(a);
+}
+
+}  // namespace
+
 bool LinuxcncG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
   const Machine& m = prog.machine();
   Fit f;
@@ -191,18 +212,9 @@ bool LinuxcncG76Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const Emi
     prog.linear(lp(b->start));
   else
     prog.rapid(lp(b->start));
-  TemplateArgs a;
-  a.push_back(fmt::arg("p", prog.num("g76_lead", w.p)));
-  a.push_back(fmt::arg("z", prog.num("Z", w.z)));
-  a.push_back(fmt::arg("i", prog.num("g76_depth", w.i)));
-  a.push_back(fmt::arg("j", prog.num("g76_depth", w.j)));
-  a.push_back(fmt::arg("k", prog.num("g76_depth", w.k)));
-  a.push_back(fmt::arg("r", fmt::format("{}", w.r)));
-  a.push_back(fmt::arg("q", prog.num("g76_angle", w.q)));
-  a.push_back(fmt::arg("h", fmt::format("{}", w.h)));
-  a.push_back(fmt::arg("e", prog.num("g76_taper", w.e)));
-  a.push_back(fmt::arg("l", fmt::format("{}", w.l)));
-  prog.emit_template(w.l ? kTaperTemplate : kTemplate, a);
+  const TemplateWrite r =
+      w.l ? write_g76<tmpl::kLinuxcncG76Taper>(prog, w) : write_g76<tmpl::kLinuxcncG76>(prog, w);
+  if (!r) return template_failed(plan, ctx, m, r);
   // G76 leaves the tool on the drive line at Z; the thread ends above its start.
   prog.cycle_ended_at(LathePoint{b->start.x, w.z});
   prog.rapid(lp(plan.end_position));

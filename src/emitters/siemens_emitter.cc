@@ -42,7 +42,7 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
   };
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return fail("CYCLE99 cuts multi-pass threads (THREAD/ON) only");
-  if (!m.templates.count("cycle99"))
+  if (!m.templates.count(std::string(tmpl::kCycle99.name)))
     return fail(fmt::format("machine '{}' has no 'cycle99' template", m.name));
   if (plan.pitch.lead_change != 0)
     return fail(fmt::format("CYCLE99 cuts a constant lead; this lead {} by {} per revolution",
@@ -231,26 +231,27 @@ bool Cycle99Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
   else
     prog.rapid(above);
   auto num = [&](std::string_view f, double v) { return prog.num(f, v); };
-  TemplateArgs a;
-  a.push_back(fmt::arg("spl", num("Z", w.spl)));
-  a.push_back(fmt::arg("dm1", num("X", w.dm1)));
-  a.push_back(fmt::arg("fpl", num("Z", w.fpl)));
-  a.push_back(fmt::arg("dm2", num("X", w.dm2)));
-  a.push_back(fmt::arg("app", num(kDepthFormat, w.app)));
-  a.push_back(fmt::arg("rop", num(kDepthFormat, w.rop)));
-  a.push_back(fmt::arg("tdep", num(kDepthFormat, w.tdep)));
-  a.push_back(fmt::arg("fal", num(kDepthFormat, w.fal)));
-  a.push_back(fmt::arg("iang", num(kAngleFormat, w.iang)));
-  a.push_back(fmt::arg("nsp", num(kAngleFormat, w.nsp)));
-  a.push_back(fmt::arg("nrc", std::to_string(w.nrc)));
-  a.push_back(fmt::arg("nid", std::to_string(w.nid)));
-  a.push_back(fmt::arg("pit", num(kLeadFormat, w.pit)));
-  a.push_back(fmt::arg("vari", std::to_string(w.vari)));
-  a.push_back(fmt::arg("numth", std::to_string(w.numth)));
-  a.push_back(fmt::arg("vrt", num(kDepthFormat, w.vrt)));
-  a.push_back(fmt::arg("pita", std::to_string(w.pita)));
-  a.push_back(fmt::arg("psys", std::to_string(w.psys)));
-  prog.emit_template("cycle99", a);
+  TemplateFill<tmpl::kCycle99> a;
+  a.text<"spl">(num("Z", w.spl));
+  a.text<"dm1">(num("X", w.dm1));
+  a.text<"fpl">(num("Z", w.fpl));
+  a.text<"dm2">(num("X", w.dm2));
+  a.text<"app">(num(kDepthFormat, w.app));
+  a.text<"rop">(num(kDepthFormat, w.rop));
+  a.text<"tdep">(num(kDepthFormat, w.tdep));
+  a.text<"fal">(num(kDepthFormat, w.fal));
+  a.text<"iang">(num(kAngleFormat, w.iang));
+  a.text<"nsp">(num(kAngleFormat, w.nsp));
+  a.text<"nrc">(std::to_string(w.nrc));
+  a.text<"nid">(std::to_string(w.nid));
+  a.text<"pit">(num(kLeadFormat, w.pit));
+  a.text<"vari">(std::to_string(w.vari));
+  a.text<"numth">(std::to_string(w.numth));
+  a.text<"vrt">(num(kDepthFormat, w.vrt));
+  a.text<"pita">(std::to_string(w.pita));
+  a.text<"psys">(std::to_string(w.psys));
+  const Machine& m = prog.machine();
+  if (TemplateWrite r = prog.write_template(a); !r) return template_failed(plan, ctx, m, r);
   // The cycle returns to where it was called from (unverified); the modal words are unknown.
   prog.cycle_ended_at(above);
   return true;

@@ -58,6 +58,12 @@ bool unfit_error(const ThreadPlan& plan, const EmitContext& ctx, const Machine& 
   return false;
 }
 
+bool template_failed(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
+                     const TemplateWrite& w) {
+  ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line), template_error(m, w));
+  return false;
+}
+
 namespace {
 
 // Tries each emitter in order; the first that fits writes the thread. When the first one does

@@ -195,8 +195,8 @@ TEST(Interpreter, DwellWithoutATemplateIsAnError) {
   m.templates.erase("dwell");
   Posted p = post("DELAY/2\nFINI\n", m);
   EXPECT_EQ(p.diags,
-            "t.cl:1:1: error: machine 'generic-lathe' has no 'dwell' template: the dwell cannot "
-            "be posted\n"
+            "t.cl:1:1: error: machine 'generic-lathe' has no template 'dwell' (templates.dwell "
+            "in its machine or post file)\n"
             "  DELAY/2\n"
             "  ^\n");
 }

@@ -54,7 +54,9 @@ bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view 
 void ensure_started(PostState& s) {
   if (s.started) return;
   s.started = true;
-  s.prog.start(s.partno, s.units == LengthUnit::kInch, s.diags.file());
+  // Required by the loader: it cannot be missing, but a failure is never silent.
+  if (TemplateWrite r = s.prog.start(s.partno, s.units == LengthUnit::kInch, s.diags.file()); !r)
+    s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
   if (!s.partno.empty()) s.prog.comment(s.partno);
 }
 

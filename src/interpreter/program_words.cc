@@ -93,7 +93,8 @@ void finish_program(PostState& s) {
   if (s.ended) return;
   end_sequences(s);
   ensure_started(s);
-  s.prog.end(s.partno);
+  if (TemplateWrite r = s.prog.end(s.partno); !r)
+    s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
   s.ended = true;
 }
 

@@ -88,7 +88,11 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
   sp.css = w.css;
   sp.value = *w.value;
   sp.on = true;
-  if (!w.css) return s.prog.spindle_rpm(*w.value, sp.dir);
+  if (!w.css) {
+    if (TemplateWrite r = s.prog.spindle_rpm(*w.value, sp.dir); !r)
+      error(s, st, st.loc, template_error(s.m, r));
+    return;
+  }
   double limit = w.max_rpm.value_or(s.m.max_rpm);
   if (!(limit > 0)) {
     error(s, st, st.loc,
@@ -98,7 +102,8 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
   }
   if (s.m.max_rpm > 0 && limit > s.m.max_rpm) limit = s.m.max_rpm;
   sp.css_max_rpm = limit;
-  s.prog.spindle_css(*w.value, limit, sp.dir);
+  if (TemplateWrite r = s.prog.spindle_css(*w.value, limit, sp.dir); !r)
+    error(s, st, st.loc, template_error(s.m, r));
 }
 
 }  // namespace
@@ -155,7 +160,7 @@ void spindl_stmt(PostState& s, const Statement& st) {
   ensure_started(s);
   if (w.off) {
     s.spindle.on = false;
-    s.prog.spindle_stop();
+    if (TemplateWrite r = s.prog.spindle_stop(); !r) error(s, st, st.loc, template_error(s.m, r));
     return;
   }
   spindle_on(s, st, w);
@@ -175,12 +180,6 @@ void delay_stmt(PostState& s, const Statement& st) {
                       in_revs ? "a dwell in revolutions" : "dwell time", v));
     return;
   }
-  if (!s.m.templates.count("dwell")) {
-    error(
-        s, st, st.loc,
-        fmt::format("machine '{}' has no 'dwell' template: the dwell cannot be posted", s.m.name));
-    return;
-  }
   const SpindleState& sp = s.spindle;
   const bool rpm_known = sp.on && !sp.css && sp.value > 0;
   std::optional<double> seconds, revolutions;
@@ -192,7 +191,10 @@ void delay_stmt(PostState& s, const Statement& st) {
     if (rpm_known) revolutions = v * sp.value / 60;
   }
   ensure_started(s);
-  if (s.prog.dwell(seconds, revolutions)) return;
+  const TemplateWrite r = s.prog.dwell(seconds, revolutions);
+  if (r) return;
+  if (r.status != TemplateWrite::Status::kNoValue)
+    return error(s, st, st.loc, template_error(s.m, r));
   error(s, st, st.loc,
         fmt::format("machine '{}' dwells in {}: a dwell of {} {} needs the spindle turning at a "
                     "set RPM to convert, and the spindle {}",

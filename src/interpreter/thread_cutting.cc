@@ -32,7 +32,10 @@ bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
   ensure_started(s);
   s.prog.comment(
       fmt::format("constant surface speed {} off for the thread: {} rpm", sp.value, rpm));
-  s.prog.spindle_rpm(rpm, sp.dir);
+  if (TemplateWrite r = s.prog.spindle_rpm(rpm, sp.dir); !r) {
+    s.diags.error(at.loc, at.line, template_error(s.m, r));
+    return false;
+  }
   t.rpm = rpm;
   t.forced_rpm = true;
   return true;
@@ -41,7 +44,10 @@ bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
 void end_thread_spindle(PostState& s) {
   if (!s.thread.forced_rpm) return;
   s.thread.forced_rpm = false;
-  s.prog.spindle_css(s.spindle.value, s.spindle.css_max_rpm, s.spindle.dir);
+  // Written at its SPINDL line already, so it cannot fail here; never silently, though.
+  if (TemplateWrite r = s.prog.spindle_css(s.spindle.value, s.spindle.css_max_rpm, s.spindle.dir);
+      !r)
+    s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
 }
 
 bool check_thread_feed(PostState& s, Vec2 from, Vec2 to, double lead, CutSite at) {

@@ -39,7 +39,8 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   }
   ensure_started(s);
   s.tool_offset = offset;
-  s.prog.tool_change(static_cast<int>(tool), offset, "");
+  if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
+    error(s, st, st.loc, template_error(s.m, r));
 }
 
 }  // namespace

@@ -229,11 +229,12 @@ void undercut_cycle96(PostState& s, const Statement& st, const UndercutWords& u,
       .code(s.m.code(s.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"))
       .word("F", s.feed)
       .end_block();
-  TemplateArgs args;
-  args.push_back(fmt::arg("diath", prog.num("X", u.diam)));
-  args.push_back(fmt::arg("axsa", prog.num("Z", u.at)));
-  args.push_back(fmt::arg("form", std::string(1, u.form)));
-  prog.emit_template("cycle96", args);
+  TemplateFill<tmpl::kCycle96> args;
+  args.text<"diath">(prog.num("X", u.diam))
+      .text<"axsa">(prog.num("Z", u.at))
+      .text<"form">(std::string(1, u.form));
+  if (TemplateWrite r = prog.write_template(args); !r)
+    return error(s, st, st.loc, template_error(s.m, r));
   // The cycle returns to its starting point with G0 (seed 001).
   prog.cycle_ended_at(prog.position().value_or(LathePoint{}));
 }

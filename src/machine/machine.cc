@@ -1,5 +1,9 @@
 #include "machine/machine.h"
 
+#include <cassert>
+
+#include "machine/machine_schema.h"
+
 namespace clpost {
 
 const NumberFormat& Machine::format_for(std::string_view address) const {
@@ -12,6 +16,8 @@ const NumberFormat& Machine::format_for(std::string_view address) const {
 }
 
 const std::string& Machine::code(const std::string& key) const {
+  // A name the schema does not declare is a typo in clpost (Debug and sanitizer builds stop).
+  assert(find_code(key) != nullptr && "code name not declared in machine_schema.cc");
   static const std::string kEmpty;
   auto it = codes.find(key);
   return it == codes.end() ? kEmpty : it->second;

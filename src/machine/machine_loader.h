@@ -3,6 +3,7 @@
 // post (control dialect) it `extends`, `posts/<post>.yaml`; the post's keys are read first, then
 // the machine's, then command-line overrides (`--set key.path=value`). Every problem is a
 // diagnostic `file.yaml:line:col: error: ...`.
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,16 +18,21 @@ struct MachineInfo {
   std::string path;
 };
 
+// Where each key's value came from, by dotted path ("formats.X.decimals"): "FILE:LINE" of the
+// post or machine file, or "--set". A key that is not in it has the Machine's default.
+using KeyOrigins = std::map<std::string, std::string>;
+
 // `name_or_path`: a shipped machine name (looked up as <dir>/machines/<name>.yaml in each of
 // `data_dirs`, first match wins) or a path to a YAML file (contains '/' or ends in .yaml/.yml).
 // On failure returns false and `errors` holds the rendered diagnostics.
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
-                  const std::vector<std::string>& overrides, Machine& out, std::string& errors);
+                  const std::vector<std::string>& overrides, Machine& out, std::string& errors,
+                  KeyOrigins* origins = nullptr);
 
 // Applies one YAML document (a post or a machine file) on top of `m`. `file` names it in
 // diagnostics; `text` is its content. Exposed for tests.
 bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_post, Machine& m,
-                        std::string& errors);
+                        std::string& errors, KeyOrigins* origins = nullptr);
 
 // Every shipped machine in `data_dirs` (sorted by name; a name found twice: first dir wins).
 std::vector<MachineInfo> list_machines(const std::vector<std::string>& data_dirs);

@@ -73,10 +73,10 @@ TEST(MachineLoader, BadTemplateFieldIsCaughtAtLoad) {
                                   false, m, errors));
   EXPECT_EQ(
       errors,
-      "m.yaml:2:17: error: bad template line 'T{tool}{ofset}' in 'tool_change': argument not found "
-      "(fields: {tool}, {offset}, {tool_name})\n"
+      "m.yaml:2:25: error: bad template line 'T{tool}{ofset}' in 'tool_change': unknown field "
+      "'{ofset}' (did you mean 'offset'?) (fields: {tool}, {offset}, {tool_name})\n"
       "    tool_change: [\"T{tool}{ofset}\"]\n"
-      "                  ^\n");
+      "                          ^\n");
 }
 
 // Fuzzer find: a template field's width is how many characters fmt writes, so
@@ -205,6 +205,156 @@ TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
   EXPECT_TRUE(m.extra_spring_passes);
   EXPECT_EQ(m.tpi_address, "E");
   EXPECT_EQ(m.thread_lead_address_x, "I");
+}
+
+// Issue 14: every name under codes, formats and templates is declared; an unknown one is an
+// error at its line and column with the closest declared name.
+TEST(MachineLoader, UnknownCodeFormatAndTemplateNames) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(apply_machine_yaml("m.yaml",
+                                  "codes:\n  rapdi: G0\nformats:\n  dwel: {decimals: 2}\n"
+                                  "templates:\n  spindle_cs: [\"G96\"]\n",
+                                  false, m, errors));
+  EXPECT_EQ(errors,
+            "m.yaml:2:3: error: unknown code 'codes.rapdi' (did you mean 'rapid'?)\n"
+            "    rapdi: G0\n"
+            "    ^\n"
+            "m.yaml:4:3: error: unknown format 'formats.dwel' (did you mean 'dwell'?): a format is "
+            "an address the machine writes or a named format (docs/machines.md)\n"
+            "    dwel: {decimals: 2}\n"
+            "    ^\n"
+            "m.yaml:6:3: error: unknown template 'templates.spindle_cs' (did you mean "
+            "'spindle_css'?)\n"
+            "    spindle_cs: [\"G96\"]\n"
+            "    ^\n");
+}
+
+// A format for an address a key of the machine names (here H, the start-angle word) is known.
+TEST(MachineLoader, FormatOfAnAddressTheMachineNames) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(apply_machine_yaml(
+      "m.yaml", "formats:\n  H: {decimals: 1}\nthreading: {start_angle_address: H}\n", false, m,
+      errors))
+      << errors;
+  EXPECT_EQ(m.format_for("H").decimals, 1);
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "formats:\n  W: {decimals: 1}\n", false, m, errors));
+}
+
+TEST(MachineLoader, SetOfAnUnknownCodeOrFormatIsAnError) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"codes.rapdi=G0"}, m, errors));
+  EXPECT_EQ(errors,
+            "--set codes.rapdi=G0: error: unknown code 'codes.rapdi' (did you mean 'rapid'?)\n");
+  errors.clear();
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"formats.x.decimals=4"}, m, errors));
+  EXPECT_EQ(errors,
+            "--set formats.x.decimals=4: error: unknown format 'formats.x' (did you mean 'X'?): a "
+            "format is an address the machine writes or a named format (docs/machines.md)\n");
+  errors.clear();
+  EXPECT_TRUE(load_machine("generic-lathe", kDirs,
+                           {"codes.coolant_air=M12", "formats.X.decimals=4"}, m, errors))
+      << errors;
+  EXPECT_EQ(m.code("coolant_air"), "M12");
+}
+
+// A template that a setting selects is required when it selects it.
+TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.cycle=fanuc_g76"}, m, errors));
+  EXPECT_EQ(errors, std::string(CLPOST_SOURCE_DIR) +
+                        "/machines/generic-lathe.yaml:3:1: error: threading.cycle is 'fanuc_g76', "
+                        "which writes template 'templates.fanuc_g76': absent in this machine and "
+                        "its post 'iso-lathe'\n"
+                        "  extends: iso-lathe\n"
+                        "  ^\n");
+  errors.clear();
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.loop=g92"}, m, errors));
+  EXPECT_NE(errors.find("threading.loop is 'g92', which writes template 'templates.g92':"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("threading.loop is 'g92', which writes template 'templates.g92_next':"),
+            std::string::npos)
+      << errors;
+  errors.clear();
+  EXPECT_TRUE(load_machine("generic-lathe", kDirs,
+                           {"threading.cycle=fanuc_g76", "templates.fanuc_g76=[\"G76 X{x} Z{z}\"]"},
+                           m, errors))
+      << errors;
+}
+
+// One case per template a machine must have: the five every program reaches, each missing in
+// turn from a machine of its own, and the cycle templates a setting selects.
+TEST(MachineLoader, EveryRequiredTemplateIsRequired) {
+  const std::string codes =
+      "codes: {rapid: G0, linear: G1, arc_cw: G2, arc_ccw: G3, thread: G33, metric: G21, inch: "
+      "G20, spindle_cw: M3, spindle_ccw: M4}\n";
+  const std::vector<std::string> always = {"program_start", "program_end", "tool_change",
+                                           "spindle_rpm", "spindle_stop"};
+  for (const std::string& left_out : always) {
+    std::string text = codes + "templates:\n";
+    for (const std::string& t : always)
+      if (t != left_out) text += "  " + t + ": []\n";
+    const std::string path = write_temp("one-less.yaml", text);
+    Machine m;
+    std::string errors;
+    EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+    EXPECT_EQ(errors, path + ":1:1: error: missing required key 'templates." + left_out +
+                          "' (a machine file normally 'extends' a post from posts/ that defines "
+                          "them)\n  " +
+                          codes.substr(0, codes.find('\n')) + "\n  ^\n");
+  }
+  const std::vector<std::pair<std::string, std::string>> selected = {
+      {"threading.cycle=cycle99",
+       "threading.cycle is 'cycle99', which writes template "
+       "'templates.cycle99'"},
+      {"threading.cycle=fanuc_g76",
+       "threading.cycle is 'fanuc_g76', which writes template "
+       "'templates.fanuc_g76'"},
+      {"threading.cycle=haas_g76",
+       "threading.cycle is 'haas_g76', which writes template "
+       "'templates.haas_g76'"},
+      {"threading.cycle=heidenhain_g31",
+       "threading.cycle is 'heidenhain_g31', which writes "
+       "template 'templates.heidenhain_g31'"},
+      {"threading.cycle=linuxcnc_g76",
+       "threading.cycle is 'linuxcnc_g76', which writes template "
+       "'templates.linuxcnc_g76'"},
+      {"threading.cycle=linuxcnc_g76",
+       "threading.cycle is 'linuxcnc_g76', which writes template "
+       "'templates.linuxcnc_g76_taper'"},
+      {"threading.loop=g92", "threading.loop is 'g92', which writes template 'templates.g92'"},
+      {"threading.loop=g92",
+       "threading.loop is 'g92', which writes template "
+       "'templates.g92_next'"},
+  };
+  const std::string dir = CLPOST_SOURCE_DIR;
+  for (const auto& [set, message] : selected) {
+    Machine m;
+    std::string errors;
+    EXPECT_FALSE(load_machine("generic-lathe", kDirs, {set}, m, errors));
+    const std::string line = dir + "/machines/generic-lathe.yaml:3:1: error: " + message +
+                             ": absent in this machine and its post 'iso-lathe'\n"
+                             "  extends: iso-lathe\n"
+                             "  ^\n";
+    EXPECT_NE(errors.find(line), std::string::npos) << set << "\n" << errors;
+  }
+}
+
+// `dwell: []` is the integrator's choice to write nothing; a template selected by a setting may
+// be that too.
+TEST(MachineLoader, AnEmptyTemplateIsPresent) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(load_machine(
+      "generic-lathe", kDirs,
+      {"templates.dwell=[]", "threading.loop=g92", "templates.g92=[]", "templates.g92_next=[]"}, m,
+      errors))
+      << errors;
+  EXPECT_TRUE(m.templates.at("dwell").empty());
 }
 
 }  // namespace

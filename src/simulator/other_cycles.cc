@@ -9,6 +9,7 @@
 #include "emitters/heidenhain_law.h"
 #include "emitters/linuxcnc_law.h"
 #include "emitters/siemens_law.h"
+#include "machine/machine_schema.h"
 #include "reader/number.h"
 #include "simulator/sim_state.h"
 
@@ -176,8 +177,19 @@ std::map<std::string, size_t> call_fields(std::string_view t) {
 
 }  // namespace
 
+namespace {
+
+// A CYCLE99 field by its name in the declared template (machine_schema.h): a name the template
+// does not declare does not compile.
+consteval const char* cycle99_field(const char* name) {
+  (void)tmpl::kCycle99.field(name, FieldKind::kText);
+  return name;
+}
+
+}  // namespace
+
 bool cycle99_call(State& s, const NcBlock& b) {
-  const auto tmpl = s.m.templates.find("cycle99");
+  const auto tmpl = s.m.templates.find(std::string(tmpl::kCycle99.name));
   if (tmpl == s.m.templates.end() || tmpl->second.empty()) return false;
   std::string_view t = tmpl->second.front();
   const std::string name(t.substr(0, t.find('(')));
@@ -211,24 +223,24 @@ bool cycle99_call(State& s, const NcBlock& b) {
     return r.value_or(lo);
   };
   Cycle99Words w;
-  w.spl = arg("spl", "Z", 0);
-  w.dm1 = arg("dm1", "X", 0);
-  w.fpl = arg("fpl", "Z", 0);
-  w.dm2 = arg("dm2", "X", 0);
-  w.app = arg("app", kDepth, 0);
-  w.rop = arg("rop", kDepth, 0);
-  w.tdep = arg("tdep", kDepth, 0);
-  w.fal = arg("fal", kDepth, 0);
-  w.iang = arg("iang", kAngle, 0);
-  w.nsp = arg("nsp", kAngle, 0);
-  w.nrc = whole(arg("nrc", "", 1), "NRC", 1, kMaxCyclePasses);
-  w.nid = whole(arg("nid", "", 0), "NID", 0, kMaxCyclePasses);
-  w.pit = arg("pit", kLead, 0);
-  w.vari = whole(arg("vari", "", kVariExternalConstantInfeed), "VARI", 0, 999999);
-  w.numth = whole(arg("numth", "", 0), "NUMTH", 0, 100);
-  w.vrt = arg("vrt", kDepth, 0);
-  w.pita = whole(arg("pita", "", 1), "PITA", 1, 4);
-  w.psys = whole(arg("psys", "", 0), "PSYS", 0, 99);
+  w.spl = arg(cycle99_field("spl"), "Z", 0);
+  w.dm1 = arg(cycle99_field("dm1"), "X", 0);
+  w.fpl = arg(cycle99_field("fpl"), "Z", 0);
+  w.dm2 = arg(cycle99_field("dm2"), "X", 0);
+  w.app = arg(cycle99_field("app"), kDepth, 0);
+  w.rop = arg(cycle99_field("rop"), kDepth, 0);
+  w.tdep = arg(cycle99_field("tdep"), kDepth, 0);
+  w.fal = arg(cycle99_field("fal"), kDepth, 0);
+  w.iang = arg(cycle99_field("iang"), kAngle, 0);
+  w.nsp = arg(cycle99_field("nsp"), kAngle, 0);
+  w.nrc = whole(arg(cycle99_field("nrc"), "", 1), "NRC", 1, kMaxCyclePasses);
+  w.nid = whole(arg(cycle99_field("nid"), "", 0), "NID", 0, kMaxCyclePasses);
+  w.pit = arg(cycle99_field("pit"), kLead, 0);
+  w.vari = whole(arg(cycle99_field("vari"), "", kVariExternalConstantInfeed), "VARI", 0, 999999);
+  w.numth = whole(arg(cycle99_field("numth"), "", 0), "NUMTH", 0, 100);
+  w.vrt = arg(cycle99_field("vrt"), kDepth, 0);
+  w.pita = whole(arg(cycle99_field("pita"), "", 1), "PITA", 1, 4);
+  w.psys = whole(arg(cycle99_field("psys"), "", 0), "PSYS", 0, 99);
   if (!ok) return true;
   if (!s.diameter) {
     s.error(call->col, "CYCLE99 in radius programming (DIAMOF) is not expanded");

@@ -1,6 +1,5 @@
 #include "writer/nc_program.h"
 
-#include <fmt/args.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -11,28 +10,55 @@ namespace clpost {
 
 namespace {
 
-using Args = TemplateArgs;
-
-// Writes template `name` with `args`. False, and nothing written, when the machine has no such
-// template or one of its lines needs a field `args` lacks (the loader checked the fields' names;
-// a caller may still leave out a value it cannot know, as a dwell does).
-bool write_template(NcWriter& w, const Machine& m, const std::string& name, const Args& args) {
-  auto it = m.templates.find(name);
-  if (it == m.templates.end()) return false;
-  std::vector<std::string> lines;  // every line formatted before any is written
+// Writes template `v.spec()` of machine `m`: every line formatted before any is written.
+TemplateWrite write_lines(NcWriter& w, const Machine& m, const TemplateValues& v) {
+  TemplateWrite r;
+  r.name = v.spec().name;
+  auto it = m.templates.find(std::string(r.name));
+  if (it == m.templates.end()) {
+    r.status = TemplateWrite::Status::kMissing;
+    return r;
+  }
+  std::vector<std::string> lines;
   for (const std::string& line : it->second) {
-    try {
-      lines.push_back(fmt::vformat(line, args));
-    } catch (const fmt::format_error&) {
-      return false;
+    TemplateValues::Line l = v.format(line);
+    if (!l.missing.empty()) {
+      r.status = TemplateWrite::Status::kNoValue;
+      r.field = l.missing;
+      return r;
     }
+    if (!l.ok) {
+      r.status = TemplateWrite::Status::kBadLine;
+      r.detail = std::move(l.error);
+      return r;
+    }
+    lines.push_back(std::move(l.text));
   }
   for (const std::string& text : lines)
     if (!text.empty()) w.text(text).end_block();
-  return true;
+  return r;
 }
 
 }  // namespace
+
+std::string template_error(const Machine& m, const TemplateWrite& w) {
+  switch (w.status) {
+    case TemplateWrite::Status::kMissing:
+      return fmt::format(
+          "machine '{}' has no template '{}' (templates.{} in its machine or post "
+          "file)",
+          m.name, w.name, w.name);
+    case TemplateWrite::Status::kNoValue:
+      return fmt::format("machine '{}': template '{}' needs {{{}}}, which is not known here",
+                         m.name, w.name, w.field);
+    case TemplateWrite::Status::kBadLine:
+      return fmt::format("machine '{}': template '{}' cannot be written: {}", m.name, w.name,
+                         w.detail);
+    case TemplateWrite::Status::kWritten:
+      break;
+  }
+  return {};
+}
 
 NcProgram::NcProgram(const Machine& m, Sink& out)
     : m_(m),
@@ -48,52 +74,52 @@ NcProgram::NcProgram(const Machine& m, Sink& out)
       code_arc_ccw_(m.code("arc_ccw")),
       code_thread_(m.code("thread")) {}
 
-void NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
-  Args a;
-  a.push_back(fmt::arg("program_number", m_.program_number));
-  a.push_back(fmt::arg("program_name", std::string(program_name)));
-  a.push_back(fmt::arg("units_code", m_.code(inch ? "inch" : "metric")));
-  a.push_back(fmt::arg("machine", m_.name));
-  a.push_back(fmt::arg("file", std::string(file)));
-  write_template(w_, m_, "program_start", a);
+TemplateWrite NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
+  TemplateFill<tmpl::kProgramStart> a;
+  a.whole<"program_number">(m_.program_number)
+      .text<"program_name">(std::string(program_name))
+      .text<"units_code">(m_.code(inch ? "inch" : "metric"))
+      .text<"machine">(m_.name)
+      .text<"file">(std::string(file));
+  return write_lines(w_, m_, a);
 }
 
-void NcProgram::end(std::string_view program_name) {
-  Args a;
-  a.push_back(fmt::arg("program_number", m_.program_number));
-  a.push_back(fmt::arg("program_name", std::string(program_name)));
-  write_template(w_, m_, "program_end", a);
+TemplateWrite NcProgram::end(std::string_view program_name) {
+  TemplateFill<tmpl::kProgramEnd> a;
+  a.whole<"program_number">(m_.program_number).text<"program_name">(std::string(program_name));
+  return write_lines(w_, m_, a);
 }
 
-void NcProgram::tool_change(int tool, int offset, std::string_view name) {
-  Args a;
-  a.push_back(fmt::arg("tool", tool));
-  a.push_back(fmt::arg("offset", offset));
-  a.push_back(fmt::arg("tool_name", std::string(name)));
-  write_template(w_, m_, "tool_change", a);
+TemplateWrite NcProgram::tool_change(int tool, int offset, std::string_view name) {
+  TemplateFill<tmpl::kToolChange> a;
+  a.whole<"tool">(tool).whole<"offset">(offset).text<"tool_name">(std::string(name));
+  TemplateWrite r = write_lines(w_, m_, a);
   forget_modal();
+  return r;
 }
 
-void NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
-  Args a;
-  a.push_back(fmt::arg("rpm", number_text(rpm, m_.format_for("S"))));
-  a.push_back(
-      fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
-  write_template(w_, m_, "spindle_rpm", a);
+namespace {
+const std::string& direction(const Machine& m, SpindleDir dir) {
+  return m.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw");
+}
+}  // namespace
+
+TemplateWrite NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
+  TemplateFill<tmpl::kSpindleRpm> a;
+  a.text<"rpm">(number_text(rpm, m_.format_for("S"))).text<"direction">(direction(m_, dir));
+  return write_lines(w_, m_, a);
 }
 
-void NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
-  Args a;
-  a.push_back(fmt::arg("speed", number_text(speed, m_.format_for("S"))));
-  a.push_back(fmt::arg("max_rpm", number_text(max_rpm, m_.format_for("S"))));
-  a.push_back(
-      fmt::arg("direction", m_.code(dir == SpindleDir::kCw ? "spindle_cw" : "spindle_ccw")));
-  write_template(w_, m_, "spindle_css", a);
+TemplateWrite NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
+  TemplateFill<tmpl::kSpindleCss> a;
+  a.text<"speed">(number_text(speed, m_.format_for("S")))
+      .text<"max_rpm">(number_text(max_rpm, m_.format_for("S")))
+      .text<"direction">(direction(m_, dir));
+  return write_lines(w_, m_, a);
 }
 
-void NcProgram::spindle_stop() {
-  Args a;
-  write_template(w_, m_, "spindle_stop", a);
+TemplateWrite NcProgram::spindle_stop() {
+  return write_lines(w_, m_, TemplateFill<tmpl::kSpindleStop>());
 }
 
 void NcProgram::coolant(Coolant c) {
@@ -118,12 +144,12 @@ void NcProgram::set_feed(double feed, FeedMode mode) {
   feed_mode_ = mode;
 }
 
-bool NcProgram::dwell(std::optional<double> seconds, std::optional<double> revolutions) {
+TemplateWrite NcProgram::dwell(std::optional<double> seconds, std::optional<double> revolutions) {
   const NumberFormat& f = m_.format_for("dwell");
-  Args a;
-  if (seconds) a.push_back(fmt::arg("seconds", number_text(*seconds, f)));
-  if (revolutions) a.push_back(fmt::arg("revolutions", number_text(*revolutions, f)));
-  return write_template(w_, m_, "dwell", a);
+  TemplateFill<tmpl::kDwell> a;
+  if (seconds) a.text<"seconds">(number_text(*seconds, f));
+  if (revolutions) a.text<"revolutions">(number_text(*revolutions, f));
+  return write_lines(w_, m_, a);
 }
 
 void NcProgram::program_stop(bool optional) {
@@ -230,8 +256,8 @@ void NcProgram::thread(LathePoint p, const ThreadLead& l) {
   w_.end_block();
 }
 
-bool NcProgram::emit_template(const std::string& name, const TemplateArgs& args) {
-  return write_template(w_, m_, name, args);
+TemplateWrite NcProgram::write_template(const TemplateValues& v) {
+  return write_lines(w_, m_, v);
 }
 
 std::string NcProgram::num(std::string_view format, double v) const {

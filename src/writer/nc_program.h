@@ -3,13 +3,12 @@
 // over NcWriter, so that callers say what the machine should do and only what changes is
 // written. Coordinates are in the lathe frame: `r` is a radius, `z` the spindle axis, in output
 // units; diameter output is applied here.
-#include <fmt/args.h>
-
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "machine/machine.h"
+#include "machine/template_values.h"
 #include "writer/nc_writer.h"
 
 namespace clpost {
@@ -32,7 +31,25 @@ struct ThreadLead {
   double lead_change = 0;             // variable lead: change per revolution (+ INCR, - DECR)
 };
 
-using TemplateArgs = fmt::dynamic_format_arg_store<fmt::format_context>;
+// How writing a template went. Every caller handles it: a template that cannot be written is
+// an error, never a block silently left out.
+struct [[nodiscard]] TemplateWrite {
+  enum class Status : uint8_t {
+    kWritten,  // written (an empty list of lines, the integrator's choice, writes nothing)
+    kMissing,  // the machine has no such template
+    kNoValue,  // a line needs a field the caller could not give (`field`)
+    kBadLine   // fmt could not format a line (`detail`)
+  };
+  Status status = Status::kWritten;
+  std::string_view name;   // the template
+  std::string_view field;  // kNoValue
+  std::string detail;      // kBadLine
+  explicit operator bool() const { return status == Status::kWritten; }
+};
+
+// "machine 'm' has no template 'spindle_css'", "machine 'm': template 'dwell' needs
+// {revolutions}, which is not known here", … (for an error at the CL line or thread).
+std::string template_error(const Machine& m, const TemplateWrite& w);
 
 class NcProgram {
  public:
@@ -42,21 +59,23 @@ class NcProgram {
   const Machine& machine() const { return m_; }
 
   // program_start / program_end templates.
-  void start(std::string_view program_name, bool inch, std::string_view file);
-  void end(std::string_view program_name);
+  [[nodiscard]] TemplateWrite start(std::string_view program_name, bool inch,
+                                    std::string_view file);
+  [[nodiscard]] TemplateWrite end(std::string_view program_name);
 
-  void tool_change(int tool, int offset, std::string_view name);
-  void spindle_rpm(double rpm, SpindleDir dir);
-  void spindle_css(double speed, double max_rpm, SpindleDir dir);
-  void spindle_stop();
+  [[nodiscard]] TemplateWrite tool_change(int tool, int offset, std::string_view name);
+  [[nodiscard]] TemplateWrite spindle_rpm(double rpm, SpindleDir dir);
+  [[nodiscard]] TemplateWrite spindle_css(double speed, double max_rpm, SpindleDir dir);
+  [[nodiscard]] TemplateWrite spindle_stop();
   void coolant(Coolant c);
   void cutter_comp(CutterComp c);
   // The feed for the next feed moves; written with the next feed move when it changed.
   void set_feed(double feed, FeedMode mode);
   // A dwell through the machine's `dwell` template, whose fields are {seconds} and
-  // {revolutions}. A value may be unknown (no spindle speed in RPM to convert through): false,
-  // and nothing written, when there is no template or it needs a value that is unknown.
-  bool dwell(std::optional<double> seconds, std::optional<double> revolutions);
+  // {revolutions}. A value may be unknown (no spindle speed in RPM to convert through): kNoValue,
+  // and nothing written, when the template needs it.
+  [[nodiscard]] TemplateWrite dwell(std::optional<double> seconds,
+                                    std::optional<double> revolutions);
   void program_stop(bool optional);
   void comment(std::string_view text) { w_.comment(text); }
   void raw(std::string_view text) { w_.raw_line(text); }
@@ -74,10 +93,9 @@ class NcProgram {
   // thread_increasing / thread_decreasing (G34 / G35) with the change in the F format.
   void thread(LathePoint p, const ThreadLead& l);
 
-  // Writes the machine's template `name`, one block per line, with named fields (numbers
-  // already formatted with num()). Returns false, writing nothing, when the machine has no such
-  // template or a line needs a field `args` lacks.
-  bool emit_template(const std::string& name, const TemplateArgs& args);
+  // Writes the machine's template `v.spec()`, one block per line, with the fields of `v` (numbers
+  // already formatted with num()). Writes nothing unless every line can be written.
+  [[nodiscard]] TemplateWrite write_template(const TemplateValues& v);
   // `v` as the machine writes numbers of format `format` (an address or a named format).
   std::string num(std::string_view format, double v) const;
   // After a cycle: the tool is at `p` (lathe frame, output units); modal words are unknown.

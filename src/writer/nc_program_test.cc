@@ -1,5 +1,6 @@
 #include "writer/nc_program.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 namespace clpost {
@@ -22,8 +23,8 @@ TEST(NcProgram, ModalWordsAndDiameterOutput) {
   Machine m = test_machine();
   StringSink out;
   NcProgram p(m, out);
-  p.start("", false, "x.cl");
-  p.spindle_rpm(1200, SpindleDir::kCw);
+  EXPECT_TRUE(p.start("", false, "x.cl"));
+  EXPECT_TRUE(p.spindle_rpm(1200, SpindleDir::kCw));
   p.rapid({22, 2});  // radius 22 -> X44.
   p.rapid({22, 0});  // only Z changes
   p.set_feed(0.2, FeedMode::kPerRev);
@@ -153,6 +154,66 @@ TEST(NcProgram, ThreadsPerInchWord) {
   p.rapid({5, 2});
   p.thread({5, -20}, l);
   EXPECT_EQ(out.out, "G0 X10. Z2.\nG33 Z-20. E13.\nG0 Z2.\nG33 Z-20. F1.954\n");
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// Issue 14: a template that cannot be written is never silence. Each template writer says why,
+// and the message names the machine and the template.
+TEST(NcProgramTemplates, EveryWriterReportsAMissingTemplate) {
+  Machine m;  // no templates at all
+  m.name = "bare";
+  StringSink out;
+  NcProgram p(m, out);
+  const TemplateWrite results[] = {p.start("P", false, "x.cl"),
+                                   p.end("P"),
+                                   p.tool_change(1, 1, ""),
+                                   p.spindle_rpm(100, SpindleDir::kCw),
+                                   p.spindle_css(200, 3000, SpindleDir::kCw),
+                                   p.spindle_stop(),
+                                   p.dwell(1.0, std::nullopt)};
+  const char* names[] = {"program_start", "program_end",  "tool_change", "spindle_rpm",
+                         "spindle_css",   "spindle_stop", "dwell"};
+  for (size_t i = 0; i < std::size(results); ++i) {
+    EXPECT_EQ(results[i].status, TemplateWrite::Status::kMissing) << names[i];
+    EXPECT_EQ(template_error(m, results[i]),
+              fmt::format("machine 'bare' has no template '{0}' (templates.{0} in its machine or "
+                          "post file)",
+                          names[i]));
+  }
+  EXPECT_EQ(out.out, "");
+}
+
+TEST(NcProgramTemplates, AValueTheCallerCannotKnowAndABadLine) {
+  Machine m;
+  m.name = "bare";
+  m.templates["dwell"] = {"G4 P{revolutions}"};
+  m.templates["spindle_rpm"] = {"S{rpm:d}"};  // the loader refuses this: 'd' is not for text
+  StringSink out;
+  NcProgram p(m, out);
+  TemplateWrite r = p.dwell(2.0, std::nullopt);
+  EXPECT_EQ(r.status, TemplateWrite::Status::kNoValue);
+  EXPECT_EQ(template_error(m, r),
+            "machine 'bare': template 'dwell' needs {revolutions}, which is not known here");
+  r = p.spindle_rpm(100, SpindleDir::kCw);
+  EXPECT_EQ(r.status, TemplateWrite::Status::kBadLine);
+  EXPECT_EQ(template_error(m, r),
+            "machine 'bare': template 'spindle_rpm' cannot be written: invalid type specifier");
+  EXPECT_EQ(out.out, "");
+}
+
+// `dwell: []` is the integrator's choice to write nothing: written, no block.
+TEST(NcProgramTemplates, AnEmptyTemplateWritesNothing) {
+  Machine m;
+  m.templates["dwell"] = {};
+  StringSink out;
+  NcProgram p(m, out);
+  EXPECT_EQ(p.dwell(1.0, 10.0).status, TemplateWrite::Status::kWritten);
+  EXPECT_EQ(out.out, "");
 }
 
 }  // namespace

@@ -1,0 +1,323 @@
+#include "machine/machine_schema.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <type_traits>
+
+#include "support/json_text.h"
+
+namespace clpost {
+namespace {
+
+using M = Machine;
+using enum KeyType;
+
+constexpr Choice kUnits[] = {{"mm", "mm"}, {"in", "in"}};
+constexpr Choice kAxes[] = {{"x"}, {"y"}, {"z"}};  // ClAxis order
+constexpr Choice kLineEndings[] = {{"lf", "\n"}, {"crlf", "\r\n"}};
+constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};  // ThreadStrategy order
+constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};   // ThreadFallback order
+constexpr Choice kCycles[] = {{"none"},     {"cycle99"},        {"fanuc_g76"},
+                              {"haas_g76"}, {"heidenhain_g31"}, {"linuxcnc_g76"}};  // ThreadCycle
+constexpr Choice kLoops[] = {{"g33"}, {"g92"}};           // ThreadLoop order
+constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};  // false, true
+
+constexpr const char* kId = "Identity";
+constexpr const char* kCl = "CL frame";
+constexpr const char* kOut = "Output";
+constexpr const char* kLim = "Limits";
+constexpr const char* kThr = "Threading";
+constexpr const char* kFacts = "Control facts";
+
+// Every key of a post or machine file (sections in docs order).
+const KeySpec kKeys[] = {
+    {"extends",
+     kId,
+     kString,
+     &M::post,
+     "the post (dialect) this machine builds on, from posts/; machine files only",
+     0,
+     0,
+     {},
+     true},
+    {"description", kId, kString, &M::description, "one line for `clpost machines`"},
+    {"units", kId, kChoice, &M::default_units, "CL units when the CL file has no UNITS statement",
+     0, 0, kUnits},
+    {"cl.radial_axis", kCl, kChoice, &M::cl_radial,
+     "the CL axis that holds the lathe's radial coordinate", 0, 0, kAxes},
+    {"cl.axial_axis", kCl, kChoice, &M::cl_axial, "the CL axis that holds the spindle axis", 0, 0,
+     kAxes},
+    {"cl.radial_is_diameter", kCl, kBool, &M::cl_x_is_diameter,
+     "CL radial values are diameters already"},
+    {"output.extension", kOut, kString, &M::extension,
+     "file extension of the NC program (batch mode names outputs with it)"},
+    {"output.line_ending", kOut, kChoice, &M::line_ending, "line ending of the NC program", 0, 0,
+     kLineEndings},
+    {"output.diameter", kOut, kBool, &M::diameter_output, "write X as a diameter"},
+    {"output.modal_codes", kOut, kBool, &M::modal_codes,
+     "leave out a G code that is already in force"},
+    {"output.modal_words", kOut, kBool, &M::modal_words,
+     "leave out an X, Z, F or S word that has not changed"},
+    {"output.program_number", kOut, kInt, &M::program_number,
+     "the `{program_number}` of the start and end templates", 0, 99999999},
+    {"comments.open", kOut, kString, &M::comment_open, "what opens a comment (`; ` for Siemens)"},
+    {"comments.close", kOut, kString, &M::comment_close,
+     "what closes a comment (empty for Siemens)"},
+    {"comments.upper_case", kOut, kBool, &M::comment_upper, "upper-case comment text"},
+    {"comments.forbidden", kOut, kString, &M::comment_forbidden,
+     "characters removed from comment text"},
+    {"block_numbers.enabled", kOut, kBool, &M::block_numbers, "number the blocks"},
+    {"block_numbers.address", kOut, kString, &M::block_address, "the block number's address"},
+    {"block_numbers.start", kOut, kInt, &M::block_start, "the first block number", 0, 99999999},
+    {"block_numbers.step", kOut, kInt, &M::block_step, "the step between block numbers", 1, 1000},
+    {"block_numbers.max", kOut, kInt, &M::block_max,
+     "the largest block number; numbering wraps to `start` after it", 1, 99999999},
+    {"block_numbers.skip", kOut, kList, &M::block_skip,
+     "blocks starting with one of these get no number"},
+    {"limits.max_rpm", kLim, kNumber, &M::max_rpm,
+     "a spindle speed above it is an error at the CL line; CSS writes it as the speed clamp (0: "
+     "none)",
+     0, 1e6},
+    {"limits.max_feed", kLim, kNumber, &M::max_feed,
+     "per minute, output units; a thread whose lead × rpm exceeds it is an error (0: none)", 0,
+     1e7},
+    {"limits.max_feed_x", kLim, kNumber, &M::max_feed_x,
+     "per minute along X (as a radius); a thread moving X faster is an error (0: max_feed)", 0,
+     1e7},
+    {"limits.max_feed_z", kLim, kNumber, &M::max_feed_z,
+     "per minute along Z; a thread moving Z faster is an error (0: max_feed)", 0, 1e7},
+    {"threading.strategy", kThr, kChoice, &M::thread_strategy,
+     "what to try first: the control's multi-pass cycle, its single-pass loop block, or plain "
+     "G1/G33 emulation",
+     0, 0, kStrategies},
+    {"threading.cycle", kThr, kChoice, &M::thread_cycle,
+     "which cycle `strategy: cycle` writes (it needs the template of that name)", 0, 0, kCycles},
+    {"threading.loop", kThr, kChoice, &M::thread_loop,
+     "the loop block: G33 chains (Siemens, NCT, LinuxCNC, Heidenhain) or Fanuc G92 (templates g92 "
+     "and g92_next)",
+     0, 0, kLoops},
+    {"threading.fallback", kThr, kChoice, &M::thread_fallback,
+     "what to write when the first choice would not cut the plan exactly", 0, 0, kFallbacks},
+    {"threading.tolerance", kThr, kNumber, &M::thread_tolerance,
+     "the largest difference between a cut the control makes and the planned one that still "
+     "counts as exact, CL units; 0 means one least increment of the Z format",
+     0, 1},
+    {"threading.extra_spring_passes", kThr, kBool, &M::extra_spring_passes,
+     "accept a cycle that adds full-depth passes the plan lacks (Fanuc's m ≥ 1); the NC says so "
+     "in a comment"},
+    {"threading.option", kThr, kInt, &M::default_option, "OPTION when the CL gives none", 0, 4},
+    {"threading.tool_angle", kThr, kNumber, &M::default_tool_angle,
+     "TLANGL when the CL gives none, degrees", 1e-9, 179.999999},
+    {"threading.lead_address", kThr, kString, &M::thread_lead_address,
+     "the lead word of a thread block (`K` for LinuxCNC and Siemens)"},
+    {"threading.lead_address_x", kThr, kString, &M::thread_lead_address_x,
+     "the lead word when the X travel dominates (Siemens `I`; empty: lead_address)"},
+    {"threading.tpi_address", kThr, kString, &M::tpi_address,
+     "a threads-per-inch word used when the CL gave TPI (NCT `E`; empty: none)"},
+    {"threading.start_angle_word", kThr, kBool, &M::start_angle_word,
+     "the thread block has a spindle start-angle word, so multi-start threads use it instead of "
+     "shifting the start"},
+    {"threading.start_angle_address", kThr, kString, &M::start_angle_address,
+     "that word (`SF=` on Siemens)"},
+    {"threading.variable_lead", kThr, kBool, &M::variable_lead,
+     "the control cuts INCR/DECR leads (G34/G35); otherwise such a CL thread is an error"},
+    {"threading.run_in", kThr, kNumber, &M::run_in,
+     "run-in written into cycle words that have one (CYCLE99 `APP`, G31 `B`)", 0, 1000},
+    {"threading.chamfer_angle", kFacts, kNumber, &M::chamfer_angle,
+     "the control's thread chamfer angle, degrees (Fanuc parameter 5131, Haas setting 96)", 1, 89},
+    {"threading.cycle_pass_end", kFacts, kChoice, &M::cycle_shifted_end,
+     "how a G76 with flank infeed ends its passes: `fixed`, every pass ends at the Z word "
+     "(Fanuc's figure); `shifted`, each pass moves as a whole (LinuxCNC) *(unverified for Fanuc)*",
+     0, 0, kPassEnds},
+    {"threading.accept_pass_end", kFacts, kBool, &M::accept_pass_end,
+     "with `fixed`, accept that shallower flank passes end at Z rather than where the plan ends "
+     "them; the NC says so in a comment"},
+    {"threading.haas_finish_allowance", kFacts, kNumber, &M::haas_finish_allowance,
+     "Haas setting 86 (finish allowance), machine units", 0, 10},
+    {"threading.haas_min_cut", kFacts, kNumber, &M::haas_min_cut,
+     "Haas setting 99 (minimum cut), machine units", 0, 10},
+    {"threading.haas_chamfer", kFacts, kNumber, &M::haas_chamfer,
+     "Haas setting 95 (chamfer size), in leads", 0, 99},
+};
+
+const FormatKeySpec kFormatKeys[] = {
+    {"decimals", kInt, &NumberFormat::decimals,
+     "digits after the point; the value is rounded to them", 0, 9},
+    {"trailing_zeros", kBool, &NumberFormat::trailing_zeros, "`1.500` rather than `1.5`"},
+    {"decimal_point", kBool, &NumberFormat::decimal_point,
+     "`12.` rather than `12` for whole numbers"},
+    {"leading_zero", kBool, &NumberFormat::leading_zero, "`0.5` rather than `.5`"},
+    {"scale", kNumber, &NumberFormat::scale,
+     "multiply before writing (1000: micrometres as integers, with `decimals: 0`)", 1e-6, 1e6},
+};
+
+const NameSpec kCodes[] = {
+    {"rapid", "rapid move (G0)", true},
+    {"linear", "feed move (G1)", true},
+    {"arc_cw", "clockwise arc (G2)", true},
+    {"arc_ccw", "counter-clockwise arc (G3)", true},
+    {"thread", "synchronized (thread) move (G33, G32)", true},
+    {"metric", "millimetre input (G21, G71): the start template's {units_code}", true},
+    {"inch", "inch input (G20, G70)", true},
+    {"spindle_cw", "spindle clockwise (M3): the spindle templates' {direction}", true},
+    {"spindle_ccw", "spindle counter-clockwise (M4)", true},
+    {"feed_per_min", "feed per minute (G94, G98)"},
+    {"feed_per_rev", "feed per revolution (G95, G99)"},
+    {"coolant_off", "COOLNT/OFF (M9)"},
+    {"coolant_flood", "COOLNT/FLOOD, ON (M8); a coolant the machine lacks becomes a comment"},
+    {"coolant_mist", "COOLNT/MIST (M7)"},
+    {"coolant_through", "COOLNT/THRU"},
+    {"coolant_air", "COOLNT/AIR"},
+    {"comp_off", "CUTCOM/OFF (G40)"},
+    {"comp_left", "CUTCOM/LEFT (G41)"},
+    {"comp_right", "CUTCOM/RIGHT (G42)"},
+    {"stop", "STOP (M0)"},
+    {"optional_stop", "OPSTOP (M1)"},
+    {"thread_increasing", "variable lead, increasing (G34)"},
+    {"thread_decreasing", "variable lead, decreasing (G35)"},
+    {"g31_h_minus", "HEIDENHAIN G31 flank offset H toward -Z (-X on a face); default 1"},
+    {"g31_h_plus", "HEIDENHAIN G31 flank offset H toward +Z; default 2"},
+    {"g31_h_alternating", "HEIDENHAIN G31 alternating flank offset H; default 3"},
+};
+
+const NameSpec kFormats[] = {
+    {"default", "every address without a format of its own"},
+    {"X", "X words: the radial coordinate (a diameter with output.diameter), cycle X words"},
+    {"Z", "Z words: the axial coordinate, cycle Z words"},
+    {"I", "arc centre along X (incremental, a radius); the X lead word (Siemens); Haas G76 taper"},
+    {"K", "arc centre along Z; the lead word K (LinuxCNC, Siemens); Haas G76 and G31 K"},
+    {"F", "feed, and the lead word F"},
+    {"S", "spindle speed, surface speed and speed limit"},
+    {"R", "Fanuc G76 / G92 taper"},
+    {"D", "Haas G76 first cut"},
+    {"E", "threads per inch (threading.tpi_address E)"},
+    {"Q", "start angle word Q"},
+    {"SF=", "SINUMERIK start angle word"},
+    {"U", "HEIDENHAIN G31 thread depth"},
+    {"A", "HEIDENHAIN G31 infeed angle"},
+    {"B", "HEIDENHAIN G31 run-in"},
+    {"C", "HEIDENHAIN G31 start angle"},
+    {"P", "HEIDENHAIN G31 run-out"},
+    {"dwell", "the dwell template's {seconds} and {revolutions}"},
+    {"thread_angle", "G92 / Haas G76 Q start angle (Fanuc: 0.001 degree, decimals 0, scale 1000)"},
+    {"g76_depth", "G76 depths (Fanuc P/Q in 0.001 mm; LinuxCNC I, J, K)"},
+    {"g76_depth_in", "Fanuc G76 depths of an inch program (0.0001 in)"},
+    {"g76_allowance", "Fanuc G76 finishing allowance R"},
+    {"g76_lead", "LinuxCNC G76 P (lead)"},
+    {"g76_angle", "LinuxCNC G76 Q (compound angle)"},
+    {"g76_taper", "LinuxCNC G76 E (taper length)"},
+    {"cycle99_depth", "CYCLE99 APP, ROP, TDEP, FAL, VRT"},
+    {"cycle99_angle", "CYCLE99 IANG, NSP"},
+    {"cycle99_lead", "CYCLE99 PIT"},
+};
+
+const TemplateSpec* const kTemplates[] = {
+    &tmpl::kProgramStart,  &tmpl::kProgramEnd,  &tmpl::kToolChange,
+    &tmpl::kSpindleRpm,    &tmpl::kSpindleCss,  &tmpl::kSpindleStop,
+    &tmpl::kDwell,         &tmpl::kCycle99,     &tmpl::kCycle96,
+    &tmpl::kFanucG76,      &tmpl::kHaasG76,     &tmpl::kG92,
+    &tmpl::kG92Next,       &tmpl::kLinuxcncG76, &tmpl::kLinuxcncG76Taper,
+    &tmpl::kHeidenhainG31,
+};
+
+template <typename T, typename N>
+const T* find_by(std::span<const T> list, std::string_view name, N T::*field) {
+  auto it = std::find_if(list.begin(), list.end(), [&](const T& t) { return t.*field == name; });
+  return it == list.end() ? nullptr : &*it;
+}
+
+std::string number_text(double v) {
+  return fmt::format("{}", v);
+}
+
+}  // namespace
+
+std::string text_list(const std::vector<std::string>& items) {
+  std::string s = "[";
+  for (const std::string& i : items) s += (s.size() > 1 ? ", " : "") + json_string(i);
+  return s + "]";
+}
+
+std::span<const KeySpec> machine_keys() {
+  return kKeys;
+}
+std::span<const FormatKeySpec> format_keys() {
+  return kFormatKeys;
+}
+std::span<const NameSpec> code_names() {
+  return kCodes;
+}
+std::span<const NameSpec> format_names() {
+  return kFormats;
+}
+std::span<const TemplateSpec* const> template_specs() {
+  return kTemplates;
+}
+
+const KeySpec* find_key(std::string_view path) {
+  return find_by(machine_keys(), path, &KeySpec::path);
+}
+const FormatKeySpec* find_format_key(std::string_view name) {
+  return find_by(format_keys(), name, &FormatKeySpec::name);
+}
+const NameSpec* find_code(std::string_view name) {
+  return find_by(code_names(), name, &NameSpec::name);
+}
+const NameSpec* find_format(std::string_view name) {
+  return find_by(format_names(), name, &NameSpec::name);
+}
+const TemplateSpec* find_template(std::string_view name) {
+  for (const TemplateSpec* t : kTemplates)
+    if (t->name == name) return t;
+  return nullptr;
+}
+
+bool template_required(const TemplateSpec& spec, const Machine& m) {
+  if (spec.need == Need::kAlways) return true;
+  if (spec.need != Need::kSetting) return false;
+  const KeySpec* k = find_key(spec.setting);
+  return k != nullptr && key_value_text(*k, m) == spec.choice;
+}
+
+std::string key_value_text(const KeySpec& k, const Machine& m) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        const auto& v = m.*member;
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, std::vector<std::string>>) {
+          return text_list(v);
+        } else if constexpr (std::is_same_v<V, std::string>) {
+          if (k.type != KeyType::kChoice) return v;
+          for (const Choice& c : k.choices)
+            if (c.stored == v) return std::string(c.name);
+          return v;
+        } else if constexpr (std::is_same_v<V, bool>) {
+          if (k.type == KeyType::kChoice) return std::string(k.choices[v ? 1 : 0].name);
+          return v ? "true" : "false";
+        } else if constexpr (std::is_same_v<V, double>) {
+          return number_text(v);
+        } else if constexpr (std::is_same_v<V, int>) {
+          return fmt::format("{}", v);
+        } else {  // an enum: the choice of its index
+          const size_t i = static_cast<size_t>(v);
+          return i < k.choices.size() ? std::string(k.choices[i].name) : std::string("?");
+        }
+      },
+      k.member);
+}
+
+std::string format_key_value_text(const FormatKeySpec& k, const NumberFormat& f) {
+  return std::visit(
+      [&](auto member) -> std::string {
+        const auto& v = f.*member;
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, bool>) return v ? "true" : "false";
+        if constexpr (std::is_same_v<V, double>) return number_text(v);
+        if constexpr (std::is_same_v<V, int>) return fmt::format("{}", v);
+        return {};
+      },
+      k.member);
+}
+
+}  // namespace clpost
