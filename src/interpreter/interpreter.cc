@@ -17,6 +17,49 @@ double axis_value(double x, double y, double z, ClAxis a) {
   return a == ClAxis::kX ? x : a == ClAxis::kY ? y : z;
 }
 
+// Records that carry nothing a lathe program needs: understood and skipped, noted once.
+constexpr std::string_view kSkipped[] = {"TLDATA",
+                                         "MSYS",
+                                         "PAINT",
+                                         "END-OF-PATH",
+                                         "MACHIN",
+                                         "CUTTER",
+                                         "SELECT",
+                                         "TRNTYP",
+                                         "CSYS",
+                                         "CNTRL",
+                                         "SETUP",
+                                         "CSI_SET_FLUTE_LENGTH",
+                                         "CSI_SET_EXTENSION_LENGTH",
+                                         "MFGNO",
+                                         "FEATNO",
+                                         "CLEARP",
+                                         "TOLER",
+                                         "INTOL",
+                                         "OUTTOL",
+                                         "DISPLY",
+                                         "AUTOPS",
+                                         "PLABEL",
+                                         "CALSUB",
+                                         "ORIGIN"};
+
+// The major words statement() acts on or skips: for these a statement the reader could not read
+// is an error (at its problem); any other word is unknown.
+bool known_major(std::string_view w) {
+  static constexpr std::string_view kActed[] = {
+      "GOTO",   "RAPID",  "FEDRAT", "FROM",   "GODLTA", "CIRCLE", "UNITS",     "UNIT",
+      "SPINDL", "LOADTL", "LOAD",   "TURRET", "COOLNT", "CUTCOM", "DELAY",     "PITCH",
+      "THREAD", "COUPLE", "OP",     "CYCLE",  "STOP",   "OPSTOP", "END",       "FINI",
+      "GOHOME", "MULTAX", "NURBS",  "KNOT",   "PARTNO", "PPRINT", "TOOL PATH", "INSERT"};
+  for (std::string_view k : kActed) {
+    if (w == k) return true;
+  }
+  for (std::string_view k : kSkipped) {
+    if (w == k) return true;
+  }
+  return false;
+}
+
 std::string upper_list(std::initializer_list<std::string_view> words) {
   std::string s;
   for (std::string_view w : words) s += (s.empty() ? "" : ", ") + std::string(w);
@@ -125,6 +168,14 @@ void Interpreter::statement(const Statement& st) {
     }
   }
 
+  // What the reader could not read (reader/statement.h): an error at its problem for a word this
+  // post knows, else an unknown statement. Modifier words (TLON,GOFWD/...) are not acted on yet.
+  if (st.has_problem()) {
+    if (known_major(w)) return error(st, st.problem.loc, st.problem.message);
+    return unknown(st);
+  }
+  if (!st.modifiers.empty()) return unknown(st);
+
   if (w == "GOTO") return goto_stmt(st);
   if (w == "RAPID") {
     rapid_next_ = true;
@@ -181,31 +232,6 @@ void Interpreter::statement(const Statement& st) {
       note_once(st, "MULTAX", "MULTAX/ON: tool axis vectors are ignored on a lathe");
     return;
   }
-  // Records that carry nothing a lathe program needs: understood and skipped, noted once.
-  static constexpr std::string_view kSkipped[] = {"TLDATA",
-                                                  "MSYS",
-                                                  "PAINT",
-                                                  "END-OF-PATH",
-                                                  "MACHIN",
-                                                  "CUTTER",
-                                                  "SELECT",
-                                                  "TRNTYP",
-                                                  "CSYS",
-                                                  "CNTRL",
-                                                  "SETUP",
-                                                  "CSI_SET_FLUTE_LENGTH",
-                                                  "CSI_SET_EXTENSION_LENGTH",
-                                                  "MFGNO",
-                                                  "FEATNO",
-                                                  "CLEARP",
-                                                  "TOLER",
-                                                  "INTOL",
-                                                  "OUTTOL",
-                                                  "DISPLY",
-                                                  "AUTOPS",
-                                                  "PLABEL",
-                                                  "CALSUB",
-                                                  "ORIGIN"};
   for (std::string_view s : kSkipped) {
     if (w == s) return skipped(st, "nothing a lathe program needs");
   }
@@ -225,7 +251,15 @@ void Interpreter::skipped(const Statement& st, std::string_view why) {
 
 void Interpreter::unknown(const Statement& st) {
   std::string text(st.major);
-  if (st.form == Statement::Form::kRecord) {
+  // As written when the arguments say more than their texts (quotes, nested definitions,
+  // modifier words) or could not be read.
+  const bool as_written = st.has_problem() || !st.modifiers.empty() ||
+                          std::any_of(st.args.begin(), st.args.end(), [](const Arg& a) {
+                            return a.is_text() || a.is_definition();
+                          });
+  if (as_written) {
+    text = st.source;
+  } else if (st.form == Statement::Form::kRecord) {
     text += '/';
     for (size_t i = 0; i < st.args.size(); ++i)
       text += (i ? "," : "") + std::string(st.args[i].text);
