@@ -45,7 +45,7 @@ struct Result {
 };
 
 inline OwnedArg own_arg(const Statement& s, const Arg& a) {
-  OwnedArg o{a.kind, std::string(a.text), a.number, a.loc, {}};
+  OwnedArg o{a.kind, std::string(a.text), a.is_definition() ? 0 : a.number, a.loc, {}};
   if (a.is_definition()) {
     for (const Arg& n : s.args_of(a)) o.nested.push_back(own_arg(s, n));
   }

@@ -370,8 +370,8 @@ bool StatementLexer::lex_definition(Statement& st, std::vector<Arg>& out, int de
   }
   ++pos_;  // ')'
   Arg def{Arg::Kind::kDefinition, name, 0, open};
-  def.first = static_cast<uint32_t>(st.nested.size());
-  def.count = static_cast<uint32_t>(scratch_.size() - base);
+  def.def = Arg::Span{static_cast<uint32_t>(st.nested.size()),
+                      static_cast<uint32_t>(scratch_.size() - base)};
   st.nested.insert(st.nested.end(), scratch_.begin() + static_cast<std::ptrdiff_t>(base),
                    scratch_.end());
   scratch_.resize(base);
