@@ -106,7 +106,8 @@ TEST(AptSource, ArithmeticProblemsAreAtTheirColumn) {
       "STOP/(INSTALL TEST STRIP)\n"
       "X/(1e300*1e300)\n"
       "X/((-8)**0.5)\n"
-      "X/(2 3)\n");
+      "X/(2 3)\n"
+      "X/(1e308 + 1e308)\n");
   EXPECT_EQ(dump(r),
             "1:1 R PITCH/ !1:9 division by zero [1+1]\n"
             "2:1 R PITCH/ !2:9 division by zero [2+1]\n"
@@ -114,7 +115,8 @@ TEST(AptSource, ArithmeticProblemsAreAtTheirColumn) {
             "4:1 R STOP/ !4:7 expected a number in the expression, found 'INSTALL' [4+1]\n"
             "5:1 R X/ !5:9 the result is out of range [5+1]\n"
             "6:1 R X/ !6:8 the result is not a number [6+1]\n"
-            "7:1 R X/ !7:6 expected an operator or ')' in the expression, found '3' [7+1]\n");
+            "7:1 R X/ !7:6 expected an operator or ')' in the expression, found '3' [7+1]\n"
+            "8:1 R X/ !8:10 the result is out of range [8+1]\n");
   EXPECT_EQ(r.diags, "");
 }
 

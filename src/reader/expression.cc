@@ -24,11 +24,12 @@ class Evaluator {
     for (;;) {
       const char op = peek();
       if (op != '+' && op != '-') return true;
+      const size_t at = i_;
       ++i_;
       double r = 0;
       if (!term(r, depth)) return false;
       v = op == '+' ? v + r : v - r;
-      if (!finite(v, i_)) return false;
+      if (!finite(v, at)) return false;
     }
   }
 
