@@ -256,5 +256,36 @@ TEST(AptSource, PartProgramDefinitionsAreDeliveredWithAProblem) {
   EXPECT_EQ(r.st[0].source, "p1=point/22,-3.0,0");
 }
 
+
+// ---- the CATIA+ICAM thread of issue 15, as the ICAM table writes it -------------------------
+
+TEST(AptSource, CatiaIcamThread) {
+  Result r = read(
+      "PPFUN/15,1318046,OFF\n"
+      "SYN/'TLAXIS','$$*TLAXIS'\n"
+      "PPRINT TOOL: Thread Tool.1\n"
+      "TURRET/7,OSETNO,7,SETOOL,0.0,0.0,0.0\n"
+      "PITCH/(1/2.5),MULTRD,1\n"
+      "DNTCUT\n"
+      "GODLTA/1,0,0\n"
+      "THREAD/ON,DEPTH,1.534,CUTS,5,CUTANG,180,FINCUT,1,$\n"
+      "\tATANGL,30,1.5,TLANGL,60,OPTION,1\n"
+      "THREAD/OFF\n");
+  EXPECT_EQ(dump(r),
+            "1:1 R PPFUN/N:15=15@1:7,N:1318046=1318046@1:10,W:OFF@1:18 [1+1]\n"
+            "2:1 R SYN/T:'TLAXIS'@2:5,T:'$$*TLAXIS'@2:14 [2+1]\n"
+            "3:1 T PPRINT 'TOOL: Thread Tool.1' [3+1]\n"
+            "4:1 R TURRET/N:7=7@4:8,W:OSETNO@4:10,N:7=7@4:17,W:SETOOL@4:19,N:0.0=0@4:26,"
+            "N:0.0=0@4:30,N:0.0=0@4:34 [4+1]\n"
+            "5:1 R PITCH/N:(1/2.5)=0.40000000000000002@5:7,W:MULTRD@5:15,N:1=1@5:22 [5+1]\n"
+            "6:1 B DNTCUT [6+1]\n"
+            "7:1 R GODLTA/N:1=1@7:8,N:0=0@7:10,N:0=0@7:12 [7+1]\n"
+            "8:1 R THREAD/W:ON@8:8,W:DEPTH@8:11,N:1.534=1.534@8:17,W:CUTS@8:23,N:5=5@8:28,"
+            "W:CUTANG@8:30,N:180=180@8:37,W:FINCUT@8:41,N:1=1@8:48,W:ATANGL@9:2,N:30=30@9:9,"
+            "N:1.5=1.5@9:12,W:TLANGL@9:16,N:60=60@9:23,W:OPTION@9:26,N:1=1@9:33 [8+2]\n"
+            "10:1 R THREAD/W:OFF@10:8 [10+1]\n");
+  EXPECT_EQ(r.diags, "");
+}
+
 }  // namespace
 }  // namespace clpost
