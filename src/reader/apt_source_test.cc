@@ -256,7 +256,6 @@ TEST(AptSource, PartProgramDefinitionsAreDeliveredWithAProblem) {
   EXPECT_EQ(r.st[0].source, "p1=point/22,-3.0,0");
 }
 
-
 // ---- the CATIA+ICAM thread of issue 15, as the ICAM table writes it -------------------------
 
 TEST(AptSource, CatiaIcamThread) {

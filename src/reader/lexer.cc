@@ -249,7 +249,7 @@ bool StatementLexer::modifiers(Statement& st, size_t after_comma) {
     if (src_[p] != ',') return false;
     ++p;
   }
-  st.modifiers.push_back(Arg{Arg::Kind::kWord, st.major, 0, st.loc});
+  st.modifiers.push_back(Arg{Arg::Kind::kWord, st.major, {0}, st.loc});
   pos_ = after_comma;
   for (size_t k = 0; k < words; ++k) {
     at_end();
@@ -261,7 +261,7 @@ bool StatementLexer::modifiers(Statement& st, size_t after_comma) {
       st.major = w;
       st.loc = at;
     } else {
-      st.modifiers.push_back(Arg{Arg::Kind::kWord, w, 0, at});
+      st.modifiers.push_back(Arg{Arg::Kind::kWord, w, {0}, at});
     }
     at_end();
     ++pos_;  // the ',' or, after the last word, the '/'
@@ -276,7 +276,7 @@ bool StatementLexer::lex_args(Statement& st, std::vector<Arg>& out, int depth) {
   if (closed()) return true;
   for (;;) {
     if (closed() || cur() == ',') {
-      out.push_back(Arg{Arg::Kind::kEmpty, {}, 0, loc()});
+      out.push_back(Arg{Arg::Kind::kEmpty, {}, {0}, loc()});
     } else if (cur() == '/' || cur() == ')') {
       break;
     } else if (!lex_arg(st, out, depth)) {
@@ -299,7 +299,7 @@ bool StatementLexer::lex_arg(Statement& st, std::vector<Arg>& out, int depth) {
     if (end == std::string_view::npos) {
       return problem(st, at, std::string("missing the closing ") + c0 + " of this text");
     }
-    out.push_back(Arg{Arg::Kind::kText, src_.substr(pos_ + 1, end - pos_ - 1), 0, at});
+    out.push_back(Arg{Arg::Kind::kText, src_.substr(pos_ + 1, end - pos_ - 1), {0}, at});
     pos_ = end + 1;
     return true;
   }
@@ -320,7 +320,7 @@ bool StatementLexer::lex_arg(Statement& st, std::vector<Arg>& out, int depth) {
       }
     }
     pos_ += tok.size();
-    out.push_back(Arg{Arg::Kind::kWord, add_upper(tok), 0, at});
+    out.push_back(Arg{Arg::Kind::kWord, add_upper(tok), {0}, at});
     return true;
   }
   if (is_digit(c0) || c0 == '+' || c0 == '-' || c0 == '.') {
@@ -328,7 +328,7 @@ bool StatementLexer::lex_arg(Statement& st, std::vector<Arg>& out, int depth) {
     switch (parse_number(tok, value)) {
       case NumberStatus::kOk:
         pos_ += tok.size();
-        out.push_back(Arg{Arg::Kind::kNumber, tok, value, at});
+        out.push_back(Arg{Arg::Kind::kNumber, tok, {value}, at});
         return true;
       case NumberStatus::kOutOfRange:
         return problem(st, at, "number " + quoted(tok) + " is out of range");
@@ -369,7 +369,7 @@ bool StatementLexer::lex_definition(Statement& st, std::vector<Arg>& out, int de
     return problem(st, open, "missing ')' to close (" + std::string(name) + "/");
   }
   ++pos_;  // ')'
-  Arg def{Arg::Kind::kDefinition, name, 0, open};
+  Arg def{Arg::Kind::kDefinition, name, {0}, open};
   def.def = Arg::Span{static_cast<uint32_t>(st.nested.size()),
                       static_cast<uint32_t>(scratch_.size() - base)};
   st.nested.insert(st.nested.end(), scratch_.begin() + static_cast<std::ptrdiff_t>(base),
@@ -385,7 +385,7 @@ bool StatementLexer::lex_expression(Statement& st, std::vector<Arg>& out) {
   double value = 0;
   ExprError e;
   if (!eval_expression(src_, pos_, value, e)) return problem(st, loc_at(e.at), e.message);
-  out.push_back(Arg{Arg::Kind::kNumber, src_.substr(start, pos_ - start), value, at});
+  out.push_back(Arg{Arg::Kind::kNumber, src_.substr(start, pos_ - start), {value}, at});
   return true;
 }
 

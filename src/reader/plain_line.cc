@@ -76,12 +76,12 @@ bool lex_plain_line(std::string_view input, uint32_t line_no, Statement& st, Pla
         ++p;
         while (is_major_tail(*p) || *p == '.') ++p;
         st.args.push_back(
-            Arg{Arg::Kind::kWord, std::string_view(tok, static_cast<size_t>(p - tok)), 0, at});
+            Arg{Arg::Kind::kWord, std::string_view(tok, static_cast<size_t>(p - tok)), {0}, at});
       } else {
         double value = 0;
         if (!plain_number(p, value)) return false;
-        st.args.push_back(Arg{Arg::Kind::kNumber,
-                              std::string_view(tok, static_cast<size_t>(p - tok)), value, at});
+        st.args.push_back(Arg{
+            Arg::Kind::kNumber, std::string_view(tok, static_cast<size_t>(p - tok)), {value}, at});
       }
       if (*p != ',') break;
       ++p;
