@@ -456,6 +456,21 @@ TEST(ClReader, EndlessContinuation) {
   EXPECT_EQ(dump(r), "400003:1 B FINI [400003+1]\n");
 }
 
+TEST(ClReader, HundredsOfThousandsOfContinuationLines) {
+  // Just under the statement limit: 260 000 lines of `1,$`, each argument located on its line.
+  std::string text = "GOTO/$\n";
+  for (int i = 0; i < 260000; ++i) text += "1,$\n";
+  text += "2\nFINI\n";
+  Result r = read(text);
+  EXPECT_EQ(r.diags, "");
+  ASSERT_EQ(r.st.size(), 2u);
+  ASSERT_EQ(r.st[0].args.size(), 260001u);
+  EXPECT_EQ(at(r.st[0].args[0].loc), "@2:1");
+  EXPECT_EQ(at(r.st[0].args[259999].loc), "@260001:1");
+  EXPECT_EQ(at(r.st[0].args[260000].loc), "@260002:1");
+  EXPECT_EQ(r.st[1].major, "FINI");
+}
+
 TEST(ClReader, TenMegabyteLine) {
   std::string text = "GOTO/1\nGOTO/" + std::string(10 << 20, '5') + "\nFINI";
   Result r = read(text);

@@ -1,5 +1,6 @@
 #include "reader/lexer.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "reader/continuation.h"
@@ -122,10 +123,12 @@ void StatementLexer::join(const Statement& st, bool text) {
 }
 
 SourceLoc StatementLexer::loc_at(size_t pos) const {
-  size_t k = pieces_.size() - 1;
-  while (k > 0 && pieces_[k].offset > pos) --k;
-  return SourceLoc{first_line_ + pieces_[k].line,
-                   static_cast<uint32_t>(pos - pieces_[k].offset + 1)};
+  // The last piece that starts at or before `pos` (a binary search: a statement may have
+  // hundreds of thousands of continuation lines).
+  auto it = std::upper_bound(pieces_.begin() + 1, pieces_.end(), pos,
+                             [](size_t p, const Piece& piece) { return p < piece.offset; });
+  const Piece& piece = *(it - 1);
+  return SourceLoc{first_line_ + piece.line, static_cast<uint32_t>(pos - piece.offset + 1)};
 }
 
 std::string_view StatementLexer::add_upper(std::string_view text) {
