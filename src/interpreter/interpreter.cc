@@ -169,12 +169,20 @@ void Interpreter::statement(const Statement& st) {
   }
 
   // What the reader could not read (reader/statement.h): an error at its problem for a word this
-  // post knows, else an unknown statement. Modifier words (TLON,GOFWD/...) are not acted on yet.
-  if (st.has_problem()) {
-    if (known_major(w)) return error(st, st.problem.loc, st.problem.message);
-    return unknown(st);
+  // post knows, else an unknown statement.
+  if (st.has_problem() && known_major(w)) return error(st, st.problem.loc, st.problem.message);
+  // Words before the major word (TLON,GOFWD/..., RAPID,GOTO/...) are APT motion: not acted on
+  // yet, and a motion must not become a comment.
+  if (!st.modifiers.empty()) {
+    std::string head;
+    for (const Arg& m : st.modifiers) head += std::string(m.text) + ',';
+    return error(st, st.modifiers[0].loc,
+                 fmt::format("{}{}/: words before the major word (APT motion modifiers) are not "
+                             "supported; the statement may move the tool, so it cannot be left "
+                             "out",
+                             head, w));
   }
-  if (!st.modifiers.empty()) return unknown(st);
+  if (st.has_problem()) return unknown(st);
 
   if (w == "GOTO") return goto_stmt(st);
   if (w == "RAPID") {

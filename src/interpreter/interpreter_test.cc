@@ -596,15 +596,31 @@ TEST(Interpreter, KnownWordsWithUnreadableArgumentsAreErrorsAtTheirColumn) {
             "        ^\n");
 }
 
-TEST(Interpreter, ModifierWordsAndNestedDefinitionsAreNotActedOnYet) {
-  Posted p =
-      post("TLON,GOFWD/(CIRCLE/25,0,-30,4.6),ON,(LINE/25,0,-30,25,0,-25.4)\nFINI\n", generic());
-  EXPECT_EQ(p.nc, std::string(kHeader) +
-                      "(TLON,GOFWD/CIRCLE/25,0,-30,4.6,ON,LINE/25,0,-30,25,0,-25.4)\nM30\n%\n");
+TEST(Interpreter, ModifierWordsAreRefusedNotDropped) {
+  Posted p = post(
+      "TLON,GOFWD/(CIRCLE/25,0,-30,4.6),ON,(LINE/25,0,-30,25,0,-25.4)\n"
+      "RAPID, GOTO/1,0,0\n"
+      "FINI\n",
+      generic());
+  EXPECT_EQ(p.errors, 2u);
   EXPECT_EQ(p.diags,
-            "t.cl:1:6: warning: unknown statement 'GOFWD' written as a comment\n"
+            "t.cl:1:1: error: TLON,GOFWD/: words before the major word (APT motion modifiers) "
+            "are not supported; the statement may move the tool, so it cannot be left out\n"
             "  TLON,GOFWD/(CIRCLE/25,0,-30,4.6),ON,(LINE/25,0,-30,25,0,-25.4)\n"
-            "       ^\n");
+            "  ^\n"
+            "t.cl:2:1: error: RAPID,GOTO/: words before the major word (APT motion modifiers) "
+            "are not supported; the statement may move the tool, so it cannot be left out\n"
+            "  RAPID, GOTO/1,0,0\n"
+            "  ^\n");
+}
+
+TEST(Interpreter, UnknownWordsWithNestedDefinitionsAreCommentsAsWritten) {
+  Posted p = post("PSIS/(PLANE/(POINT/2,0,2),PERPTO,(VECTOR/0,1,0))\nFINI\n", generic());
+  EXPECT_EQ(p.nc, std::string(kHeader) + "(PSIS/PLANE/POINT/2,0,2,PERPTO,VECTOR/0,1,0)\nM30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: warning: unknown statement 'PSIS' written as a comment\n"
+            "  PSIS/(PLANE/(POINT/2,0,2),PERPTO,(VECTOR/0,1,0))\n"
+            "  ^\n");
 }
 
 }  // namespace
