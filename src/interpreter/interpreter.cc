@@ -60,6 +60,16 @@ bool known_major(std::string_view w) {
   return false;
 }
 
+// Out of line: the plain statement path keeps no string of it.
+[[gnu::noinline, gnu::cold]] std::string modifiers_refused(const Statement& st) {
+  std::string head;
+  for (const Arg& m : st.modifiers) head += std::string(m.text) + ',';
+  return fmt::format(
+      "{}{}/: words before the major word (APT motion modifiers) are not supported; the "
+      "statement may move the tool, so it cannot be left out",
+      head, st.major);
+}
+
 std::string upper_list(std::initializer_list<std::string_view> words) {
   std::string s;
   for (std::string_view w : words) s += (s.empty() ? "" : ", ") + std::string(w);
@@ -169,20 +179,13 @@ void Interpreter::statement(const Statement& st) {
   }
 
   // What the reader could not read (reader/statement.h): an error at its problem for a word this
-  // post knows, else an unknown statement.
-  if (st.has_problem() && known_major(w)) return error(st, st.problem.loc, st.problem.message);
-  // Words before the major word (TLON,GOFWD/..., RAPID,GOTO/...) are APT motion: not acted on
-  // yet, and a motion must not become a comment.
-  if (!st.modifiers.empty()) {
-    std::string head;
-    for (const Arg& m : st.modifiers) head += std::string(m.text) + ',';
-    return error(st, st.modifiers[0].loc,
-                 fmt::format("{}{}/: words before the major word (APT motion modifiers) are not "
-                             "supported; the statement may move the tool, so it cannot be left "
-                             "out",
-                             head, w));
+  // post knows, else an unknown statement. Words before the major word (TLON,GOFWD/...,
+  // RAPID,GOTO/...) are APT motion: not acted on yet, and a motion must not become a comment.
+  if (st.has_problem() || !st.modifiers.empty()) [[unlikely]] {
+    if (st.has_problem() && known_major(w)) return error(st, st.problem.loc, st.problem.message);
+    if (st.modifiers.empty()) return unknown(st);
+    return error(st, st.modifiers[0].loc, modifiers_refused(st));
   }
-  if (st.has_problem()) return unknown(st);
 
   if (w == "GOTO") return goto_stmt(st);
   if (w == "RAPID") {
