@@ -293,7 +293,7 @@ TEST(Batch, ReportJson) {
           "    {\"input\": \"" +
           t.in +
           "/b-bad.cl\", \"output\": null, \"status\": \"error\", "
-          "\"errors\": 1, \"warnings\": 0, \"statements\": 7, \"motions\": 1, \"threads\": 0, "
+          "\"errors\": 1, \"warnings\": 0, \"statements\": 8, \"motions\": 1, \"threads\": 0, "
           "\"passes\": 0, \"bytes_in\": " +
           n(b) +
           ", \"bytes_out\": 0, \"seconds\": T, "

@@ -19,10 +19,15 @@ void Interpreter::statement(const Statement& st) {
     if (st.major != "FINI") note_once(s, st, "after-fini", "statements after FINI are ignored");
     return;
   }
-  // The common case first: a GOTO outside a thread sequence.
-  if (st.major == "GOTO" && s.thread.kind == ThreadSequence::Kind::kNone) return goto_stmt(s, st);
+  // The common case first: a plain GOTO outside a thread sequence.
+  if (st.major == "GOTO" && s.thread.kind == ThreadSequence::Kind::kNone && !st.has_problem() &&
+      st.modifiers.empty())
+    return goto_stmt(s, st);
   if (s.thread.kind != ThreadSequence::Kind::kNone && !sequence_accepts(s, st)) return;
-  if (const StatementEntry* e = find_statement(st.major)) return e->handler(s, st);
+  const StatementEntry* e = find_statement(st.major);
+  if (st.has_problem() || !st.modifiers.empty()) [[unlikely]]
+    return odd_statement(s, st, e != nullptr);
+  if (e) return e->handler(s, st);
   unknown_stmt(s, st);
 }
 

@@ -524,6 +524,88 @@ TEST(OddInput, MillionsOfErrorsKeepMemoryBounded) {
   EXPECT_EQ(r.diags.substr(r.diags.size() - last.size()), last);
 }
 
+// ---- statements the reader could not read (reader/statement.h, Statement::problem) ----------
+
+TEST(Interpreter, UnknownWordsWithUnreadableArgumentsBecomeComments) {
+  Posted p = post(
+      "PART_OPE/Phase d'usinage.1\n"
+      "OP_NAME/FIN RAYON - G2\n"
+      "OPDATA/ACCURACY, 0.001,TYPE,Finition de $\n"
+      "profil,MMPR\n"
+      "FINI\n",
+      generic());
+  EXPECT_EQ(p.errors, 0u);
+  EXPECT_EQ(p.nc, std::string(kHeader) +
+                      "(PART_OPE/Phase d'usinage.1)\n"
+                      "(OP_NAME/FIN RAYON - G2)\n"
+                      "(OPDATA/ACCURACY, 0.001,TYPE,Finition de profil,MMPR)\n"
+                      "M30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: warning: unknown statement 'PART_OPE' written as a comment\n"
+            "  PART_OPE/Phase d'usinage.1\n"
+            "  ^\n"
+            "t.cl:2:1: warning: unknown statement 'OP_NAME' written as a comment\n"
+            "  OP_NAME/FIN RAYON - G2\n"
+            "  ^\n"
+            "t.cl:3:1: warning: unknown statement 'OPDATA' written as a comment\n"
+            "  OPDATA/ACCURACY, 0.001,TYPE,Finition de $\n"
+            "  ^\n");
+}
+
+TEST(Interpreter, UnknownWordsWithUnreadableArgumentsAreErrorsWhenStrict) {
+  PostOptions strict;
+  strict.strict = true;
+  Posted p = post("OP_NAME/FIN RAYON - G2\nFINI\n", generic(), strict);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: error: unknown statement 'OP_NAME' (--strict)\n"
+            "  OP_NAME/FIN RAYON - G2\n"
+            "  ^\n");
+}
+
+TEST(Interpreter, KnownWordsWithUnreadableArgumentsAreErrorsAtTheirColumn) {
+  Posted p = post("GOTO/10,0,-1.2.3\nPITCH/(1/0)\nSPINDL/500 RPM\nINTOL/(0.1\nFINI\n", generic());
+  EXPECT_EQ(p.diags,
+            "t.cl:1:11: error: invalid number '-1.2.3'\n"
+            "  GOTO/10,0,-1.2.3\n"
+            "            ^\n"
+            "t.cl:2:9: error: division by zero\n"
+            "  PITCH/(1/0)\n"
+            "          ^\n"
+            "t.cl:3:12: error: missing ',' before 'RPM'\n"
+            "  SPINDL/500 RPM\n"
+            "             ^\n"
+            "t.cl:4:7: error: missing ')' to close this '('\n"
+            "  INTOL/(0.1\n"
+            "        ^\n");
+}
+
+TEST(Interpreter, ModifierWordsAreRefusedNotDropped) {
+  Posted p = post(
+      "TLON,GOFWD/(CIRCLE/25,0,-30,4.6),ON,(LINE/25,0,-30,25,0,-25.4)\n"
+      "RAPID, GOTO/1,0,0\n"
+      "FINI\n",
+      generic());
+  EXPECT_EQ(p.errors, 2u);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: error: TLON,GOFWD/: words before the major word (APT motion modifiers) "
+            "are not supported; the statement may move the tool, so it cannot be left out\n"
+            "  TLON,GOFWD/(CIRCLE/25,0,-30,4.6),ON,(LINE/25,0,-30,25,0,-25.4)\n"
+            "  ^\n"
+            "t.cl:2:1: error: RAPID,GOTO/: words before the major word (APT motion modifiers) "
+            "are not supported; the statement may move the tool, so it cannot be left out\n"
+            "  RAPID, GOTO/1,0,0\n"
+            "  ^\n");
+}
+
+TEST(Interpreter, UnknownWordsWithNestedDefinitionsAreCommentsAsWritten) {
+  Posted p = post("PSIS/(PLANE/(POINT/2,0,2),PERPTO,(VECTOR/0,1,0))\nFINI\n", generic());
+  EXPECT_EQ(p.nc, std::string(kHeader) + "(PSIS/PLANE/POINT/2,0,2,PERPTO,VECTOR/0,1,0)\nM30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: warning: unknown statement 'PSIS' written as a comment\n"
+            "  PSIS/(PLANE/(POINT/2,0,2),PERPTO,(VECTOR/0,1,0))\n"
+            "  ^\n");
+}
+
 }  // namespace
 }  // namespace clpost
 

@@ -58,6 +58,9 @@ void undercut_stmt(PostState& s, const Statement& st);  // CYCLE/UNDCUT (undercu
 
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);
+// A statement the reader could not read (Statement::problem) or with words before its major word
+// (APT's `TLON,GOFWD/…`): an error for a `known` word or a modifier, else unknown_stmt.
+void odd_statement(PostState& s, const Statement& st, bool known);
 
 // Thread sequences (thread_statements.cc). A GOTO's point while a sequence is open.
 void thread_goto(PostState& s, const Statement& st, Point3 p);

@@ -1,6 +1,8 @@
 // Text statements (PARTNO, PPRINT, INSERT), NX's TOOL PATH header, and unknown statements.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -38,7 +40,15 @@ void unknown_stmt(PostState& s, const Statement& st) {
     return;
   }
   std::string text(st.major);
-  if (st.form == Statement::Form::kRecord) {
+  // As written when the arguments say more than their texts (quotes, nested definitions,
+  // modifier words) or could not be read.
+  const bool as_written = st.has_problem() || !st.modifiers.empty() ||
+                          std::any_of(st.args.begin(), st.args.end(), [](const Arg& a) {
+                            return a.is_text() || a.is_definition();
+                          });
+  if (as_written) {
+    text = st.source;
+  } else if (st.form == Statement::Form::kRecord) {
     text += '/';
     for (size_t i = 0; i < st.args.size(); ++i)
       text += (i ? "," : "") + std::string(st.args[i].text);
@@ -48,6 +58,17 @@ void unknown_stmt(PostState& s, const Statement& st) {
   warning(s, st, st.loc, fmt::format("unknown statement '{}' written as a comment", st.major));
   ensure_started(s);
   s.prog.comment(text);
+}
+
+void odd_statement(PostState& s, const Statement& st, bool known) {
+  if (st.has_problem() && known) return error(s, st, st.problem.loc, st.problem.message);
+  if (st.modifiers.empty()) return unknown_stmt(s, st);
+  std::string head;
+  for (const Arg& m : st.modifiers) head += std::string(m.text) + ',';
+  error(s, st, st.modifiers[0].loc,
+        fmt::format("{}{}/: words before the major word (APT motion modifiers) are not supported; "
+                    "the statement may move the tool, so it cannot be left out",
+                    head, st.major));
 }
 
 }  // namespace clpost

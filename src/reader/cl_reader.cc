@@ -40,9 +40,9 @@ struct ClReader::Impl {
   Impl(std::string_view text, Diagnostics& d) : src(text), diags(d) {}
 
   bool next(Statement& out);
-  bool read_continuations(const LineSource::Line& first, bool continues);
+  bool read_continuations(const LineSource::Line& first, bool continues, bool is_text);
   void skip_comment(bool continues);
-  void skip_statement(bool continues);
+  void skip_statement(bool continues, bool is_text);
   void skip_header(const LineSource::Line& info);
   void too_long(const LineSource::Line& first);
   void error(SourceLoc loc, std::string_view line, std::string message);
@@ -122,16 +122,20 @@ bool ClReader::Impl::next(Statement& out) {
     if (reader::is_blank_line(text) || is_nx_trailer(text)) continue;
 
     out.first_line = first.number;
-    if (StatementLexer::is_text_statement(text)) {
-      out.lines.assign(1, text);
+    const bool is_text = StatementLexer::is_text_statement(text);
+    bool continues = false;
+    if (is_text) {
+      continues = reader::comment_continues(text);
+    } else {
+      reader::code_part(text, &continues);
+    }
+    if (!read_continuations(first, continues, is_text)) continue;
+    out.lines.clear();
+    for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
+    if (is_text) {
       lexer.lex_text(out);
       return true;
     }
-    bool continues = false;
-    reader::code_part(text, &continues);
-    if (!read_continuations(first, continues)) continue;
-    out.lines.clear();
-    for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
     StatementLexer::Error err;
     switch (lexer.lex_code(out, err)) {
       case StatementLexer::Result::kOk:
@@ -148,7 +152,8 @@ bool ClReader::Impl::next(Statement& out) {
 
 // Collects the statement's lines in `lines`. False when it cannot be used (too long, input
 // failed), already reported.
-bool ClReader::Impl::read_continuations(const LineSource::Line& first, bool continues) {
+bool ClReader::Impl::read_continuations(const LineSource::Line& first, bool continues,
+                                        bool is_text) {
   lines.clear();
   lines.push_back(first);
   size_t used = first.size;
@@ -166,7 +171,11 @@ bool ClReader::Impl::read_continuations(const LineSource::Line& first, bool cont
     }
     lines.push_back(l);
     used += l.size;
-    reader::code_part(src.text(l), &continues);
+    if (is_text) {
+      continues = reader::comment_continues(src.text(l));
+    } else {
+      reader::code_part(src.text(l), &continues);
+    }
   }
   return true;
 }
@@ -178,11 +187,11 @@ void ClReader::Impl::too_long(const LineSource::Line& first) {
   error(SourceLoc{first.number, first_column(text)}, text,
         fmt::format("statement too long (more than {} bytes)", kMaxStatementBytes));
   const bool is_text = StatementLexer::is_text_statement(text);
-  const bool continues = src.skip_line().code_continues();
-  skip_statement(continues && !is_text);
+  const reader::LineTail tail = src.skip_line();
+  skip_statement(is_text ? tail.comment_continues() : tail.code_continues(), is_text);
 }
 
-void ClReader::Impl::skip_statement(bool continues) {
+void ClReader::Impl::skip_statement(bool continues, bool is_text) {
   while (continues && !done) {
     src.mark();
     LineSource::Line l;
@@ -190,7 +199,8 @@ void ClReader::Impl::skip_statement(bool continues) {
     if (s == Status::kEnd) return;
     if (s == Status::kLine) return;  // an empty line ends the statement
     if (s != Status::kTooLong) return fail(s);
-    continues = src.skip_line().code_continues();
+    const reader::LineTail tail = src.skip_line();
+    continues = is_text ? tail.comment_continues() : tail.code_continues();
   }
 }
 

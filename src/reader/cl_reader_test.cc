@@ -6,114 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "reader/cl_reader_test_util.h"
+
 namespace clpost {
 namespace {
 
-using Form = Statement::Form;
-using Kind = Arg::Kind;
-
-// Owned copies of what the reader delivered (its views die at the next call).
-struct OwnedArg {
-  Kind kind;
-  std::string text;
-  double number;
-  SourceLoc loc;
-};
-struct Owned {
-  Form form;
-  std::string major;
-  SourceLoc loc;
-  std::vector<OwnedArg> args;
-  std::string text;
-  uint32_t first_line;
-  std::vector<std::string> lines;
-};
-struct Result {
-  std::vector<Owned> st;
-  std::string diags;  // Diagnostics::render_all()
-  size_t errors = 0;
-  size_t bytes = 0;
-  uint32_t line = 0;
-};
-
-Owned own(const Statement& s) {
-  Owned o{s.form, std::string(s.major), s.loc, {}, std::string(s.text), s.first_line, {}};
-  for (const Arg& a : s.args) o.args.push_back({a.kind, std::string(a.text), a.number, a.loc});
-  for (std::string_view l : s.lines) o.lines.emplace_back(l);
-  return o;
-}
-
-Result read_all(ClReader& reader, Diagnostics& diags) {
-  Result r;
-  Statement s;
-  while (reader.next(s)) r.st.push_back(own(s));
-  EXPECT_FALSE(reader.next(s));  // stays at the end
-  r.diags = diags.render_all();
-  r.errors = diags.error_count();
-  r.bytes = reader.bytes_read();
-  r.line = reader.line();
-  return r;
-}
-
-// One line per statement: "line:col FORM MAJOR/args 'text'", arguments as
-// "W:TEXT@line:col" or "N:text=value@line:col".
-std::string dump(const Result& r) {
-  std::string out;
-  char buf[64];
-  for (const Owned& s : r.st) {
-    out += std::to_string(s.loc.line) + ":" + std::to_string(s.loc.col) + " ";
-    out += s.form == Form::kRecord ? "R " : s.form == Form::kBare ? "B " : "T ";
-    out += s.major;
-    if (s.form == Form::kRecord) out += "/";
-    for (size_t i = 0; i < s.args.size(); ++i) {
-      const OwnedArg& a = s.args[i];
-      if (i > 0) out += ",";
-      if (a.kind == Kind::kWord) {
-        out += "W:" + a.text;
-      } else {
-        std::snprintf(buf, sizeof buf, "=%.17g", a.number);
-        out += "N:" + a.text + buf;
-      }
-      // Piece by piece: `"@" + std::to_string(...)` trips GCC 12's false -Wrestrict at -O3.
-      out += '@';
-      out += std::to_string(a.loc.line);
-      out += ':';
-      out += std::to_string(a.loc.col);
-    }
-    if (s.form == Form::kText) out += " '" + s.text + "'";
-    out += " [" + std::to_string(s.first_line) + "+" + std::to_string(s.lines.size()) + "]\n";
-  }
-  return out;
-}
-
-Result read_memory(std::string_view text) {
-  Diagnostics diags("t.cl");
-  ClReader reader(text, diags);
-  return read_all(reader, diags);
-}
-
-Result read_file(const std::string& text) {
-  std::FILE* f = std::tmpfile();
-  EXPECT_NE(f, nullptr);
-  EXPECT_EQ(std::fwrite(text.data(), 1, text.size(), f), text.size());
-  std::rewind(f);
-  Diagnostics diags("t.cl");
-  ClReader reader(f, diags);
-  Result r = read_all(reader, diags);
-  std::fclose(f);
-  return r;
-}
-
-// Reads `text` from memory and through a FILE*; both must give the same result.
-Result read(const std::string& text) {
-  Result m = read_memory(text);
-  Result f = read_file(text);
-  EXPECT_EQ(dump(m), dump(f));
-  EXPECT_EQ(m.diags, f.diags);
-  EXPECT_EQ(m.bytes, f.bytes);
-  EXPECT_EQ(m.line, f.line);
-  return m;
-}
+using namespace reader_test;
 
 // ---- statements -------------------------------------------------------------------------------
 
@@ -165,14 +63,14 @@ TEST(ClReader, BareWords) {
 TEST(ClReader, TextStatements) {
   Result r = read(
       "PARTNO / THREAD-TURN\n"
-      "PPRINT Hello, World $$ not a comment $\n"
+      "PPRINT Hello, World $$ not a comment $$\n"
       "insert/[HOLDER=C40-M06EM2] 6mm CRB  \n"
       "PPRINT\n"
       "  PartNo/  Part 7 /a\t\n"
       "GOTO/1\n");
   EXPECT_EQ(dump(r),
             "1:1 T PARTNO 'THREAD-TURN' [1+1]\n"
-            "2:1 T PPRINT 'Hello, World $$ not a comment $' [2+1]\n"
+            "2:1 T PPRINT 'Hello, World $$ not a comment $$' [2+1]\n"
             "3:1 T INSERT '[HOLDER=C40-M06EM2] 6mm CRB' [3+1]\n"
             "4:1 T PPRINT '' [4+1]\n"
             "5:3 T PARTNO 'Part 7 /a' [5+1]\n"
@@ -251,85 +149,55 @@ TEST(ClReader, AnyLetterCase) {
             "4:1 B END-OF-PATH [4+1]\n");
 }
 
-// ---- errors -----------------------------------------------------------------------------------
+// ---- problems: delivered with the statement, not reported by the reader ---------------------
 
-// The diagnostics for one bad line followed by a good one (which must still be read).
-std::string errors_for(const std::string& line) {
+// The problem of one bad line, which is still delivered (with its raw source and text and no
+// arguments), followed by a good one: "line:col: message".
+std::string problem_for(const std::string& line) {
   Result r = read(line + "\nFINI\n");
-  EXPECT_EQ(r.errors, 1u) << line;
-  EXPECT_EQ(dump(r), "2:1 B FINI [2+1]\n") << line;
-  return r.diags;
+  EXPECT_EQ(r.diags, "") << line;
+  EXPECT_EQ(r.st.size(), 2u) << line;
+  if (r.st.size() != 2) return {};
+  const Owned& s = r.st[0];
+  EXPECT_TRUE(s.args.empty()) << line;
+  EXPECT_EQ(s.source, line.substr(line.find_first_not_of(' '))) << line;
+  Result next;
+  next.st.push_back(r.st[1]);
+  EXPECT_EQ(dump(next), "2:1 B FINI [2+1]\n") << line;
+  return std::to_string(s.problem_loc.line) + ":" + std::to_string(s.problem_loc.col) + ": " +
+         s.problem;
 }
 
 TEST(ClReader, BadNumbers) {
-  EXPECT_EQ(errors_for("GOTO/1.2.3,0"),
-            "t.cl:1:6: error: invalid number '1.2.3'\n"
-            "  GOTO/1.2.3,0\n"
-            "       ^\n");
-  EXPECT_EQ(errors_for("GOTO/0, --1"),
-            "t.cl:1:9: error: invalid number '--1'\n"
-            "  GOTO/0, --1\n"
-            "          ^\n");
-  EXPECT_EQ(errors_for("GOTO/1e"),
-            "t.cl:1:6: error: invalid number '1e'\n"
-            "  GOTO/1e\n"
-            "       ^\n");
-  EXPECT_EQ(errors_for("GOTO/1,1e400"),
-            "t.cl:1:8: error: number '1e400' is out of range\n"
-            "  GOTO/1,1e400\n"
-            "         ^\n");
-  EXPECT_EQ(errors_for("GOTO/-inf"),
-            "t.cl:1:6: error: invalid number '-inf'\n"
-            "  GOTO/-inf\n"
-            "       ^\n");
+  EXPECT_EQ(problem_for("GOTO/1.2.3,0"), "1:6: invalid number '1.2.3'");
+  EXPECT_EQ(problem_for("GOTO/0, --1"), "1:9: invalid number '--1'");
+  EXPECT_EQ(problem_for("GOTO/1e"), "1:6: invalid number '1e'");
+  EXPECT_EQ(problem_for("GOTO/1,1e400"), "1:8: number '1e400' is out of range");
+  EXPECT_EQ(problem_for("GOTO/-inf"), "1:6: invalid number '-inf'");
 }
 
-TEST(ClReader, EmptyArgument) {
-  EXPECT_EQ(errors_for("GOTO/1,,2"),
-            "t.cl:1:8: error: empty argument before ','\n"
-            "  GOTO/1,,2\n"
-            "         ^\n");
-  EXPECT_EQ(errors_for("GOTO/ ,1"),
-            "t.cl:1:7: error: empty argument before ','\n"
-            "  GOTO/ ,1\n"
-            "        ^\n");
+TEST(ClReader, SeparatorProblems) {
+  EXPECT_EQ(problem_for("GOTO/1 2"), "1:8: missing ',' before '2'");
+  EXPECT_EQ(problem_for("GOTO/1/2"), "1:7: unexpected '/' in arguments");
+  EXPECT_EQ(problem_for("GOTO//1"), "1:6: unexpected '/' in arguments");
+  EXPECT_EQ(problem_for("GOTO/1),2"), "1:7: unexpected ')' without a '('");
 }
 
-TEST(ClReader, TrailingComma) {
-  EXPECT_EQ(errors_for("GOTO/1,2, "),
-            "t.cl:1:9: error: missing argument after ','\n"
-            "  GOTO/1,2, \n"
-            "          ^\n");
-  EXPECT_EQ(errors_for("GOTO/1,2,$$ note"),
-            "t.cl:1:9: error: missing argument after ','\n"
-            "  GOTO/1,2,$$ note\n"
-            "          ^\n");
+TEST(ClReader, MajorWordProblems) {
+  EXPECT_EQ(problem_for("GO#TO/1"), "1:3: invalid character '#' in major word");
+  EXPECT_EQ(problem_for("GOTO 1,2"), "1:6: expected '/' after GOTO, found '1'");
+  EXPECT_EQ(problem_for("d1=21.5"),
+            "1:3: 'D1=' defines an APT part-program symbol: not CL data (post the CL file the "
+            "APT processor wrote)");
 }
 
-TEST(ClReader, SeparatorErrors) {
-  EXPECT_EQ(errors_for("GOTO/1 2"),
-            "t.cl:1:8: error: missing ',' before '2'\n"
-            "  GOTO/1 2\n"
-            "         ^\n");
-  EXPECT_EQ(errors_for("GOTO/1/2"),
-            "t.cl:1:7: error: unexpected '/' in arguments\n"
-            "  GOTO/1/2\n"
-            "        ^\n");
-  EXPECT_EQ(errors_for("GOTO//1"),
-            "t.cl:1:6: error: unexpected '/' in arguments\n"
-            "  GOTO//1\n"
-            "       ^\n");
-}
-
-TEST(ClReader, MajorWordErrors) {
-  EXPECT_EQ(errors_for("GO#TO/1"),
-            "t.cl:1:3: error: invalid character '#' in major word\n"
-            "  GO#TO/1\n"
-            "    ^\n");
-  EXPECT_EQ(errors_for("GOTO 1,2"),
-            "t.cl:1:7: error: invalid character ',' in major word\n"
-            "  GOTO 1,2\n"
-            "        ^\n");
+TEST(ClReader, NoMajorWordIsAReaderError) {
+  auto errors_for = [](const std::string& line) {
+    Result r = read(line + "\nFINI\n");
+    EXPECT_EQ(r.errors, 1u) << line;
+    EXPECT_EQ(dump(r), "2:1 B FINI [2+1]\n") << line;
+    return r.diags;
+  };
   EXPECT_EQ(errors_for("  1.0, 2.0"),
             "t.cl:1:3: error: expected a major word, found '1.0'\n"
             "    1.0, 2.0\n"
@@ -340,19 +208,38 @@ TEST(ClReader, MajorWordErrors) {
             "  ^\n");
 }
 
-TEST(ClReader, WordErrors) {
-  EXPECT_EQ(errors_for("LOAD/TO#OL,1"),
-            "t.cl:1:8: error: invalid character '#' in word 'TO#OL'\n"
-            "  LOAD/TO#OL,1\n"
-            "         ^\n");
-  EXPECT_EQ(errors_for("GOTO/1,$2"),
-            "t.cl:1:8: error: unexpected character '$'\n"
-            "  GOTO/1,$2\n"
-            "         ^\n");
-  EXPECT_EQ(errors_for("GOTO/1,\xC3\xA9"),
-            "t.cl:1:8: error: unexpected character '\\xC3'\n"
-            "  GOTO/1,\xC3\xA9\n"
-            "         ^\n");
+TEST(ClReader, WordProblems) {
+  EXPECT_EQ(problem_for("LOAD/TO#OL,1"), "1:8: invalid character '#' in word 'TO#OL'");
+  EXPECT_EQ(problem_for("GOTO/1,$2"), "1:8: unexpected character '$'");
+  EXPECT_EQ(problem_for("GOTO/1,\xC3\xA9"), "1:8: unexpected character '\\xC3'");
+  EXPECT_EQ(problem_for("NOTE/'open"), "1:6: missing the closing ' of this text");
+}
+
+// Free text where a post-processor word's arguments should be: delivered whole, with the first
+// problem (the interpreter writes an unknown word as a comment, and refuses a known one).
+TEST(ClReader, FreeTextArgumentsAreDeliveredRaw) {
+  Result r = read(
+      "PART_OPE/Phase d'usinage.1\n"
+      "OP_NAME/FIN RAYON - G2\n"
+      "OPDATA/ACCURACY,    0.001000,TYPE,Finition de profil en tournage,$\n"
+      "MMPR,FEED_MACH,    0.400000\n"
+      "MACHINE/Tsugami BW128\n");
+  EXPECT_EQ(dump(r),
+            "1:1 R PART_OPE/ !1:16 missing ',' before 'd'usinage.1' [1+1]\n"
+            "2:1 R OP_NAME/ !2:13 missing ',' before 'RAYON' [2+1]\n"
+            "3:1 R OPDATA/ !3:44 missing ',' before 'de' [3+2]\n"
+            "5:1 R MACHINE/ !5:17 missing ',' before 'BW128' [5+1]\n");
+  ASSERT_EQ(r.st.size(), 4u);
+  EXPECT_EQ(r.st[0].text, "Phase d'usinage.1");
+  EXPECT_EQ(r.st[1].text, "FIN RAYON - G2");
+  EXPECT_EQ(
+      r.st[2].text,
+      "ACCURACY,    0.001000,TYPE,Finition de profil en tournage,MMPR,FEED_MACH,    0.400000");
+  EXPECT_EQ(r.st[2].source,
+            "OPDATA/ACCURACY,    0.001000,TYPE,Finition de profil en tournage,MMPR,FEED_MACH,    "
+            "0.400000");
+  EXPECT_EQ(r.st[3].source, "MACHINE/Tsugami BW128");
+  EXPECT_EQ(r.diags, "");
 }
 
 // ---- continuations and comments ---------------------------------------------------------------
@@ -390,13 +277,10 @@ TEST(ClReader, ContinuationWithTrailingComment) {
   EXPECT_EQ(dump(r), "1:1 R GOTO/N:1=1@1:6,N:2=2@2:3 [1+2]\n3:1 B FINI [3+1]\n");
 }
 
-TEST(ClReader, ErrorOnContinuationLineShowsThatLine) {
+TEST(ClReader, ProblemOnContinuationLineIsAtThatLine) {
   Result r = read("GOTO/1,$\n  2..5\nFINI\n");
-  EXPECT_EQ(r.diags,
-            "t.cl:2:3: error: invalid number '2..5'\n"
-            "    2..5\n"
-            "    ^\n");
-  EXPECT_EQ(dump(r), "3:1 B FINI [3+1]\n");
+  EXPECT_EQ(dump(r), "1:1 R GOTO/ !2:3 invalid number '2..5' [1+2]\n3:1 B FINI [3+1]\n");
+  EXPECT_EQ(r.diags, "");
 }
 
 TEST(ClReader, ContinuationLineOnlyDollar) {
@@ -538,10 +422,10 @@ TEST(ClReader, GaveUpOnlyWhenStoppedBeforeTheEnd) {
     return reader.gave_up();
   };
   EXPECT_FALSE(gave_up(""));
-  EXPECT_FALSE(gave_up("GOTO/1\nGOTO/1,,2\nFINI\n"));  // an error, but read to the end
+  EXPECT_FALSE(gave_up("GOTO/1\n,2\nFINI\n"));  // an error, but read to the end
   EXPECT_TRUE(gave_up(std::string("GOTO/1\n\0\0\0", 10)));
   std::string many;
-  for (int i = 0; i < 150; ++i) many += "GOTO/1,,2\n";
+  for (int i = 0; i < 150; ++i) many += ",2\n";
   EXPECT_TRUE(gave_up(many));
 }
 
@@ -572,6 +456,21 @@ TEST(ClReader, EndlessContinuation) {
   EXPECT_EQ(dump(r), "400003:1 B FINI [400003+1]\n");
 }
 
+TEST(ClReader, HundredsOfThousandsOfContinuationLines) {
+  // Just under the statement limit: 260 000 lines of `1,$`, each argument located on its line.
+  std::string text = "GOTO/$\n";
+  for (int i = 0; i < 260000; ++i) text += "1,$\n";
+  text += "2\nFINI\n";
+  Result r = read(text);
+  EXPECT_EQ(r.diags, "");
+  ASSERT_EQ(r.st.size(), 2u);
+  ASSERT_EQ(r.st[0].args.size(), 260001u);
+  EXPECT_EQ(at(r.st[0].args[0].loc), "@2:1");
+  EXPECT_EQ(at(r.st[0].args[259999].loc), "@260001:1");
+  EXPECT_EQ(at(r.st[0].args[260000].loc), "@260002:1");
+  EXPECT_EQ(r.st[1].major, "FINI");
+}
+
 TEST(ClReader, TenMegabyteLine) {
   std::string text = "GOTO/1\nGOTO/" + std::string(10 << 20, '5') + "\nFINI";
   Result r = read(text);
@@ -590,7 +489,7 @@ TEST(ClReader, LongCommentsAreNotErrors) {
 
 TEST(ClReader, TooManyErrors) {
   std::string text;
-  for (int i = 0; i < 150; ++i) text += "GOTO/1,,2\nFINI\n";
+  for (int i = 0; i < 150; ++i) text += "1,2\nFINI\n";
   Result r = read(text);
   EXPECT_EQ(r.errors, ClReader::kMaxErrors);
   EXPECT_EQ(r.st.size(), ClReader::kMaxErrors - 1);  // the FINIs between the errors
@@ -598,9 +497,7 @@ TEST(ClReader, TooManyErrors) {
   const std::string last = "t.cl: note: too many errors, stopping\n";
   ASSERT_GT(r.diags.size(), last.size());
   EXPECT_EQ(r.diags.substr(r.diags.size() - last.size()), last);
-  EXPECT_EQ(r.diags.substr(0, 52),
-            "t.cl:1:8: error: empty argument before ','\n"
-            "  GOTO/1,");
+  EXPECT_EQ(r.diags.substr(0, 50), "t.cl:1:1: error: expected a major word, found '1'\n");
 }
 
 // ---- streaming --------------------------------------------------------------------------------
@@ -678,6 +575,7 @@ TEST(ClReader, FastPathReadsLikeTheGeneralPath) {
         ++s.loc.line;
         ++s.first_line;
         for (OwnedArg& a : s.args) ++a.loc.line;
+        if (s.problem_loc.line != 0) ++s.problem_loc.line;
       }
       Result fast = later;
       fast.st.erase(fast.st.begin());

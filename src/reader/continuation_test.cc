@@ -29,6 +29,22 @@ TEST(Continuation, CodePart) {
   EXPECT_FALSE(c);
 }
 
+TEST(Continuation, DoubleDollarInQuotesIsNotAComment) {
+  bool c = true;
+  EXPECT_EQ(code_part("SYN/'TLAXIS','$$*TLAXIS'", &c), "SYN/'TLAXIS','$$*TLAXIS'");
+  EXPECT_FALSE(c);
+  EXPECT_EQ(code_part("SYN/'A', \"$$\" $$ note $", &c), "SYN/'A', \"$$\"");
+  EXPECT_FALSE(c);
+  EXPECT_EQ(code_part("SYN/'A$$B',$", &c), "SYN/'A$$B',");
+  EXPECT_TRUE(c);
+  // A quote inside a word opens nothing: the `$$` after it starts a comment.
+  EXPECT_EQ(code_part("PART_OPE/Phase d'usinage $$ note '", &c), "PART_OPE/Phase d'usinage");
+  EXPECT_FALSE(c);
+  // An open quote at the end of a line continued with `$` (CATIA wraps long text).
+  EXPECT_EQ(code_part("TPRINT/'Turning Tool $", &c), "TPRINT/'Turning Tool ");
+  EXPECT_TRUE(c);
+}
+
 TEST(Continuation, CommentContinues) {
   EXPECT_TRUE(comment_continues("$$-> CSYS / 1.0, 0.0,  $"));
   EXPECT_TRUE(comment_continues("            0.0, 1.0, $\t "));
@@ -52,11 +68,12 @@ TEST(Continuation, Lines) {
 
 // The streaming form must agree with the in-memory form on every line, however it is cut.
 TEST(Continuation, LineTailAgreesWithWholeLine) {
-  const std::string alphabet = "$ a,\t";
+  const std::string alphabet = "$ a,\t'/";
+  constexpr int kSize = 7;
   std::string line;
-  for (int n = 0; n < 5 * 5 * 5 * 5 * 5 * 5; ++n) {
+  for (int n = 0; n < kSize * kSize * kSize * kSize * kSize * kSize; ++n) {
     line.clear();
-    for (int k = n, i = 0; i < 6; ++i, k /= 5) line += alphabet[k % 5];
+    for (int k = n, i = 0; i < 6; ++i, k /= kSize) line += alphabet[k % kSize];
     bool code = false;
     code_part(line, &code);
     const bool comment = comment_continues(line);

@@ -1,8 +1,10 @@
 #include "reader/lexer.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "reader/continuation.h"
+#include "reader/expression.h"
 #include "reader/number.h"
 
 namespace clpost::reader {
@@ -75,30 +77,62 @@ std::pair<size_t, size_t> first_word(std::string_view line) {
   return {i, j};
 }
 
+// The text of a text statement's line: trailing blanks and a continuation `$` removed.
+std::string_view text_part(std::string_view line) {
+  const bool continues = comment_continues(line);
+  while (!line.empty() && is_blank_char(line.back())) line.remove_suffix(1);
+  if (continues) line.remove_suffix(1);
+  return line;
+}
+
 }  // namespace
 
 bool StatementLexer::is_text_statement(std::string_view line) {
   auto [i, j] = first_word(line);
   std::string_view word = line.substr(i, j - i);
   if (!equals_upper(word, "PARTNO") && !equals_upper(word, "PPRINT") &&
-      !equals_upper(word, "INSERT")) {
+      !equals_upper(word, "INSERT") && !equals_upper(word, "TPRINT")) {
     return false;
   }
   return j == line.size() || is_blank_char(line[j]) || line[j] == '/';
 }
 
-void StatementLexer::start(const Statement& st) {
+void StatementLexer::join(const Statement& st, bool text) {
   size_t need = 0;
   for (std::string_view l : st.lines) need += l.size();
   words_.clear();
   if (words_.capacity() < need) words_.reserve(need);
   first_line_ = st.first_line;
-  li_ = 0;
   pos_ = 0;
+  pieces_.clear();
+  scratch_.clear();
+  if (st.lines.size() == 1) {
+    bool continues = false;
+    src_ = text ? text_part(st.lines[0]) : code_part(st.lines[0], &continues);
+    pieces_.push_back(Piece{0, 0});
+    return;
+  }
+  joined_.clear();
+  if (joined_.capacity() < need) joined_.reserve(need);
+  for (uint32_t i = 0; i < st.lines.size(); ++i) {
+    bool continues = false;
+    pieces_.push_back(Piece{joined_.size(), i});
+    joined_ += text ? text_part(st.lines[i]) : code_part(st.lines[i], &continues);
+  }
+  src_ = joined_;
+}
+
+SourceLoc StatementLexer::loc_at(size_t pos) const {
+  // The last piece that starts at or before `pos` (a binary search: a statement may have
+  // hundreds of thousands of continuation lines).
+  auto it = std::upper_bound(pieces_.begin() + 1, pieces_.end(), pos,
+                             [](size_t p, const Piece& piece) { return p < piece.offset; });
+  const Piece& piece = *(it - 1);
+  return SourceLoc{first_line_ + piece.line, static_cast<uint32_t>(pos - piece.offset + 1)};
 }
 
 std::string_view StatementLexer::add_upper(std::string_view text) {
-  // Never reallocates: start() reserved room for every byte of the statement.
+  // Never reallocates: join() reserved room for every byte of the statement.
   const size_t at = words_.size();
   words_.resize(at + text.size());
   char* dst = words_.data() + at;
@@ -106,165 +140,273 @@ std::string_view StatementLexer::add_upper(std::string_view text) {
   return std::string_view(words_.data() + at, text.size());
 }
 
-bool StatementLexer::fail(Error& err, SourceLoc loc, std::string message) {
-  err.loc = loc;
-  err.message = std::move(message);
+bool StatementLexer::problem(Statement& st, SourceLoc at, std::string message) {
+  st.problem.loc = at;
+  st.problem.message = std::move(message);
   return false;
 }
 
 bool StatementLexer::at_end() {
-  while (li_ < code_.size()) {
-    std::string_view l = code_[li_];
-    while (pos_ < l.size() && is_blank_char(l[pos_])) ++pos_;
-    if (pos_ < l.size()) return false;
-    ++li_;
-    pos_ = 0;
-  }
-  return true;
+  while (pos_ < src_.size() && is_blank_char(src_[pos_])) ++pos_;
+  return pos_ >= src_.size();
 }
 
 std::string_view StatementLexer::token() const {
-  std::string_view l = code_[li_];
   size_t end = pos_;
-  while (end < l.size() && !is_blank_char(l[end]) && l[end] != ',' && l[end] != '/') ++end;
+  while (end < src_.size()) {
+    const char c = src_[end];
+    if (is_blank_char(c) || c == ',' || c == '/' || c == '(' || c == ')') break;
+    ++end;
+  }
   if (end == pos_) end = pos_ + 1;
-  return l.substr(pos_, end - pos_);
+  return src_.substr(pos_, end - pos_);
 }
 
 StatementLexer::Result StatementLexer::lex_code(Statement& st, Error& err) {
-  start(st);
-  code_.clear();
-  for (std::string_view l : st.lines) {
-    bool continues = false;
-    code_.push_back(code_part(l, &continues));
-  }
+  join(st, false);
   st.form = Statement::Form::kBare;
   st.major = {};
   st.loc = {};
   st.args.clear();
   st.text = {};
+  st.source = trim(src_);
+  st.modifiers.clear();
+  st.nested.clear();
+  st.problem.message.clear();
 
   if (at_end()) return Result::kEmpty;
   if (!is_alpha(cur())) {
-    fail(err, loc(), "expected a major word, found " + quoted(token()));
+    err.loc = loc();
+    err.message = "expected a major word, found " + quoted(token());
     return Result::kError;
   }
-
-  // The major word: up to '/' or the end; blanks (and line ends) inside collapse to one space.
-  st.loc = loc();
-  const size_t major_at = words_.size();
-  bool blank = false;
-  while (li_ < code_.size()) {
-    std::string_view l = code_[li_];
-    if (pos_ == l.size()) {
-      ++li_;
-      pos_ = 0;
-      blank = true;
-      continue;
-    }
-    const char c = l[pos_];
-    if (is_blank_char(c)) {
-      blank = true;
-      ++pos_;
-      continue;
-    }
-    if (c == '/') break;
-    if (!is_major_char(c)) {
-      fail(err, loc(), "invalid character " + quoted(std::string_view(&c, 1)) + " in major word");
-      return Result::kError;
-    }
-    if (blank) words_ += ' ';
-    blank = false;
-    size_t end = pos_ + 1;  // the run of major-word characters, upper-cased in one go
-    while (end < l.size() && is_major_char(l[end])) ++end;
-    add_upper(l.substr(pos_, end - pos_));
-    pos_ = end;
+  if (!head(st)) {
+    st.args.clear();
+    st.nested.clear();
   }
-  st.major = std::string_view(words_.data() + major_at, words_.size() - major_at);
-  if (li_ == code_.size()) return Result::kOk;  // a bare word
-
-  // Arguments.
-  st.form = Statement::Form::kRecord;
-  ++pos_;  // the '/'
-  SourceLoc comma;
-  bool after_comma = false;
-  for (;;) {
-    if (at_end()) {
-      if (after_comma) {
-        fail(err, comma, "missing argument after ','");
-        return Result::kError;
-      }
-      return Result::kOk;
-    }
-    if (cur() == ',') {
-      fail(err, loc(), "empty argument before ','");
-      return Result::kError;
-    }
-    if (cur() == '/') {
-      fail(err, loc(), "unexpected '/' in arguments");
-      return Result::kError;
-    }
-    if (!lex_arg(st, err)) return Result::kError;
-    if (at_end()) return Result::kOk;
-    if (cur() == ',') {
-      comma = loc();
-      after_comma = true;
-      ++pos_;
-      continue;
-    }
-    if (cur() == '/') {
-      fail(err, loc(), "unexpected '/' in arguments");
-    } else {
-      fail(err, loc(), "missing ',' before " + quoted(token()));
-    }
-    return Result::kError;
-  }
+  return Result::kOk;
 }
 
-bool StatementLexer::lex_arg(Statement& st, Error& err) {
+// The major word at the cursor: a run of [A-Za-z0-9_-], upper-cased; blanks followed by a
+// letter continue it with one space ("TOOL PATH").
+std::string_view StatementLexer::major_word() {
+  const size_t at = words_.size();
+  for (;;) {
+    size_t end = pos_;
+    while (end < src_.size() && is_major_char(src_[end])) ++end;
+    add_upper(src_.substr(pos_, end - pos_));
+    pos_ = end;
+    size_t k = pos_;
+    while (k < src_.size() && is_blank_char(src_[k])) ++k;
+    if (k == pos_ || k == src_.size() || !is_alpha(src_[k])) break;
+    words_ += ' ';
+    pos_ = k;
+  }
+  return std::string_view(words_.data() + at, words_.size() - at);
+}
+
+// MAJOR, MAJOR/args, MAJOR,args (the comma form) or W1,...,MAJOR/args (modifiers).
+bool StatementLexer::head(Statement& st) {
+  st.loc = loc();
+  st.major = major_word();
+  const size_t word_end = pos_;
+  if (at_end()) return true;  // a bare word
+  const char c = cur();
+  if (c == '/' || c == ',') {
+    ++pos_;
+    st.form = Statement::Form::kRecord;
+    if (c == ',') modifiers(st, pos_);  // else the comma form: the ',' stands for the '/'
+    st.text = trim(src_.substr(pos_));
+    return lex_args(st, st.args, 0);
+  }
+  if (c == '=') {
+    return problem(st, loc(),
+                   "'" + std::string(st.major) +
+                       "=' defines an APT part-program symbol: not CL data (post the CL file "
+                       "the APT processor wrote)");
+  }
+  if (pos_ == word_end) {
+    return problem(st, loc(),
+                   "invalid character " + quoted(src_.substr(pos_, 1)) + " in major word");
+  }
+  return problem(st, loc(),
+                 "expected '/' after " + std::string(st.major) + ", found " + quoted(token()));
+}
+
+// After `W1,`: when the statement goes on with words separated by commas up to a '/'
+// (`TLON,GOFWD/…`, `RAPID,GOTO/…`), the last of them is the major word and the others are its
+// modifiers; the cursor is left after the '/'. Otherwise nothing changes (the comma form).
+bool StatementLexer::modifiers(Statement& st, size_t after_comma) {
+  size_t p = after_comma;
+  size_t last = 0;  // start of the word before the '/'
+  size_t words = 0;
+  for (;;) {
+    while (p < src_.size() && is_blank_char(src_[p])) ++p;
+    if (p == src_.size() || !is_alpha(src_[p])) return false;
+    last = p;
+    while (p < src_.size() && is_major_char(src_[p])) ++p;
+    ++words;
+    while (p < src_.size() && is_blank_char(src_[p])) ++p;
+    if (p == src_.size()) return false;
+    if (src_[p] == '/') break;
+    if (src_[p] != ',') return false;
+    ++p;
+  }
+  st.modifiers.push_back(Arg{Arg::Kind::kWord, st.major, {0}, st.loc});
+  pos_ = after_comma;
+  for (size_t k = 0; k < words; ++k) {
+    at_end();
+    const SourceLoc at = loc();
+    const size_t b = pos_;
+    while (pos_ < src_.size() && is_major_char(src_[pos_])) ++pos_;
+    const std::string_view w = add_upper(src_.substr(b, pos_ - b));
+    if (b == last) {
+      st.major = w;
+      st.loc = at;
+    } else {
+      st.modifiers.push_back(Arg{Arg::Kind::kWord, w, {0}, at});
+    }
+    at_end();
+    ++pos_;  // the ',' or, after the last word, the '/'
+  }
+  return true;
+}
+
+// Arguments separated by ',' up to the end (depth 0) or a ')' (in a nested definition). Nothing
+// between two commas, or after a last one, is an empty argument.
+bool StatementLexer::lex_args(Statement& st, std::vector<Arg>& out, int depth) {
+  auto closed = [&] { return at_end() || (depth > 0 && cur() == ')'); };
+  if (closed()) return true;
+  for (;;) {
+    if (closed() || cur() == ',') {
+      out.push_back(Arg{Arg::Kind::kEmpty, {}, {0}, loc()});
+    } else if (cur() == '/' || cur() == ')') {
+      break;
+    } else if (!lex_arg(st, out, depth)) {
+      return false;
+    }
+    if (closed()) return true;
+    if (cur() != ',') break;
+    ++pos_;
+  }
+  if (cur() == '/') return problem(st, loc(), "unexpected '/' in arguments");
+  if (cur() == ')') return problem(st, loc(), "unexpected ')' without a '('");
+  return problem(st, loc(), "missing ',' before " + quoted(token()));
+}
+
+bool StatementLexer::lex_arg(Statement& st, std::vector<Arg>& out, int depth) {
+  const char c0 = cur();
+  if (c0 == '\'' || c0 == '"') {
+    const SourceLoc at = loc();
+    const size_t end = src_.find(c0, pos_ + 1);
+    if (end == std::string_view::npos) {
+      return problem(st, at, std::string("missing the closing ") + c0 + " of this text");
+    }
+    out.push_back(Arg{Arg::Kind::kText, src_.substr(pos_ + 1, end - pos_ - 1), {0}, at});
+    pos_ = end + 1;
+    return true;
+  }
+  if (c0 == '(') return lex_paren(st, out, depth);
+  if (c0 == '+' || c0 == '-') {
+    size_t k = pos_ + 1;
+    while (k < src_.size() && is_blank_char(src_[k])) ++k;
+    if (k < src_.size() && src_[k] == '(') return lex_expression(st, out);
+  }
   const std::string_view tok = token();
   const SourceLoc at = loc();
-  pos_ += tok.size();
-  const char c0 = tok[0];
   if (is_alpha(c0) || (is_digit(c0) && !looks_numeric(tok))) {
-    // A word; it may start with a digit (NX operation names like 10_SVERL_63_N2).
+    // A word; it may start with a digit (1STPECK, NX operation names like 10_SVERL_63_N2).
     for (size_t k = 0; k < tok.size(); ++k) {
       if (!is_word_char(tok[k])) {
-        return fail(err, SourceLoc{at.line, at.col + static_cast<uint32_t>(k)},
-                    "invalid character " + quoted(tok.substr(k, 1)) + " in word " + quoted(tok));
+        return problem(st, SourceLoc{at.line, at.col + static_cast<uint32_t>(k)},
+                       "invalid character " + quoted(tok.substr(k, 1)) + " in word " + quoted(tok));
       }
     }
-    st.args.push_back(Arg{Arg::Kind::kWord, add_upper(tok), 0, at});
+    pos_ += tok.size();
+    out.push_back(Arg{Arg::Kind::kWord, add_upper(tok), {0}, at});
     return true;
   }
   if (is_digit(c0) || c0 == '+' || c0 == '-' || c0 == '.') {
     double value = 0;
     switch (parse_number(tok, value)) {
       case NumberStatus::kOk:
-        st.args.push_back(Arg{Arg::Kind::kNumber, tok, value, at});
+        pos_ += tok.size();
+        out.push_back(Arg{Arg::Kind::kNumber, tok, {value}, at});
         return true;
       case NumberStatus::kOutOfRange:
-        return fail(err, at, "number " + quoted(tok) + " is out of range");
+        return problem(st, at, "number " + quoted(tok) + " is out of range");
       case NumberStatus::kInvalid:
         break;
     }
-    return fail(err, at, "invalid number " + quoted(tok));
+    return problem(st, at, "invalid number " + quoted(tok));
   }
-  return fail(err, at, "unexpected character " + quoted(tok.substr(0, 1)));
+  return problem(st, at, "unexpected character " + quoted(tok.substr(0, 1)));
+}
+
+// '(' opens a nested definition when a word and a '/' follow — `(CIRCLE/…)` —, else an
+// arithmetic expression.
+bool StatementLexer::lex_paren(Statement& st, std::vector<Arg>& out, int depth) {
+  size_t k = pos_ + 1;
+  while (k < src_.size() && is_blank_char(src_[k])) ++k;
+  if (k < src_.size() && is_alpha(src_[k])) {
+    while (k < src_.size() && is_major_char(src_[k])) ++k;
+    while (k < src_.size() && is_blank_char(src_[k])) ++k;
+    if (k < src_.size() && src_[k] == '/') return lex_definition(st, out, depth);
+  }
+  return lex_expression(st, out);
+}
+
+bool StatementLexer::lex_definition(Statement& st, std::vector<Arg>& out, int depth) {
+  const SourceLoc open = loc();
+  if (depth >= kMaxNesting) return problem(st, open, "nested definitions too deep");
+  ++pos_;  // '('
+  at_end();
+  const size_t b = pos_;
+  while (pos_ < src_.size() && is_major_char(src_[pos_])) ++pos_;
+  const std::string_view name = add_upper(src_.substr(b, pos_ - b));
+  at_end();
+  ++pos_;  // '/'
+  const size_t base = scratch_.size();
+  if (!lex_args(st, scratch_, depth + 1)) return false;
+  if (at_end()) {
+    return problem(st, open, "missing ')' to close (" + std::string(name) + "/");
+  }
+  ++pos_;  // ')'
+  Arg def{Arg::Kind::kDefinition, name, {0}, open};
+  def.def = Arg::Span{static_cast<uint32_t>(st.nested.size()),
+                      static_cast<uint32_t>(scratch_.size() - base)};
+  st.nested.insert(st.nested.end(), scratch_.begin() + static_cast<std::ptrdiff_t>(base),
+                   scratch_.end());
+  scratch_.resize(base);
+  out.push_back(def);
+  return true;
+}
+
+bool StatementLexer::lex_expression(Statement& st, std::vector<Arg>& out) {
+  const SourceLoc at = loc();
+  const size_t start = pos_;
+  double value = 0;
+  ExprError e;
+  if (!eval_expression(src_, pos_, value, e)) return problem(st, loc_at(e.at), e.message);
+  out.push_back(Arg{Arg::Kind::kNumber, src_.substr(start, pos_ - start), {value}, at});
+  return true;
 }
 
 void StatementLexer::lex_text(Statement& st) {
-  start(st);
-  const std::string_view line = st.lines.empty() ? std::string_view() : st.lines[0];
-  auto [i, j] = first_word(line);
+  join(st, true);
+  auto [i, j] = first_word(src_);
   st.form = Statement::Form::kText;
-  st.major = add_upper(line.substr(i, j - i));
+  st.major = add_upper(src_.substr(i, j - i));
   st.loc = SourceLoc{st.first_line, static_cast<uint32_t>(i + 1)};
   st.args.clear();
+  st.modifiers.clear();
+  st.nested.clear();
+  st.problem.message.clear();
   size_t k = j;
-  while (k < line.size() && is_blank_char(line[k])) ++k;
-  if (k < line.size() && line[k] == '/') ++k;
-  st.text = trim(line.substr(k));
+  while (k < src_.size() && is_blank_char(src_[k])) ++k;
+  if (k < src_.size() && src_[k] == '/') ++k;
+  st.text = trim(src_.substr(k));
+  st.source = trim(src_);
 }
 
 }  // namespace clpost::reader

@@ -19,7 +19,7 @@ bool is_major_tail(char c) {
 }
 
 bool is_text_major(std::string_view major) {
-  return major == "PARTNO" || major == "PPRINT" || major == "INSERT";
+  return major == "PARTNO" || major == "PPRINT" || major == "INSERT" || major == "TPRINT";
 }
 
 // Exact powers of ten: with a mantissa below 10^15 one division is correctly rounded, and it is
@@ -66,6 +66,7 @@ bool lex_plain_line(std::string_view input, uint32_t line_no, Statement& st, Pla
 
   st.args.clear();
   const bool record = *p == '/';
+  const char* const args = p + 1;
   if (record) {
     ++p;
     for (;;) {
@@ -75,12 +76,12 @@ bool lex_plain_line(std::string_view input, uint32_t line_no, Statement& st, Pla
         ++p;
         while (is_major_tail(*p) || *p == '.') ++p;
         st.args.push_back(
-            Arg{Arg::Kind::kWord, std::string_view(tok, static_cast<size_t>(p - tok)), 0, at});
+            Arg{Arg::Kind::kWord, std::string_view(tok, static_cast<size_t>(p - tok)), {0}, at});
       } else {
         double value = 0;
         if (!plain_number(p, value)) return false;
-        st.args.push_back(Arg{Arg::Kind::kNumber,
-                              std::string_view(tok, static_cast<size_t>(p - tok)), value, at});
+        st.args.push_back(Arg{
+            Arg::Kind::kNumber, std::string_view(tok, static_cast<size_t>(p - tok)), {value}, at});
       }
       if (*p != ',') break;
       ++p;
@@ -101,7 +102,11 @@ bool lex_plain_line(std::string_view input, uint32_t line_no, Statement& st, Pla
   st.form = record ? Statement::Form::kRecord : Statement::Form::kBare;
   st.major = major;
   st.loc = SourceLoc{line_no, 1};
-  st.text = {};
+  st.text = record ? std::string_view(args, static_cast<size_t>(p - args)) : std::string_view();
+  st.source = std::string_view(begin, line.size);
+  st.modifiers.clear();
+  st.nested.clear();
+  st.problem.message.clear();
   st.first_line = line_no;
   st.lines.assign(1, std::string_view(begin, line.size));
   return true;

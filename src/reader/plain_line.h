@@ -22,11 +22,11 @@ struct PlainLine {
 
 // `input` starts at the beginning of physical line `line_no`. When that line is plain — `MAJOR`
 // or `MAJOR/arg,arg,...`, MAJOR in [A-Z][A-Z0-9_-]* and not a text statement (PARTNO, PPRINT,
-// INSERT), each argument a number `[+-]digits[.digits]` (at most 15 digits) or an upper-case
-// word `[A-Z][A-Z0-9_.-]*` — and its line end is in `input` (a CR as the last byte of `input`
-// is not enough: CRLF or CR cannot be told yet), fills `st` (views into `input`) and `line`, and
-// returns true. Otherwise returns false; `st` may then have been changed and must be filled by
-// the general path.
+// INSERT, TPRINT), each argument a number `[+-]digits[.digits]` (at most 15 digits) or an
+// upper-case word `[A-Z][A-Z0-9_.-]*` — and its line end is in `input` (a CR as the last byte of
+// `input` is not enough: CRLF or CR cannot be told yet), fills `st` (views into `input`) and
+// `line`, and returns true. Otherwise returns false; `st` may then have been changed and must be
+// filled by the general path.
 bool lex_plain_line(std::string_view input, uint32_t line_no, Statement& st, PlainLine& line);
 
 }  // namespace clpost::reader

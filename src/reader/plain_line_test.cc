@@ -30,6 +30,9 @@ bool fast_agrees(std::string_view line) {
   constexpr uint32_t kLine = 7;
   Statement fast;
   fast.args.push_back(Arg{});  // leftovers from an earlier statement must go
+  fast.modifiers.push_back(Arg{});
+  fast.nested.push_back(Arg{});
+  fast.problem.message = "old";
   const std::string input = std::string(line) + "\nNEXT/1\n";
   PlainLine plain;
   if (!lex_plain_line(input, kLine, fast, plain)) return false;
@@ -55,6 +58,13 @@ bool fast_agrees(std::string_view line) {
   EXPECT_EQ(fast.major, general.major) << line;
   EXPECT_TRUE(fast.loc == general.loc) << line;
   EXPECT_EQ(fast.text, general.text) << line;
+  EXPECT_EQ(fast.source, general.source) << line;
+  EXPECT_TRUE(fast.modifiers.empty()) << line;
+  EXPECT_TRUE(general.modifiers.empty()) << line;
+  EXPECT_TRUE(fast.nested.empty()) << line;
+  EXPECT_TRUE(general.nested.empty()) << line;
+  EXPECT_FALSE(fast.has_problem()) << line;
+  EXPECT_FALSE(general.has_problem()) << line << ": " << general.problem.message;
   EXPECT_EQ(fast.first_line, general.first_line) << line;
   EXPECT_EQ(fast.lines, general.lines) << line;
   EXPECT_EQ(fast.args.size(), general.args.size()) << line;
@@ -120,6 +130,13 @@ TEST(PlainLine, DeclinesEverythingElse) {
                            "PARTNO/X",
                            "PPRINT/HELLO",
                            "INSERT/G4",
+                           "TPRINT/T1",
+                           "CHANNEL,1",
+                           "TLON,GOFWD/1",
+                           "PITCH/(1/2.5)",
+                           "GOTO/-(1)",
+                           "SYN/'A'",
+                           "P1=POINT/1",
                            "1GOTO/1",
                            "_A/1",
                            "GOTO/1\f",
@@ -158,7 +175,7 @@ TEST(PlainLine, RandomLinesAgreeWithTheGeneralLexer) {
   const std::vector<std::string> seeds = {
       "GOTO/40.0000,0.0000,5.0000", "LOADTL/1,ADJUST,1", "RAPID",           "END-OF-PATH",
       "CIRCLE/1.,.5,-0.5,+2",       "PPRINT/X",          "FEDRAT/0.25,MMPR"};
-  static constexpr char kAlphabet[] = " \t$,./-+eE0123456789aAZz_\"";
+  static constexpr char kAlphabet[] = " \t$,./-+eE0123456789aAZz_\"'()*=";
   uint64_t x = 0x9E3779B97F4A7C15ull;  // xorshift64: deterministic
   auto next = [&x](uint64_t n) {
     x ^= x << 13, x ^= x >> 7, x ^= x << 17;

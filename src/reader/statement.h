@@ -2,6 +2,8 @@
 // One APT/CL statement as the reader delivers it. Views point into the reader's buffers and stay
 // valid until the next call to ClReader::next().
 #include <cstdint>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -10,29 +12,76 @@
 namespace clpost {
 
 struct Arg {
-  enum class Kind : uint8_t { kWord, kNumber };
+  enum class Kind : uint8_t {
+    kWord,        // ON, MMPR, 1STPECK
+    kNumber,      // 2.5, and an arithmetic expression: (1/2.5)
+    kEmpty,       // nothing between two commas (`ANGLE,,PITCH`) or after a last comma
+    kText,        // a quoted text: 'TLAXIS', "N"
+    kDefinition,  // a nested definition: (CIRCLE/25,0,-30,4.6)
+  };
   Kind kind = Kind::kWord;
-  std::string_view text;  // words: upper-cased; numbers: as written
-  double number = 0;      // numbers only
-  SourceLoc loc;          // where the argument starts
+  // words: upper-cased; numbers: as written (an expression with its parentheses: "(1/2.5)");
+  // text: between the quotes, as written; definitions: their major word, upper-cased; empty: "".
+  std::string_view text;
+  // Definitions: their arguments are Statement::nested[first, first + count) (see
+  // Statement::args_of), themselves possibly definitions. Sharing the number's room keeps an
+  // argument at 40 bytes, which the plain GOTO path copies three times a line.
+  struct Span {
+    uint32_t first;
+    uint32_t count;
+  };
+  union {
+    double number = 0;  // numbers only (an expression: its value)
+    Span def;           // definitions only
+  };
+  SourceLoc loc;  // where the argument starts (a definition: its '(')
 
   bool is_word() const { return kind == Kind::kWord; }
   bool is_number() const { return kind == Kind::kNumber; }
+  bool is_empty() const { return kind == Kind::kEmpty; }
+  bool is_text() const { return kind == Kind::kText; }
+  bool is_definition() const { return kind == Kind::kDefinition; }
   bool is(std::string_view word) const { return kind == Kind::kWord && text == word; }
 };
 
+// A lexical problem in a statement that still has a major word: the statement is delivered, with
+// no arguments, and the interpreter decides (an unknown word becomes a warning and a comment
+// holding `source`; a known one an error here).
+struct LexProblem {
+  SourceLoc loc;
+  std::string message;
+};
+
+static_assert(sizeof(Arg) <= 40);
+
 struct Statement {
   enum class Form : uint8_t {
-    kRecord,  // MAJOR/arg,arg,...   (args filled; `RAPID/` is a record with no args)
+    kRecord,  // MAJOR/arg,arg,...   (args filled; `RAPID/` is a record with no args); also the
+              // comma form `CHANNEL,1` (no '/': the first ',' stands for it)
     kBare,    // MAJOR alone on its line: RAPID, END, FINI, STOP, END-OF-PATH ...
-    kText,    // PARTNO, PPRINT, INSERT: `text` holds the rest of the line verbatim
+    kText,    // PARTNO, PPRINT, INSERT, TPRINT: `text` holds the rest of the line verbatim
   };
   Form form = Form::kBare;
   std::string_view major;  // upper-cased; inner runs of blanks collapsed to one ("TOOL PATH")
   SourceLoc loc;           // of the major word
   std::vector<Arg> args;
-  std::string_view text;  // kText: everything after the major word (and its optional '/'),
-                          // leading and trailing blanks trimmed, case kept
+  // kText: everything after the major word (and its optional '/'), continuation lines joined,
+  // leading and trailing blanks trimmed, case kept. kRecord: the arguments as written (after
+  // the '/' or the first ','), trimmed. kBare: empty.
+  std::string_view text;
+  // The whole statement as written: the code of its lines joined (comments and continuation
+  // `$` removed), trimmed; a text statement: its first line.
+  std::string_view source;
+  // Words written before the major word, in order: `TLON,GOFWD/…` is GOFWD with modifier TLON
+  // (APT's motion statements), `RAPID,GOTO/…` GOTO with modifier RAPID.
+  std::vector<Arg> modifiers;
+  std::vector<Arg> nested;  // the arguments of nested definitions (Arg::first, Arg::count)
+  LexProblem problem;       // message empty: none
+
+  bool has_problem() const { return !problem.message.empty(); }
+  std::span<const Arg> args_of(const Arg& definition) const {
+    return std::span<const Arg>(nested).subspan(definition.def.first, definition.def.count);
+  }
 
   // The physical lines this statement was read from (continuations included), for diagnostics.
   uint32_t first_line = 0;
@@ -44,8 +93,6 @@ struct Statement {
 };
 
 }  // namespace clpost
-
-#include <string>
 
 namespace clpost {
 
