@@ -49,6 +49,18 @@ struct SpindleState {
   SpindleDir dir = SpindleDir::kCw;
 };
 
+// The tool in the spindle or turret station, as the CL described it: the tool change sets number
+// and offset; tool-data words (TOOLNO, TPRINT, CUTTER, SWITCH, a `PPRINT TOOL:` comment) fill in
+// what they say. Read by the tool list and by whatever needs the tool's geometry.
+struct ToolInfo {
+  int number = -1;                    // -1: no tool loaded yet
+  int offset = -1;                    // the offset register selected with it (-1: none yet)
+  std::string text;                   // its description (TPRINT, PPRINT TOOL:, TOOLNO)
+  std::optional<double> nose_radius;  // CL units
+  std::optional<int> tip_quadrant;    // tool-tip direction 1..9 (SWITCH/n), for nose-radius
+                                      // compensation
+};
+
 // The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything larger
 // is a units mistake or garbage, and would not fit an NC address anyway.
 inline constexpr double kMaxClValue = 1e6;
@@ -77,7 +89,7 @@ struct PostState {
   FeedMode feed_mode = FeedMode::kPerMinute;
   double feed = 0;  // output units
   SpindleState spindle;
-  int tool_offset = -1;   // offset of the last tool change (-1: no tool loaded yet)
+  ToolInfo tool;          // the tool loaded last
   bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
   size_t y_warnings = 0;  // points off the lathe plane (warned once)
   std::vector<std::string> noted;  // keys of notes already given once

@@ -38,7 +38,8 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
     offset = static_cast<int>(o.number);
   }
   ensure_started(s);
-  s.tool_offset = offset;
+  s.tool.number = static_cast<int>(tool);
+  s.tool.offset = offset;
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
     error(s, st, st.loc, template_error(s.m, r));
 }

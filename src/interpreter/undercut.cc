@@ -213,9 +213,9 @@ void undercut_cycle96(PostState& s, const Statement& st, const UndercutWords& u,
                       num_text(ext->diameter_step)));
     return;
   }
-  if (s.tool_offset <= 0) {
+  if (s.tool.offset <= 0) {
     error(s, st, st.loc,
-          s.tool_offset < 0
+          s.tool.offset < 0
               ? std::string("CYCLE96 needs an active tool offset: no LOADTL/ before CYCLE/UNDCUT")
               : std::string("CYCLE96 needs an active tool offset: the tool was loaded with "
                             "offset 0 (D0), which selects none"));
