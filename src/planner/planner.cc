@@ -10,6 +10,7 @@
 #include <string>
 
 #include "planner/depth_ladder.h"
+#include "planner/multi_geometry.h"
 #include "planner/number_text.h"
 #include "planner/plan_report.h"
 #include "planner/vec2_math.h"
@@ -65,18 +66,12 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
     sequence_note();
     return false;
   }
-  const Vec2 p0 = in.p0;
-  const Vec2 p1 = in.gotos[0].point;
-  const Vec2 p2 = in.gotos[1].point;
-  const Vec2 d12 = p2 - p1;
-  const double len = length(d12);
-  if (len <= kLengthEps) {
-    r.error(goto_site(1), fmt::format("the thread end {} is the thread start: the thread has no "
-                                      "length",
-                                      pt(p2)));
-    sequence_note();
-    return false;
-  }
+  MultiGeometry g;
+  if (!make_thread_line(in, g, r)) return false;
+  const Vec2 p0 = g.p0;
+  const Vec2 p1 = g.p1;
+  const Vec2 p2 = g.p2;
+  const double len = g.length;
 
   // --- Pitch. ---
   PitchSpec pitch = in.modal_pitch;
@@ -84,6 +79,7 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
   if (!check_pitch(pitch, on, in.on_word, settings, r)) return false;
 
   // --- Geometry. ---
+  if (!make_infeed_direction(in, g, r)) return false;
   ThreadPlan plan;
   plan.loc = in.on_loc;
   plan.form = ThreadForm::kMulti;
@@ -94,51 +90,15 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
   plan.p1 = p1;
   plan.p2 = p2;
   plan.feed_approach = in.feed_approach;
-  plan.kind = kind_of(d12);
-  plan.lead_along_z = std::fabs(d12.z) >= std::fabs(d12.x);
-  const Vec2 t = (1 / len) * d12;
-
-  double theta = 0;
-  if (w.cutang.set) {
-    theta = w.cutang.value;
-    const Vec2 u = direction(theta);
-    const double off = deg(std::acos(std::min(1.0, std::fabs(dot(u, t)))));
-    if (off <= 10 + kAngleEps) {
-      return r.error(
-          Site{w.cutang.loc, &in.on_lines},
-          fmt::format("CUTANG {} is only {}° off the thread line (direction {}° from "
-                      "{} to {}); the infeed must be more than 10° off it",
-                      num_text(theta), num_text(off), num_text(angle_of(t)), pt(p1), pt(p2)));
-    }
-  } else if (plan.lead_along_z) {
-    // Turn / turn-taper: along X toward the thread line from the initial point.
-    const double x_line = p1.x + (p0.z - p1.z) * d12.x / d12.z;
-    const double gap = x_line - p0.x;
-    if (std::fabs(gap) <= kLengthEps) {
-      return r.error(on, fmt::format("cannot choose the infeed direction: the initial point {} "
-                                     "is on the thread line; give CUTANG",
-                                     pt(p0)));
-    }
-    theta = gap < 0 ? 180 : 0;
-  } else {
-    // Face / face-taper: along Z toward the thread line.
-    const double z_line = p1.z + (p0.x - p1.x) * d12.z / d12.x;
-    const double gap = z_line - p0.z;
-    if (std::fabs(gap) <= kLengthEps) {
-      return r.error(on, fmt::format("cannot choose the infeed direction: the initial point {} "
-                                     "is on the thread line; give CUTANG",
-                                     pt(p0)));
-    }
-    theta = gap < 0 ? 270 : 90;
-  }
-  plan.cutang = theta;
-  const Vec2 u = direction(theta);
-  Vec2 n{t.z, -t.x};
-  if (dot(n, u) < 0) n = -n;
-  const double nu = dot(n, u);
-  const Vec2 out_dir = -n;  // outward: away from the material
-  // Face threads (lead along X) are reported external; otherwise the side of the material does.
-  plan.side = (!plan.lead_along_z || n.x < 0) ? ThreadSide::kExternal : ThreadSide::kInternal;
+  plan.kind = kind_of(g.d12);
+  plan.lead_along_z = g.lead_along_z;
+  plan.cutang = g.cutang;
+  plan.side = side_of(g);
+  const double theta = g.cutang;
+  const Vec2 t = g.t;
+  const Vec2 u = g.u;
+  const double nu = g.nu;
+  const Vec2 out_dir = g.out_dir;
 
   plan.option = w.option.set ? w.option.value : settings.default_option;
   plan.tool_angle = w.tlangl.set ? w.tlangl.value : settings.default_tool_angle;
