@@ -10,39 +10,17 @@
 #include <string>
 
 #include "planner/depth_ladder.h"
+#include "planner/flank_shift.h"
 #include "planner/multi_geometry.h"
 #include "planner/number_text.h"
 #include "planner/plan_report.h"
+#include "planner/pullout.h"
 #include "planner/vec2_math.h"
 
 namespace clpost {
 
 using namespace vec2_math;
 using namespace plan_report;
-
-namespace {
-
-// pitch/(2 tan 30): the full depth of a 60 degree thread, the default pull-out and return height.
-double default_height(double pitch) {
-  return pitch / (2 * std::tan(rad(30)));
-}
-
-bool is_axis_angle(double deg_value) {
-  const double r = std::fabs(std::fmod(deg_value, 90.0));
-  return r < kAngleEps || 90 - r < kAngleEps;
-}
-
-// One way to define the pull-out, with where it was given (for the "more than one" error).
-struct PulloutSource {
-  std::string name;  // "the third GOTO", "ATANGL", "CHAMFR"
-  Site site;
-};
-
-std::string loc_text(SourceLoc l) {
-  return fmt::format("line {}, column {}", l.line, l.col);
-}
-
-}  // namespace
 
 bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settings, ThreadPlan& out,
                        Diagnostics& diags) {
@@ -111,107 +89,22 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
 
   // --- Flank shift. ---
   const size_t npass = ladder.depths.size();
-  std::vector<double> sigma(npass, 0);
-  if (plan.option != 0 && is_axis_angle(theta)) {
-    const double k = std::tan(rad(plan.tool_angle / 2));
-    for (size_t i = 0; i < npass; ++i) {
-      const int pass_no = static_cast<int>(i) + 1;
-      const bool single_edge = plan.option == 1 || plan.option == 3;
-      if (single_edge || pass_no % 2 == 0) sigma[i] = ladder.depths[i] * k;
-    }
-  }
-  const double sigma_max = npass ? *std::max_element(sigma.begin(), sigma.end()) : 0;
+  const FlankShifts shifts = flank_shifts(ladder.depths, plan.option, theta, plan.tool_angle);
+  const std::vector<double>& sigma = shifts.sigma;
+  const double sigma_max = shifts.max;
 
   // --- Pull-out. ---
-  std::vector<PulloutSource> sources;
-  if (w.atangl.set) sources.push_back({"ATANGL", {w.atangl.loc, &in.on_lines}});
-  if (w.chamfr.set && w.chamfr.length != 0)
-    sources.push_back({"CHAMFR", {w.chamfr.loc, &in.on_lines}});
-  if (sources.size() == 2 && (sources[1].site.loc.line < sources[0].site.loc.line ||
-                              (sources[1].site.loc.line == sources[0].site.loc.line &&
-                               sources[1].site.loc.col < sources[0].site.loc.col)))
-    std::swap(sources[0], sources[1]);
-  if (ngoto == 3) sources.push_back({"the third GOTO", goto_site(2)});
-  if (sources.size() > 1) {
-    for (size_t k = 1; k < sources.size(); ++k) {
-      r.error(sources[k].site,
-              fmt::format("{} defines a second pull-out: {} at {} already defines it; give only "
-                          "one of a third GOTO, ATANGL and CHAMFR",
-                          sources[k].name, sources[0].name, loc_text(sources[0].site.loc)));
-    }
-    if (sources.back().name == "the third GOTO") sequence_note();
-    return false;
-  }
-  std::optional<Vec2> delta;
-  double shorten = 0;  // negative CHAMFR: every pass ends this much earlier along t
-  double chamfer_angle = 0;
-  if (ngoto == 3) {
-    const Vec2 p3 = in.gotos[2].point;
-    const Vec2 d = p3 - p2;
-    if (length(d) <= kLengthEps) {
-      r.warning(goto_site(2), fmt::format("the third GOTO {} repeats the thread end: no "
-                                          "pull-out",
-                                          pt(p3)));
-    } else if (dot(d, out_dir) < -kLengthEps) {
-      r.error(goto_site(2),
-              fmt::format("the chamfer end {} is {} on the material side of the thread line: "
-                          "the pull-out must move out of the thread",
-                          pt(p3), num_text(-dot(d, out_dir))));
-      sequence_note();
-      return false;
-    } else {
-      delta = d;
-    }
-  } else if (w.atangl.set) {
-    const double h = w.atangl.height > 0 ? w.atangl.height : default_height(pitch.pitch);
-    delta = h * out_dir + (h * std::tan(rad(w.atangl.angle))) * t;
-  } else if (w.chamfr.set && w.chamfr.length != 0) {
-    const double l = std::fabs(w.chamfr.length);
-    delta = l * t + (l * std::tan(rad(w.chamfr.angle))) * out_dir;
-    if (w.chamfr.length < 0) shorten = l;
-  }
-  if (delta) {
-    chamfer_angle = deg(std::atan2(dot(*delta, out_dir), dot(*delta, t)));
-    plan.pullout = delta;
-    plan.pullout_linear = chamfer_angle < 30 - kAngleEps || chamfer_angle > 60 + kAngleEps;
-  }
+  Pullout pullout;
+  if (!make_pullout(in, g, pitch.pitch, pullout, r)) return false;
+  const std::optional<Vec2> delta = pullout.delta;
+  const double shorten = pullout.shorten;
+  plan.pullout = delta;
+  plan.pullout_linear = pullout.linear;
 
   // --- Clearance: the line, parallel to the thread, that the tool returns along. ---
-  // Highest pull-out end over all passes (the shallowest pass), above the thread line.
   const double d_min = *std::min_element(ladder.depths.begin(), ladder.depths.end());
-  const double top =
-      delta ? dot(*delta, out_dir) - d_min : -std::numeric_limits<double>::infinity();
   double clear_h = 0;
-  if (w.ret.set) {
-    const Site ret{w.ret.loc, &in.on_lines};
-    if (w.ret.height_given) {
-      clear_h = w.ret.height;
-    } else if (plan.lead_along_z) {
-      clear_h = (p0.x - p2.x) / out_dir.x;
-      if (clear_h <= kLengthEps) {
-        return r.error(ret, fmt::format("RETURN without a height clears to the initial point's "
-                                        "X {}, which is not outside the thread end {}; give "
-                                        "RETURN,h",
-                                        num_text(p0.x), pt(p2)));
-      }
-    } else {
-      clear_h = (p0.z - p2.z) / out_dir.z;
-      if (clear_h <= kLengthEps) {
-        return r.error(ret, fmt::format("RETURN without a height clears to the initial point's "
-                                        "Z {}, which is not outside the thread end {}; give "
-                                        "RETURN,h",
-                                        num_text(p0.z), pt(p2)));
-      }
-    }
-    if (top > clear_h + kLengthEps) {
-      r.warning(ret, fmt::format("the return height {} is below the pull-out end ({} above the "
-                                 "thread line): the tool clears to {}",
-                                 num_text(clear_h), num_text(top), num_text(top)));
-      clear_h = top;
-    }
-  } else {
-    clear_h = std::max(default_height(pitch.pitch), top);
-  }
+  if (!clearance_height(in, g, pitch.pitch, pullout, d_min, clear_h, r)) return false;
   plan.clearance = clear_h;
 
   // --- Passes. ---
