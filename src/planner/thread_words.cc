@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -338,13 +339,32 @@ void parse_cuts(Args& a, const Arg& key, ThreadWords& w) {
   w.cuts = cuts_of(key, nums);
 }
 
+// What a word with numbers is called in "expected <what> after KEY, found ..." and "KEY takes
+// <form>".
+struct WordForm {
+  std::string_view what;
+  std::string_view form;
+};
+
+// KEY,v[,second]: false (reported) when KEY is repeated or v is missing; a third number is
+// reported and skipped.
+template <typename P>
+bool two_numbers(Args& a, const Arg& key, const P& p, WordForm word, double& v,
+                 std::optional<double>& second) {
+  if (twice(a, key, p) || !a.number(key, word.what, v)) return false;
+  if (a.peek_number()) second = a.take().number;
+  a.no_more_numbers(key, word.form);
+  return true;
+}
+
 // FINCUT,count[,allowance].
 void parse_fincut(Args& a, const Arg& key, ThreadWords& w) {
   double count = 0;
-  if (twice(a, key, w.fincut) || !a.number(key, "the number of finish passes", count)) return;
-  double dist = 0;
-  if (a.peek_number()) dist = a.take().number;
-  a.no_more_numbers(key, "FINCUT,count[,allowance]");
+  std::optional<double> allowance;
+  if (!two_numbers(a, key, w.fincut, {"the number of finish passes", "FINCUT,count[,allowance]"},
+                   count, allowance))
+    return;
+  const double dist = allowance.value_or(0);
   if (!is_whole(count) || count < 0) {
     a.error(key.loc,
             fmt::format("FINCUT count must be a whole number, 0 or more; got {}", num_text(count)));
@@ -368,10 +388,11 @@ void parse_fincut(Args& a, const Arg& key, ThreadWords& w) {
 // ATANGL,angle[,height].
 void parse_atangl(Args& a, const Arg& key, ThreadWords& w) {
   double v = 0;
-  if (twice(a, key, w.atangl) || !a.number(key, "the pull-out angle in degrees", v)) return;
-  double h = 0;
-  if (a.peek_number()) h = a.take().number;
-  a.no_more_numbers(key, "ATANGL,angle[,height]");
+  std::optional<double> height;
+  if (!two_numbers(a, key, w.atangl, {"the pull-out angle in degrees", "ATANGL,angle[,height]"}, v,
+                   height))
+    return;
+  const double h = height.value_or(0);
   if (!std::isfinite(v) || v < -80 || v > 80) {
     a.error(key.loc, fmt::format("ATANGL must be between -80 and 80 degrees; got {}", num_text(v)));
     return;
@@ -391,14 +412,11 @@ void parse_atangl(Args& a, const Arg& key, ThreadWords& w) {
 // CHAMFR,length[,angle].
 void parse_chamfr(Args& a, const Arg& key, ThreadWords& w) {
   double v = 0;
-  if (twice(a, key, w.chamfr) || !a.number(key, "the chamfer length", v)) return;
-  bool angle_given = false;
-  double beta = 45;
-  if (a.peek_number()) {
-    angle_given = true;
-    beta = a.take().number;
-  }
-  a.no_more_numbers(key, "CHAMFR,length[,angle]");
+  std::optional<double> angle;
+  if (!two_numbers(a, key, w.chamfr, {"the chamfer length", "CHAMFR,length[,angle]"}, v, angle))
+    return;
+  const bool angle_given = angle.has_value();
+  const double beta = angle.value_or(45);
   if (!std::isfinite(v)) {
     a.error(key.loc, fmt::format("CHAMFR length must be a finite number; got {}", num_text(v)));
     return;
