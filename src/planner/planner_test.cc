@@ -626,6 +626,36 @@ TEST(Planner, ReturnWithoutHeightFromInsideIsAnError) {
             "not outside the thread end (X 10, Z -20); give RETURN,h\n");
 }
 
+// A face thread (lead along X) measures the same things along Z.
+TEST(Planner, FaceThreadInitialPointOnTheLineNeedsCutang) {
+  Geometry s;
+  s.p0 = {25, 0};
+  s.gotos = {{20, 0}, {5, 0}};
+  Planned r = plan("THREAD/ON,DEPTH,1", s);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.messages,
+            "t.cl:2:1: error: cannot choose the infeed direction: the initial point (X 25, Z 0) is "
+            "on the thread line; give CUTANG\n");
+}
+
+TEST(Planner, FaceThreadReturnWithoutHeightFromInsideIsAnError) {
+  // CUTANG 90 feeds toward +Z, so outward is -Z; the initial point at Z 1 is inside Z 0.
+  Geometry s;
+  s.p0 = {25, 1};
+  s.gotos = {{20, 0}, {5, 0}};
+  Planned r = plan("THREAD/ON,DEPTH,1,CUTANG,90,RETURN", s);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.messages,
+            "t.cl:2:29: error: RETURN without a height clears to the initial point's Z 1, which is "
+            "not outside the thread end (X 5, Z 0); give RETURN,h\n");
+  // From Z -2 it clears 2 outside the thread line.
+  s.p0 = {25, -2};
+  Planned ok = plan("THREAD/ON,DEPTH,1,CUTANG,90,RETURN", s);
+  ASSERT_TRUE(ok.ok) << ok.messages;
+  EXPECT_EQ(ok.plan.kind, ThreadKind::kFace);
+  EXPECT_EQ(ok.plan.clearance, 2);
+}
+
 TEST(Planner, ReturnBelowThePulloutIsRaised) {
   // CHAMFR,2 reaches 2 - 0.46 = 1.54 above the crest on the first pass; RETURN,0.5 is lower.
   Planned r = plan("THREAD/ON,DEPTH,0.92,CUTS,3,CHAMFR,2,RETURN,0.5");
