@@ -471,6 +471,47 @@ const ThreadWordRule* find_thread_word(const Arg& key) {
   return nullptr;
 }
 
+// The pitch words of one statement as they are read.
+struct PitchReading {
+  PitchWords pw;
+  std::string pitch_word;    // what gave the pitch value, for "already given by ..."
+  bool qualifiable = false;  // a leading value not yet qualified by TPI|IPR|MMPR|PERREV
+  double leading = 0;
+};
+
+// PITCH/v: the leading value, threads per CL unit unless a unit word follows.
+void leading_value(Args& a, LengthUnit cl_units, PitchReading& s) {
+  const Arg& n = a.take();
+  if (s.pw.value_given) {
+    a.error(n.loc, fmt::format("unexpected number {}: the pitch is already given by {} at {}",
+                               n.text, s.pitch_word, a.where(s.pw.value_loc, n.loc)));
+    a.skip_numbers();
+    return;
+  }
+  if (!std::isfinite(n.number) || n.number <= 0) {
+    a.error(n.loc, fmt::format("the pitch value must be positive; got {}", num_text(n.number)));
+    a.skip_numbers();
+    return;
+  }
+  s.leading = n.number;
+  set_pitch("", s.leading, cl_units, n.loc, s.pw);
+  s.pitch_word = fmt::format("the value {}", n.text);
+  s.qualifiable = true;
+}
+
+// PITCH/v,TPI: the unit word `key` (with no number after it) qualifies the leading value.
+void qualify_leading(Args& a, const Arg& key, LengthUnit cl_units, PitchReading& s) {
+  if (!s.qualifiable) {
+    a.error(key.loc, fmt::format("expected {} after {}, found {}", unit_what(key.text), key.text,
+                                 a.found()));
+    return;
+  }
+  const SourceLoc vloc = s.pw.value_loc;
+  set_pitch(key.text, s.leading, cl_units, vloc, s.pw);
+  s.pitch_word = fmt::format("{} {}", num_text(s.leading), key.text);
+  s.qualifiable = false;
+}
+
 }  // namespace
 
 bool parse_thread_words(const Statement& st, size_t first_arg, LengthUnit cl_units,
@@ -506,47 +547,20 @@ bool parse_thread_words(const Statement& st, size_t first_arg, LengthUnit cl_uni
 bool parse_pitch_words(const Statement& st, size_t first_arg, LengthUnit cl_units, PitchSpec& pitch,
                        Diagnostics& diags) {
   Args a(st, first_arg, diags);
-  PitchWords pw;
-  std::string pitch_word;
-  bool qualifiable = false;  // a leading value not yet qualified by TPI|IPR|MMPR|PERREV
-  double leading = 0;
+  PitchReading s;
   while (!a.done()) {
     if (a.peek_number()) {
-      const Arg& n = a.take();
-      if (pw.value_given) {
-        a.error(n.loc, fmt::format("unexpected number {}: the pitch is already given by {} at {}",
-                                   n.text, pitch_word, a.where(pw.value_loc, n.loc)));
-        a.skip_numbers();
-        continue;
-      }
-      if (!std::isfinite(n.number) || n.number <= 0) {
-        a.error(n.loc, fmt::format("the pitch value must be positive; got {}", num_text(n.number)));
-        a.skip_numbers();
-        continue;
-      }
-      leading = n.number;
-      set_pitch("", leading, cl_units, n.loc, pw);
-      pitch_word = fmt::format("the value {}", n.text);
-      qualifiable = true;
+      leading_value(a, cl_units, s);
       continue;
     }
     const Arg& key = a.take();
     if (is_pitch_unit(key) && !a.peek_number()) {
-      // PITCH/v,TPI: qualifies the leading value.
-      if (!qualifiable) {
-        a.error(key.loc, fmt::format("expected {} after {}, found {}", unit_what(key.text),
-                                     key.text, a.found()));
-        continue;
-      }
-      const SourceLoc vloc = pw.value_loc;
-      set_pitch(key.text, leading, cl_units, vloc, pw);
-      pitch_word = fmt::format("{} {}", num_text(leading), key.text);
-      qualifiable = false;
+      qualify_leading(a, key, cl_units, s);
       continue;
     }
-    qualifiable = false;
+    s.qualifiable = false;
     if (is_pitch_couplet_word(key)) {
-      pitch_couplet(a, key, cl_units, pw, pitch_word);
+      pitch_couplet(a, key, cl_units, s.pw, s.pitch_word);
     } else {
       a.error(key.loc,
               fmt::format("unknown pitch word '{}'; valid words: {}", key.text, kPitchWordList));
@@ -554,12 +568,12 @@ bool parse_pitch_words(const Statement& st, size_t first_arg, LengthUnit cl_unit
     }
   }
   if (!a.ok()) return false;
-  if (st.major == "PITCH" && !pw.value_given) {
+  if (st.major == "PITCH" && !s.pw.value_given) {
     diags.error(st.loc, st.line_text(st.loc.line),
                 "PITCH needs a value: PITCH/v[,TPI|IPR|MMPR|PERREV][,MULTRD,n][,INCR|DECR,dv]");
     return false;
   }
-  pw.apply_to(pitch);
+  s.pw.apply_to(pitch);
   return true;
 }
 
