@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "planner/number_text.h"
 
@@ -85,127 +86,181 @@ std::string steps_text(const std::vector<CutSteps>& steps, bool step_word) {
   return s;
 }
 
-}  // namespace
+// The words a ladder is built from and where its errors go.
+struct LadderWords {
+  const ThreadWords& w;
+  int option;
+  const SavedLines& lines;
+  SourceLoc on_loc;
+  std::string_view on_word;
+  Diagnostics& diags;
+  double allowance;  // f: FINCUT dist, else 0
+  int finishing;     // m: FINCUT count, else 0
 
-bool make_depth_ladder(const ThreadWords& w, int option, const SavedLines& lines, SourceLoc on_loc,
-                       std::string_view on_word, DepthLadder& out, Diagnostics& diags) {
-  auto error = [&](SourceLoc loc, std::string message) {
+  // Reports at `loc` (on the THREAD/ON statement) and returns false.
+  bool error(SourceLoc loc, std::string message) const {
     diags.error(loc, lines.text(loc.line), std::move(message));
     return false;
-  };
-  const double f = w.fincut.set ? w.fincut.dist : 0;
-  const int m = w.fincut.set ? w.fincut.count : 0;
-  // Where a "too many passes" error points: the word that decided the count.
-  const SourceLoc count_loc = w.cuts.set    ? w.cuts.loc
-                              : w.step.set  ? w.step.loc
-                              : w.depth.set ? w.depth.loc
-                                            : on_loc;
-  auto check_total = [&](double roughing) {
-    if (roughing + m <= kMaxPasses) return true;
-    return error(count_loc,
-                 fmt::format("the thread needs {} passes ({} roughing + {} finish); at most {} "
-                             "are allowed",
-                             num_text(roughing + m), num_text(roughing), m, kMaxPasses));
-  };
+  }
 
-  DepthLadder l;
-  l.allowance = f;
-  l.finishing = m;
-  std::vector<CutSteps> steps;
-  bool step_word = false;
+  // At most kMaxPasses passes with `roughing` roughing passes; else reported at the word that
+  // decided the count.
+  bool check_total(double roughing) const {
+    if (roughing + finishing <= kMaxPasses) return true;
+    const SourceLoc count_loc = w.cuts.set    ? w.cuts.loc
+                                : w.step.set  ? w.step.loc
+                                : w.depth.set ? w.depth.loc
+                                              : on_loc;
+    return error(
+        count_loc,
+        fmt::format("the thread needs {} passes ({} roughing + {} finish); at most {} "
+                    "are allowed",
+                    num_text(roughing + finishing), num_text(roughing), finishing, kMaxPasses));
+  }
+};
+
+// The steps the CL gives (CUTS,c,s or couplets, or CUTS,c with STEP,s), empty when it gives none.
+// False, reported, when it gives them twice.
+bool given_steps(const LadderWords& lw, std::vector<CutSteps>& steps, bool& step_word) {
+  const ThreadWords& w = lw.w;
   if (w.cuts.set && !w.cuts.steps.empty()) {
     if (w.step.set) {
-      return error(w.step.loc,
-                   fmt::format("STEP {} conflicts with the steps given by {}: give the step "
-                               "either with CUTS,c,s or with CUTS,c,STEP,s",
-                               num_text(w.step.value), steps_text(w.cuts.steps, false)));
+      return lw.error(w.step.loc,
+                      fmt::format("STEP {} conflicts with the steps given by {}: give the step "
+                                  "either with CUTS,c,s or with CUTS,c,STEP,s",
+                                  num_text(w.step.value), steps_text(w.cuts.steps, false)));
     }
     steps = w.cuts.steps;
   } else if (w.cuts.set && w.step.set) {
     steps.push_back(CutSteps{w.cuts.count, w.step.value, w.cuts.loc});
     step_word = true;
   }
+  return true;
+}
 
-  if (!steps.empty()) {
-    // Constant steps or couplets: the ladder is given; DEPTH, if any, verifies it.
-    double sum = 0;
-    int count = 0;
-    for (const CutSteps& s : steps) {
-      sum += s.count * s.step;
-      count += s.count;
-    }
-    if (!check_total(count)) return false;
-    if (w.depth.set) {
-      if (std::fabs(sum + f - w.depth.value) > kDepthTolerance) {
-        return error(w.depth.loc, fmt::format("DEPTH {} does not match {}{} = {}",
-                                              num_text(w.depth.value), steps_text(steps, step_word),
-                                              f > 0 ? fmt::format(" + FINCUT {}", num_text(f)) : "",
-                                              num_text(sum + f)));
-      }
-      l.depth = w.depth.value;
-    } else {
-      l.depth = sum + f;
-    }
-    l.roughing_depth = l.depth - f;
-    double d = 0;
-    for (const CutSteps& s : steps) {
-      for (int k = 0; k < s.count; ++k) {
-        d += s.step;
-        l.depths.push_back(d);
-      }
-    }
-    l.depths.back() = l.roughing_depth;
-    l.roughing = count;
-  } else if (w.depth.set) {
-    l.depth = w.depth.value;
-    if (f >= l.depth) {
-      return error(w.fincut.loc, fmt::format("FINCUT allowance {} must be less than DEPTH {}",
-                                             num_text(f), num_text(l.depth)));
-    }
-    l.roughing_depth = l.depth - f;
-    if (w.cuts.set) {
-      if (!check_total(w.cuts.count)) return false;
-      l.depths = option_ladder_by_count(option, l.roughing_depth, w.cuts.count);
-    } else if (w.step.set) {
-      const double c = option_count_for_first_step(option, l.roughing_depth, w.step.value);
-      if (!check_total(c)) return false;
-      l.depths =
-          option_ladder_by_first_step(option, l.roughing_depth, w.step.value, static_cast<int>(c));
-    } else {
-      if (!check_total(1)) return false;
-      l.depths.push_back(l.roughing_depth);
-    }
-    l.roughing = static_cast<int>(l.depths.size());
-  } else if (w.cuts.set) {
-    if (w.cuts.count > 1) {
-      return error(w.cuts.loc, fmt::format("CUTS {} needs a depth or a step: give DEPTH,d, "
-                                           "STEP,s or CUTS,{},s",
-                                           w.cuts.count, w.cuts.count));
-    }
-    // CUTS,1 alone: one pass on the contour.
-    if (f > 0) {
-      return error(w.fincut.loc, fmt::format("FINCUT allowance {} needs DEPTH: CUTS 1 without "
-                                             "DEPTH cuts on the contour (depth 0)",
-                                             num_text(f)));
-    }
-    if (!check_total(1)) return false;
-    l.depth = 0;
-    l.roughing_depth = 0;
-    l.depths.push_back(0);
-    l.roughing = 1;
-  } else if (w.step.set) {
-    return error(w.step.loc, fmt::format("STEP {} needs DEPTH or CUTS: give DEPTH,d or CUTS,c "
-                                         "with it",
-                                         num_text(w.step.value)));
-  } else {
-    return error(on_loc,
-                 fmt::format("{} gives no thread depth: expected DEPTH, CUTS or STEP", on_word));
+// Constant steps or couplets: the ladder is given; DEPTH, if any, verifies it.
+bool ladder_of_steps(const LadderWords& lw, const std::vector<CutSteps>& steps, bool step_word,
+                     DepthLadder& l) {
+  const ThreadWords& w = lw.w;
+  const double f = lw.allowance;
+  double sum = 0;
+  int count = 0;
+  for (const CutSteps& s : steps) {
+    sum += s.count * s.step;
+    count += s.count;
   }
+  if (!lw.check_total(count)) return false;
+  if (w.depth.set) {
+    if (std::fabs(sum + f - w.depth.value) > kDepthTolerance) {
+      return lw.error(
+          w.depth.loc,
+          fmt::format("DEPTH {} does not match {}{} = {}", num_text(w.depth.value),
+                      steps_text(steps, step_word),
+                      f > 0 ? fmt::format(" + FINCUT {}", num_text(f)) : "", num_text(sum + f)));
+    }
+    l.depth = w.depth.value;
+  } else {
+    l.depth = sum + f;
+  }
+  l.roughing_depth = l.depth - f;
+  double d = 0;
+  for (const CutSteps& s : steps) {
+    for (int k = 0; k < s.count; ++k) {
+      d += s.step;
+      l.depths.push_back(d);
+    }
+  }
+  l.depths.back() = l.roughing_depth;
+  l.roughing = count;
+  return true;
+}
 
+// DEPTH with CUTS (a count), STEP (the first step) or alone (one pass): the OPTION law.
+bool ladder_of_depth(const LadderWords& lw, DepthLadder& l) {
+  const ThreadWords& w = lw.w;
+  const double f = lw.allowance;
+  l.depth = w.depth.value;
+  if (f >= l.depth) {
+    return lw.error(w.fincut.loc, fmt::format("FINCUT allowance {} must be less than DEPTH {}",
+                                              num_text(f), num_text(l.depth)));
+  }
+  l.roughing_depth = l.depth - f;
+  if (w.cuts.set) {
+    if (!lw.check_total(w.cuts.count)) return false;
+    l.depths = option_ladder_by_count(lw.option, l.roughing_depth, w.cuts.count);
+  } else if (w.step.set) {
+    const double c = option_count_for_first_step(lw.option, l.roughing_depth, w.step.value);
+    if (!lw.check_total(c)) return false;
+    l.depths =
+        option_ladder_by_first_step(lw.option, l.roughing_depth, w.step.value, static_cast<int>(c));
+  } else {
+    if (!lw.check_total(1)) return false;
+    l.depths.push_back(l.roughing_depth);
+  }
+  l.roughing = static_cast<int>(l.depths.size());
+  return true;
+}
+
+// CUTS without DEPTH or steps: CUTS,1 is one pass on the contour (depth 0).
+bool ladder_of_count(const LadderWords& lw, DepthLadder& l) {
+  const ThreadWords& w = lw.w;
+  if (w.cuts.count > 1) {
+    return lw.error(w.cuts.loc, fmt::format("CUTS {} needs a depth or a step: give DEPTH,d, "
+                                            "STEP,s or CUTS,{},s",
+                                            w.cuts.count, w.cuts.count));
+  }
+  if (lw.allowance > 0) {
+    return lw.error(w.fincut.loc, fmt::format("FINCUT allowance {} needs DEPTH: CUTS 1 without "
+                                              "DEPTH cuts on the contour (depth 0)",
+                                              num_text(lw.allowance)));
+  }
+  if (!lw.check_total(1)) return false;
+  l.depth = 0;
+  l.roughing_depth = 0;
+  l.depths.push_back(0);
+  l.roughing = 1;
+  return true;
+}
+
+// The roughing passes of whichever form the words give.
+bool roughing_ladder(const LadderWords& lw, DepthLadder& l) {
+  const ThreadWords& w = lw.w;
+  std::vector<CutSteps> steps;
+  bool step_word = false;
+  if (!given_steps(lw, steps, step_word)) return false;
+  if (!steps.empty()) return ladder_of_steps(lw, steps, step_word, l);
+  if (w.depth.set) return ladder_of_depth(lw, l);
+  if (w.cuts.set) return ladder_of_count(lw, l);
+  if (w.step.set) {
+    return lw.error(w.step.loc, fmt::format("STEP {} needs DEPTH or CUTS: give DEPTH,d or CUTS,c "
+                                            "with it",
+                                            num_text(w.step.value)));
+  }
+  return lw.error(
+      lw.on_loc, fmt::format("{} gives no thread depth: expected DEPTH, CUTS or STEP", lw.on_word));
+}
+
+}  // namespace
+
+bool make_depth_ladder(const ThreadWords& w, int option, const SavedLines& lines, SourceLoc on_loc,
+                       std::string_view on_word, DepthLadder& out, Diagnostics& diags) {
+  const LadderWords lw{.w = w,
+                       .option = option,
+                       .lines = lines,
+                       .on_loc = on_loc,
+                       .on_word = on_word,
+                       .diags = diags,
+                       .allowance = w.fincut.set ? w.fincut.dist : 0,
+                       .finishing = w.fincut.set ? w.fincut.count : 0};
+  DepthLadder l;
+  l.allowance = lw.allowance;
+  l.finishing = lw.finishing;
+  if (!roughing_ladder(lw, l)) return false;
+  // The FINCUT passes at D: the first removes the allowance (a finish pass), the others spring.
   l.kinds.assign(l.depths.size(), PassKind::kRough);
-  for (int k = 0; k < m; ++k) {
+  for (int k = 0; k < lw.finishing; ++k) {
     l.depths.push_back(l.depth);
-    l.kinds.push_back(k == 0 && f > 0 ? PassKind::kFinish : PassKind::kSpring);
+    l.kinds.push_back(k == 0 && lw.allowance > 0 ? PassKind::kFinish : PassKind::kSpring);
   }
   out = std::move(l);
   return true;

@@ -1,17 +1,22 @@
 // Multi-pass thread planning (threading.md sections 4-8; the decisions taken where it is silent
-// are in docs/threading.md). Single-pass and coupled threads: path_threads.cc.
+// are in docs/threading.md): the GOTOs, then each phase in its own file (multi_geometry.cc,
+// depth_ladder.cc, flank_shift.cc, pullout.cc), then the passes. Single-pass and coupled
+// threads: path_threads.cc.
 #include "planner/planner.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <string>
+#include <utility>
 
 #include "planner/depth_ladder.h"
+#include "planner/flank_shift.h"
+#include "planner/multi_geometry.h"
+#include "planner/multi_sites.h"
 #include "planner/number_text.h"
 #include "planner/plan_report.h"
+#include "planner/pullout.h"
 #include "planner/vec2_math.h"
 
 namespace clpost {
@@ -21,24 +26,104 @@ using namespace plan_report;
 
 namespace {
 
-// pitch/(2 tan 30): the full depth of a 60 degree thread, the default pull-out and return height.
-double default_height(double pitch) {
-  return pitch / (2 * std::tan(rad(30)));
+// 2 or 3 GOTOs: thread start, thread end, optional chamfer end.
+bool check_goto_count(const MultiThreadInput& in, Reporter& r) {
+  const size_t ngoto = in.gotos.size();
+  if (ngoto < 2) {
+    return r.error(on_site(in),
+                   fmt::format("{} needs 2 or 3 GOTOs before {} (thread start, thread end, "
+                               "optional chamfer end); found {}",
+                               in.on_word, in.off_word, ngoto));
+  }
+  if (ngoto > 3) {
+    r.error(goto_site(in, 3), fmt::format("{} takes at most 3 GOTOs before {} (thread start, "
+                                          "thread end, chamfer end); this is GOTO 4 of {}",
+                                          in.on_word, in.off_word, ngoto));
+    note_sequence_start(in, r);
+    return false;
+  }
+  return true;
 }
 
-bool is_axis_angle(double deg_value) {
-  const double r = std::fabs(std::fmod(deg_value, 90.0));
-  return r < kAngleEps || 90 - r < kAngleEps;
+// What the plan says about the whole thread before its passes.
+ThreadPlan plan_header(const MultiThreadInput& in, const PlannerSettings& settings,
+                       const PitchSpec& pitch, const MultiGeometry& g) {
+  ThreadPlan plan;
+  plan.loc = in.on_loc;
+  plan.form = ThreadForm::kMulti;
+  plan.units = in.units;
+  plan.pitch = pitch;
+  plan.lead = pitch.starts * pitch.pitch;
+  plan.p0 = g.p0;
+  plan.p1 = g.p1;
+  plan.p2 = g.p2;
+  plan.feed_approach = in.feed_approach;
+  plan.kind = kind_of(g.d12);
+  plan.lead_along_z = g.lead_along_z;
+  plan.cutang = g.cutang;
+  plan.side = side_of(g);
+  plan.option = in.words.option.set ? in.words.option.value : settings.default_option;
+  plan.tool_angle = in.words.tlangl.set ? in.words.tlangl.value : settings.default_tool_angle;
+  return plan;
 }
 
-// One way to define the pull-out, with where it was given (for the "more than one" error).
-struct PulloutSource {
-  std::string name;  // "the third GOTO", "ATANGL", "CHAMFR"
-  Site site;
+// What every pass of the thread shares.
+struct PassFrame {
+  const MultiGeometry& g;
+  const FlankShifts& shifts;
+  const Pullout& pullout;
+  double clearance;  // the height of the clearance line above the thread line
+  int starts;        // MULTRD, 1 to kMaxStarts
+  double pitch;      // start k begins k pitches earlier, measured along the lead axis ...
+  double t_lead;     // ... along which t has this length: k * pitch / t_lead along t
 };
 
-std::string loc_text(SourceLoc l) {
-  return fmt::format("line {}, column {}", l.line, l.col);
+// Pass `i` of the depth ladder for start `k`: the cut, its pull-out, the clear position and the
+// approach along CUTANG from the clearance line.
+ThreadPass make_pass(const PassFrame& f, const DepthLadder& ladder, size_t i, int k,
+                     bool by_angle) {
+  const MultiGeometry& g = f.g;
+  const double d = ladder.depths[i];
+  const double sigma = f.shifts.sigma[i];
+  const Vec2 base = (d / g.nu) * g.u + sigma * g.t;
+  ThreadPass p;
+  p.n = static_cast<int>(i) + 1;
+  p.start = k;
+  p.depth = d;
+  p.kind = ladder.kinds[i];
+  p.shift = sigma;
+  const double offset = by_angle ? 0 : k * f.pitch / f.t_lead;
+  p.from = g.p1 + base - offset * g.t;
+  p.to = g.p2 + base - (f.shifts.max + f.pullout.shorten) * g.t;
+  p.pullout_end = f.pullout.delta ? p.to + *f.pullout.delta : p.to;
+  const double h_end = dot(p.pullout_end - g.p1, g.out_dir);
+  p.clear = p.pullout_end + (f.clearance - h_end) * g.out_dir;
+  p.approach = p.from - ((f.clearance + d) / g.nu) * g.u;
+  p.start_angle = by_angle ? k * 360.0 / f.starts : 0;
+  return p;
+}
+
+// Every pass in cutting order: pass 1 of every start, then pass 2 of every start, ... False,
+// reported, when the flank shifts and a negative CHAMFR leave the passes no length.
+bool make_passes(const MultiThreadInput& in, const PlannerSettings& settings,
+                 const DepthLadder& ladder, const PassFrame& f, ThreadPlan& plan, Reporter& r) {
+  const MultiGeometry& g = f.g;
+  const double cut_len = g.length - f.shifts.max - f.pullout.shorten;
+  if (cut_len <= kLengthEps) {
+    return r.error(on_site(in), fmt::format("the passes have no length: thread length {} - "
+                                            "largest flank shift {} - negative CHAMFR {} = {}",
+                                            num_text(g.length), num_text(f.shifts.max),
+                                            num_text(f.pullout.shorten), num_text(cut_len)));
+  }
+  plan.starts_by_angle = f.starts > 1 && settings.start_angle_word;
+  const size_t npass = ladder.depths.size();
+  plan.passes.reserve(npass * static_cast<size_t>(f.starts));
+  for (size_t i = 0; i < npass; ++i) {
+    for (int k = 0; k < f.starts; ++k) {
+      plan.passes.push_back(make_pass(f, ladder, i, k, plan.starts_by_angle));
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -46,249 +131,37 @@ std::string loc_text(SourceLoc l) {
 bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settings, ThreadPlan& out,
                        Diagnostics& diags) {
   Reporter r(diags);
-  const Site on{in.on_loc, &in.on_lines};
-  const ThreadWords& w = in.words;
-  auto goto_site = [&](size_t i) { return Site{in.gotos[i].loc, &in.gotos[i].lines}; };
-  auto sequence_note = [&] { r.note(on, "the thread sequence starts here"); };
-
-  // --- The GOTOs: 2 or 3. ---
-  const size_t ngoto = in.gotos.size();
-  if (ngoto < 2) {
-    return r.error(on, fmt::format("{} needs 2 or 3 GOTOs before {} (thread start, thread end, "
-                                   "optional chamfer end); found {}",
-                                   in.on_word, in.off_word, ngoto));
-  }
-  if (ngoto > 3) {
-    r.error(goto_site(3), fmt::format("{} takes at most 3 GOTOs before {} (thread start, thread "
-                                      "end, chamfer end); this is GOTO 4 of {}",
-                                      in.on_word, in.off_word, ngoto));
-    sequence_note();
-    return false;
-  }
-  const Vec2 p0 = in.p0;
-  const Vec2 p1 = in.gotos[0].point;
-  const Vec2 p2 = in.gotos[1].point;
-  const Vec2 d12 = p2 - p1;
-  const double len = length(d12);
-  if (len <= kLengthEps) {
-    r.error(goto_site(1), fmt::format("the thread end {} is the thread start: the thread has no "
-                                      "length",
-                                      pt(p2)));
-    sequence_note();
-    return false;
-  }
-
-  // --- Pitch. ---
+  MultiGeometry g;
+  if (!check_goto_count(in, r) || !make_thread_line(in, g, r)) return false;
   PitchSpec pitch = in.modal_pitch;
-  w.pitch.apply_to(pitch);
-  if (!check_pitch(pitch, on, in.on_word, settings, r)) return false;
+  in.words.pitch.apply_to(pitch);
+  if (!check_pitch(pitch, on_site(in), in.on_word, settings, r)) return false;
+  if (!make_infeed_direction(in, g, r)) return false;
+  ThreadPlan plan = plan_header(in, settings, pitch, g);
 
-  // --- Geometry. ---
-  ThreadPlan plan;
-  plan.loc = in.on_loc;
-  plan.form = ThreadForm::kMulti;
-  plan.units = in.units;
-  plan.pitch = pitch;
-  plan.lead = pitch.starts * pitch.pitch;
-  plan.p0 = p0;
-  plan.p1 = p1;
-  plan.p2 = p2;
-  plan.feed_approach = in.feed_approach;
-  plan.kind = kind_of(d12);
-  plan.lead_along_z = std::fabs(d12.z) >= std::fabs(d12.x);
-  const Vec2 t = (1 / len) * d12;
-
-  double theta = 0;
-  if (w.cutang.set) {
-    theta = w.cutang.value;
-    const Vec2 u = direction(theta);
-    const double off = deg(std::acos(std::min(1.0, std::fabs(dot(u, t)))));
-    if (off <= 10 + kAngleEps) {
-      return r.error(
-          Site{w.cutang.loc, &in.on_lines},
-          fmt::format("CUTANG {} is only {}° off the thread line (direction {}° from "
-                      "{} to {}); the infeed must be more than 10° off it",
-                      num_text(theta), num_text(off), num_text(angle_of(t)), pt(p1), pt(p2)));
-    }
-  } else if (plan.lead_along_z) {
-    // Turn / turn-taper: along X toward the thread line from the initial point.
-    const double x_line = p1.x + (p0.z - p1.z) * d12.x / d12.z;
-    const double gap = x_line - p0.x;
-    if (std::fabs(gap) <= kLengthEps) {
-      return r.error(on, fmt::format("cannot choose the infeed direction: the initial point {} "
-                                     "is on the thread line; give CUTANG",
-                                     pt(p0)));
-    }
-    theta = gap < 0 ? 180 : 0;
-  } else {
-    // Face / face-taper: along Z toward the thread line.
-    const double z_line = p1.z + (p0.x - p1.x) * d12.z / d12.x;
-    const double gap = z_line - p0.z;
-    if (std::fabs(gap) <= kLengthEps) {
-      return r.error(on, fmt::format("cannot choose the infeed direction: the initial point {} "
-                                     "is on the thread line; give CUTANG",
-                                     pt(p0)));
-    }
-    theta = gap < 0 ? 270 : 90;
-  }
-  plan.cutang = theta;
-  const Vec2 u = direction(theta);
-  Vec2 n{t.z, -t.x};
-  if (dot(n, u) < 0) n = -n;
-  const double nu = dot(n, u);
-  const Vec2 out_dir = -n;  // outward: away from the material
-  // Face threads (lead along X) are reported external; otherwise the side of the material does.
-  plan.side = (!plan.lead_along_z || n.x < 0) ? ThreadSide::kExternal : ThreadSide::kInternal;
-
-  plan.option = w.option.set ? w.option.value : settings.default_option;
-  plan.tool_angle = w.tlangl.set ? w.tlangl.value : settings.default_tool_angle;
-
-  // --- Depth ladder. ---
   DepthLadder ladder;
-  if (!make_depth_ladder(w, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))
+  if (!make_depth_ladder(in.words, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))
     return false;
   plan.depth = ladder.depth;
+  const FlankShifts shifts = flank_shifts(ladder.depths, plan.option, g.cutang, plan.tool_angle);
+  Pullout pullout;
+  if (!make_pullout(in, g, pitch.pitch, pullout, r)) return false;
+  plan.pullout = pullout.delta;
+  plan.pullout_linear = pullout.linear;
+  const double shallowest = *std::min_element(ladder.depths.begin(), ladder.depths.end());
+  if (!clearance_height(in, g, pitch.pitch, pullout, shallowest, plan.clearance, r)) return false;
 
-  // --- Flank shift. ---
-  const size_t npass = ladder.depths.size();
-  std::vector<double> sigma(npass, 0);
-  if (plan.option != 0 && is_axis_angle(theta)) {
-    const double k = std::tan(rad(plan.tool_angle / 2));
-    for (size_t i = 0; i < npass; ++i) {
-      const int pass_no = static_cast<int>(i) + 1;
-      const bool single_edge = plan.option == 1 || plan.option == 3;
-      if (single_edge || pass_no % 2 == 0) sigma[i] = ladder.depths[i] * k;
-    }
-  }
-  const double sigma_max = npass ? *std::max_element(sigma.begin(), sigma.end()) : 0;
-
-  // --- Pull-out. ---
-  std::vector<PulloutSource> sources;
-  if (w.atangl.set) sources.push_back({"ATANGL", {w.atangl.loc, &in.on_lines}});
-  if (w.chamfr.set && w.chamfr.length != 0)
-    sources.push_back({"CHAMFR", {w.chamfr.loc, &in.on_lines}});
-  if (sources.size() == 2 && (sources[1].site.loc.line < sources[0].site.loc.line ||
-                              (sources[1].site.loc.line == sources[0].site.loc.line &&
-                               sources[1].site.loc.col < sources[0].site.loc.col)))
-    std::swap(sources[0], sources[1]);
-  if (ngoto == 3) sources.push_back({"the third GOTO", goto_site(2)});
-  if (sources.size() > 1) {
-    for (size_t k = 1; k < sources.size(); ++k) {
-      r.error(sources[k].site,
-              fmt::format("{} defines a second pull-out: {} at {} already defines it; give only "
-                          "one of a third GOTO, ATANGL and CHAMFR",
-                          sources[k].name, sources[0].name, loc_text(sources[0].site.loc)));
-    }
-    if (sources.back().name == "the third GOTO") sequence_note();
-    return false;
-  }
-  std::optional<Vec2> delta;
-  double shorten = 0;  // negative CHAMFR: every pass ends this much earlier along t
-  double chamfer_angle = 0;
-  if (ngoto == 3) {
-    const Vec2 p3 = in.gotos[2].point;
-    const Vec2 d = p3 - p2;
-    if (length(d) <= kLengthEps) {
-      r.warning(goto_site(2), fmt::format("the third GOTO {} repeats the thread end: no "
-                                          "pull-out",
-                                          pt(p3)));
-    } else if (dot(d, out_dir) < -kLengthEps) {
-      r.error(goto_site(2),
-              fmt::format("the chamfer end {} is {} on the material side of the thread line: "
-                          "the pull-out must move out of the thread",
-                          pt(p3), num_text(-dot(d, out_dir))));
-      sequence_note();
-      return false;
-    } else {
-      delta = d;
-    }
-  } else if (w.atangl.set) {
-    const double h = w.atangl.height > 0 ? w.atangl.height : default_height(pitch.pitch);
-    delta = h * out_dir + (h * std::tan(rad(w.atangl.angle))) * t;
-  } else if (w.chamfr.set && w.chamfr.length != 0) {
-    const double l = std::fabs(w.chamfr.length);
-    delta = l * t + (l * std::tan(rad(w.chamfr.angle))) * out_dir;
-    if (w.chamfr.length < 0) shorten = l;
-  }
-  if (delta) {
-    chamfer_angle = deg(std::atan2(dot(*delta, out_dir), dot(*delta, t)));
-    plan.pullout = delta;
-    plan.pullout_linear = chamfer_angle < 30 - kAngleEps || chamfer_angle > 60 + kAngleEps;
-  }
-
-  // --- Clearance: the line, parallel to the thread, that the tool returns along. ---
-  // Highest pull-out end over all passes (the shallowest pass), above the thread line.
-  const double d_min = *std::min_element(ladder.depths.begin(), ladder.depths.end());
-  const double top =
-      delta ? dot(*delta, out_dir) - d_min : -std::numeric_limits<double>::infinity();
-  double clear_h = 0;
-  if (w.ret.set) {
-    const Site ret{w.ret.loc, &in.on_lines};
-    if (w.ret.height_given) {
-      clear_h = w.ret.height;
-    } else if (plan.lead_along_z) {
-      clear_h = (p0.x - p2.x) / out_dir.x;
-      if (clear_h <= kLengthEps) {
-        return r.error(ret, fmt::format("RETURN without a height clears to the initial point's "
-                                        "X {}, which is not outside the thread end {}; give "
-                                        "RETURN,h",
-                                        num_text(p0.x), pt(p2)));
-      }
-    } else {
-      clear_h = (p0.z - p2.z) / out_dir.z;
-      if (clear_h <= kLengthEps) {
-        return r.error(ret, fmt::format("RETURN without a height clears to the initial point's "
-                                        "Z {}, which is not outside the thread end {}; give "
-                                        "RETURN,h",
-                                        num_text(p0.z), pt(p2)));
-      }
-    }
-    if (top > clear_h + kLengthEps) {
-      r.warning(ret, fmt::format("the return height {} is below the pull-out end ({} above the "
-                                 "thread line): the tool clears to {}",
-                                 num_text(clear_h), num_text(top), num_text(top)));
-      clear_h = top;
-    }
-  } else {
-    clear_h = std::max(default_height(pitch.pitch), top);
-  }
-  plan.clearance = clear_h;
-
-  // --- Passes. ---
-  const double cut_len = len - sigma_max - shorten;
-  if (cut_len <= kLengthEps) {
-    return r.error(
-        on, fmt::format("the passes have no length: thread length {} - largest flank "
-                        "shift {} - negative CHAMFR {} = {}",
-                        num_text(len), num_text(sigma_max), num_text(shorten), num_text(cut_len)));
-  }
-  const int starts = std::clamp(pitch.starts, 1, kMaxStarts);
-  plan.starts_by_angle = starts > 1 && settings.start_angle_word;
   // Start k begins k pitches (measured along the lead axis) earlier; the end stays.
-  const double t_lead = plan.lead_along_z ? std::fabs(t.z) : std::fabs(t.x);
-  plan.passes.reserve(npass * static_cast<size_t>(starts));
-  for (size_t i = 0; i < npass; ++i) {
-    const double d = ladder.depths[i];
-    const Vec2 base = (d / nu) * u + sigma[i] * t;
-    for (int k = 0; k < starts; ++k) {
-      ThreadPass p;
-      p.n = static_cast<int>(i) + 1;
-      p.start = k;
-      p.depth = d;
-      p.kind = ladder.kinds[i];
-      p.shift = sigma[i];
-      const double offset = plan.starts_by_angle ? 0 : k * pitch.pitch / t_lead;
-      p.from = p1 + base - offset * t;
-      p.to = p2 + base - (sigma_max + shorten) * t;
-      p.pullout_end = delta ? p.to + *delta : p.to;
-      const double h_end = dot(p.pullout_end - p1, out_dir);
-      p.clear = p.pullout_end + (clear_h - h_end) * out_dir;
-      p.approach = p.from - ((clear_h + d) / nu) * u;
-      p.start_angle = plan.starts_by_angle ? k * 360.0 / starts : 0;
-      plan.passes.push_back(p);
-    }
-  }
-  plan.end_position = p1 + clear_h * out_dir;
+  const double t_lead = g.lead_along_z ? std::fabs(g.t.z) : std::fabs(g.t.x);
+  const PassFrame frame{.g = g,
+                        .shifts = shifts,
+                        .pullout = pullout,
+                        .clearance = plan.clearance,
+                        .starts = std::clamp(pitch.starts, 1, kMaxStarts),
+                        .pitch = pitch.pitch,
+                        .t_lead = t_lead};
+  if (!make_passes(in, settings, ladder, frame, plan, r)) return false;
+  plan.end_position = g.p1 + plan.clearance * g.out_dir;
   out = std::move(plan);
   return true;
 }

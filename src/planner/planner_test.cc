@@ -626,6 +626,29 @@ TEST(Planner, ReturnWithoutHeightFromInsideIsAnError) {
             "not outside the thread end (X 10, Z -20); give RETURN,h\n");
 }
 
+// A face thread (lead along X, P1 (X 20, Z 0) to P2 (X 5, Z 0)) measures the infeed side and
+// the RETURN height along Z.
+TEST(Planner, FaceThreadInitialPointErrorsAreAlongZ) {
+  auto face = [](Vec2 p0, const std::string& on_line) {
+    Geometry s;
+    s.p0 = p0;
+    s.gotos = {{20, 0}, {5, 0}};
+    return plan(on_line, s);
+  };
+  EXPECT_EQ(face({25, 0}, "THREAD/ON,DEPTH,1").messages,
+            "t.cl:2:1: error: cannot choose the infeed direction: the initial point (X 25, Z 0) is "
+            "on the thread line; give CUTANG\n");
+  // CUTANG 90 feeds toward +Z, so outward is -Z: Z 1 is inside the thread end's Z 0, Z -2 is 2
+  // outside it.
+  EXPECT_EQ(face({25, 1}, "THREAD/ON,DEPTH,1,CUTANG,90,RETURN").messages,
+            "t.cl:2:29: error: RETURN without a height clears to the initial point's Z 1, which is "
+            "not outside the thread end (X 5, Z 0); give RETURN,h\n");
+  const Planned ok = face({25, -2}, "THREAD/ON,DEPTH,1,CUTANG,90,RETURN");
+  ASSERT_TRUE(ok.ok) << ok.messages;
+  EXPECT_EQ(ok.plan.kind, ThreadKind::kFace);
+  EXPECT_EQ(ok.plan.clearance, 2);
+}
+
 TEST(Planner, ReturnBelowThePulloutIsRaised) {
   // CHAMFR,2 reaches 2 - 0.46 = 1.54 above the crest on the first pass; RETURN,0.5 is lower.
   Planned r = plan("THREAD/ON,DEPTH,0.92,CUTS,3,CHAMFR,2,RETURN,0.5");

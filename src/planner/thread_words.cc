@@ -3,7 +3,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "planner/number_text.h"
 
@@ -210,22 +214,70 @@ bool twice(Args& a, const Arg& key, const P& p) {
   return true;
 }
 
-void parse_cuts(Args& a, const Arg& key, CutsParam& cuts) {
-  std::vector<const Arg*> nums;
-  while (a.peek_number()) nums.push_back(&a.take());
-  if (nums.empty()) {
-    a.error(key.loc, fmt::format("expected the number of passes after CUTS, found {}", a.found()));
+// A word with one number in a range: DEPTH, STEP, OPTION, CUTANG, TLANGL.
+struct RangedWord {
+  std::string_view what;   // "the thread depth": "expected the thread depth after DEPTH, ..."
+  std::string_view form;   // "one value (DEPTH,d)": "... DEPTH takes one value (DEPTH,d)"
+  std::string_view range;  // "positive": "DEPTH must be positive; got -1"
+  bool (*in_range)(double v);
+};
+
+bool is_positive(double v) {
+  return std::isfinite(v) && v > 0;
+}
+
+template <typename T>
+void parse_ranged(Args& a, const Arg& key, const RangedWord& word, ThreadParam<T>& p) {
+  double v = 0;
+  if (twice(a, key, p) || !a.number(key, word.what, v)) return;
+  a.no_more_numbers(key, word.form);
+  if (!word.in_range(v)) {
+    a.error(key.loc, fmt::format("{} must be {}; got {}", key.text, word.range, num_text(v)));
     return;
   }
-  if (nums.size() > 2 && nums.size() % 2 != 0) {
-    a.error(key.loc, fmt::format("CUTS takes a count, a count and a step, or count,step pairs; "
-                                 "got {} numbers (an odd count of more than 2)",
-                                 nums.size()));
-    return;
+  if constexpr (std::is_same_v<T, int>) {
+    p = {true, static_cast<int>(std::lround(v)), key.loc};
+  } else {
+    p = {true, v, key.loc};
   }
-  CutsParam c;
-  c.set = true;
-  c.loc = key.loc;
+}
+
+void parse_depth(Args& a, const Arg& key, ThreadWords& w) {
+  parse_ranged(a, key, {"the thread depth", "one value (DEPTH,d)", "positive", is_positive},
+               w.depth);
+}
+
+void parse_step(Args& a, const Arg& key, ThreadWords& w) {
+  parse_ranged(a, key, {"the first infeed step", "one value (STEP,s)", "positive", is_positive},
+               w.step);
+}
+
+void parse_option(Args& a, const Arg& key, ThreadWords& w) {
+  parse_ranged(a, key,
+               {"the infeed option (0 to 4)", "one value (OPTION,n)", "0, 1, 2, 3 or 4",
+                [](double v) { return is_whole(v) && v >= 0 && v <= 4; }},
+               w.option);
+}
+
+void parse_cutang(Args& a, const Arg& key, ThreadWords& w) {
+  parse_ranged(
+      a, key,
+      {"the infeed angle in degrees", "one value (CUTANG,angle)", "between -360 and 360 degrees",
+       [](double v) { return std::isfinite(v) && v >= -360 && v <= 360; }},
+      w.cutang);
+}
+
+void parse_tlangl(Args& a, const Arg& key, ThreadWords& w) {
+  parse_ranged(a, key,
+               {"the tool nose angle in degrees", "one value (TLANGL,angle)",
+                "more than 0 and less than 180 degrees",
+                [](double v) { return std::isfinite(v) && v > 0 && v < 180; }},
+               w.tlangl);
+}
+
+// Counts are positive whole numbers of at most kMaxPasses, steps positive: each bad one is
+// reported.
+bool check_cuts_numbers(Args& a, const std::vector<const Arg*>& nums) {
   bool ok = true;
   for (size_t k = 0; k < nums.size(); ++k) {
     const Arg& n = *nums[k];
@@ -245,28 +297,74 @@ void parse_cuts(Args& a, const Arg& key, CutsParam& cuts) {
       ok = false;
     }
   }
-  if (!ok) return;
-  if (nums.size() == 1) {
-    c.count = static_cast<int>(std::lround(nums[0]->number));
-  } else {
-    for (size_t k = 0; k + 1 < nums.size(); k += 2) {
-      CutSteps s;
-      s.count = static_cast<int>(std::lround(nums[k]->number));
-      s.step = nums[k + 1]->number;
-      s.loc = nums[k]->loc;
-      c.count += s.count;
-      c.steps.push_back(s);
-    }
-  }
-  cuts = std::move(c);
+  return ok;
 }
 
-void parse_fincut(Args& a, const Arg& key, FincutParam& fin) {
+// CUTS at `key` with its checked numbers: a count alone, or count,step couplets.
+CutsParam cuts_of(const Arg& key, const std::vector<const Arg*>& nums) {
+  CutsParam c;
+  c.set = true;
+  c.loc = key.loc;
+  if (nums.size() == 1) {
+    c.count = static_cast<int>(std::lround(nums[0]->number));
+    return c;
+  }
+  for (size_t k = 0; k + 1 < nums.size(); k += 2) {
+    CutSteps s;
+    s.count = static_cast<int>(std::lround(nums[k]->number));
+    s.step = nums[k + 1]->number;
+    s.loc = nums[k]->loc;
+    c.count += s.count;
+    c.steps.push_back(s);
+  }
+  return c;
+}
+
+// CUTS,c / CUTS,c,s / CUTS,n1,s1,n2,s2,...
+void parse_cuts(Args& a, const Arg& key, ThreadWords& w) {
+  if (twice(a, key, w.cuts)) return;
+  std::vector<const Arg*> nums;
+  while (a.peek_number()) nums.push_back(&a.take());
+  if (nums.empty()) {
+    a.error(key.loc, fmt::format("expected the number of passes after CUTS, found {}", a.found()));
+    return;
+  }
+  if (nums.size() > 2 && nums.size() % 2 != 0) {
+    a.error(key.loc, fmt::format("CUTS takes a count, a count and a step, or count,step pairs; "
+                                 "got {} numbers (an odd count of more than 2)",
+                                 nums.size()));
+    return;
+  }
+  if (!check_cuts_numbers(a, nums)) return;
+  w.cuts = cuts_of(key, nums);
+}
+
+// What a word with numbers is called in "expected <what> after KEY, found ..." and "KEY takes
+// <form>".
+struct WordForm {
+  std::string_view what;
+  std::string_view form;
+};
+
+// KEY,v[,second]: false (reported) when KEY is repeated or v is missing; a third number is
+// reported and skipped.
+template <typename P>
+bool two_numbers(Args& a, const Arg& key, const P& p, WordForm word, double& v,
+                 std::optional<double>& second) {
+  if (twice(a, key, p) || !a.number(key, word.what, v)) return false;
+  if (a.peek_number()) second = a.take().number;
+  a.no_more_numbers(key, word.form);
+  return true;
+}
+
+// FINCUT,count[,allowance].
+void parse_fincut(Args& a, const Arg& key, ThreadWords& w) {
   double count = 0;
-  if (!a.number(key, "the number of finish passes", count)) return;
-  double dist = 0;
-  if (a.peek_number()) dist = a.take().number;
-  a.no_more_numbers(key, "FINCUT,count[,allowance]");
+  std::optional<double> allowance;
+  if (!two_numbers(a, key, w.fincut, {"the number of finish passes", "FINCUT,count[,allowance]"},
+                   count, allowance))
+    return;
+  const double dist = allowance.value_or(0);
   if (!is_whole(count) || count < 0) {
     a.error(key.loc,
             fmt::format("FINCUT count must be a whole number, 0 or more; got {}", num_text(count)));
@@ -281,10 +379,137 @@ void parse_fincut(Args& a, const Arg& key, FincutParam& fin) {
     a.error(key.loc, fmt::format("FINCUT allowance must be 0 or more; got {}", num_text(dist)));
     return;
   }
-  fin.set = true;
-  fin.loc = key.loc;
-  fin.count = static_cast<int>(std::lround(count));
-  fin.dist = dist;
+  w.fincut.set = true;
+  w.fincut.loc = key.loc;
+  w.fincut.count = static_cast<int>(std::lround(count));
+  w.fincut.dist = dist;
+}
+
+// ATANGL,angle[,height].
+void parse_atangl(Args& a, const Arg& key, ThreadWords& w) {
+  double v = 0;
+  std::optional<double> height;
+  if (!two_numbers(a, key, w.atangl, {"the pull-out angle in degrees", "ATANGL,angle[,height]"}, v,
+                   height))
+    return;
+  const double h = height.value_or(0);
+  if (!std::isfinite(v) || v < -80 || v > 80) {
+    a.error(key.loc, fmt::format("ATANGL must be between -80 and 80 degrees; got {}", num_text(v)));
+    return;
+  }
+  if (!std::isfinite(h) || h < 0) {
+    a.error(key.loc, fmt::format("ATANGL height must be 0 or more (0: the default "
+                                 "pitch/(2 tan 30)); got {}",
+                                 num_text(h)));
+    return;
+  }
+  w.atangl.set = true;
+  w.atangl.loc = key.loc;
+  w.atangl.angle = v;
+  w.atangl.height = h;
+}
+
+// CHAMFR,length[,angle].
+void parse_chamfr(Args& a, const Arg& key, ThreadWords& w) {
+  double v = 0;
+  std::optional<double> angle;
+  if (!two_numbers(a, key, w.chamfr, {"the chamfer length", "CHAMFR,length[,angle]"}, v, angle))
+    return;
+  const bool angle_given = angle.has_value();
+  const double beta = angle.value_or(45);
+  if (!std::isfinite(v)) {
+    a.error(key.loc, fmt::format("CHAMFR length must be a finite number; got {}", num_text(v)));
+    return;
+  }
+  // CHAMFR,0 and CHAMFR,0,0 turn the chamfer off: the angle does not matter then.
+  if (v != 0 && angle_given && (!std::isfinite(beta) || beta < 10 || beta > 80)) {
+    a.error(key.loc,
+            fmt::format("CHAMFR angle must be between 10 and 80 degrees; got {}", num_text(beta)));
+    return;
+  }
+  w.chamfr.set = true;
+  w.chamfr.loc = key.loc;
+  w.chamfr.length = v;
+  w.chamfr.angle_given = angle_given;
+  w.chamfr.angle = angle_given ? beta : 45;
+}
+
+// RETURN[,height].
+void parse_return(Args& a, const Arg& key, ThreadWords& w) {
+  if (twice(a, key, w.ret)) return;
+  w.ret.set = true;
+  w.ret.loc = key.loc;
+  if (!a.peek_number()) return;
+  const double v = a.take().number;
+  a.no_more_numbers(key, "RETURN[,height]");
+  if (!std::isfinite(v) || v <= 0) {
+    a.error(key.loc, fmt::format("RETURN height must be positive; got {}", num_text(v)));
+    w.ret.set = false;
+    return;
+  }
+  w.ret.height_given = true;
+  w.ret.height = v;
+}
+
+// The THREAD/ON words other than the pitch couplets, and how each is parsed once its keyword has
+// been taken.
+struct ThreadWordRule {
+  std::string_view word;
+  void (*parse)(Args& a, const Arg& key, ThreadWords& w);
+};
+constexpr ThreadWordRule kThreadWordRules[] = {
+    {"DEPTH", parse_depth},   {"CUTS", parse_cuts},     {"STEP", parse_step},
+    {"FINCUT", parse_fincut}, {"OPTION", parse_option}, {"CUTANG", parse_cutang},
+    {"TLANGL", parse_tlangl}, {"ATANGL", parse_atangl}, {"CHAMFR", parse_chamfr},
+    {"RETURN", parse_return},
+};
+
+const ThreadWordRule* find_thread_word(const Arg& key) {
+  for (const ThreadWordRule& rule : kThreadWordRules) {
+    if (key.is(rule.word)) return &rule;
+  }
+  return nullptr;
+}
+
+// The pitch words of one statement as they are read.
+struct PitchReading {
+  PitchWords pw;
+  std::string pitch_word;    // what gave the pitch value, for "already given by ..."
+  bool qualifiable = false;  // a leading value not yet qualified by TPI|IPR|MMPR|PERREV
+  double leading = 0;
+};
+
+// PITCH/v: the leading value, threads per CL unit unless a unit word follows.
+void leading_value(Args& a, LengthUnit cl_units, PitchReading& s) {
+  const Arg& n = a.take();
+  if (s.pw.value_given) {
+    a.error(n.loc, fmt::format("unexpected number {}: the pitch is already given by {} at {}",
+                               n.text, s.pitch_word, a.where(s.pw.value_loc, n.loc)));
+    a.skip_numbers();
+    return;
+  }
+  if (!std::isfinite(n.number) || n.number <= 0) {
+    a.error(n.loc, fmt::format("the pitch value must be positive; got {}", num_text(n.number)));
+    a.skip_numbers();
+    return;
+  }
+  s.leading = n.number;
+  set_pitch("", s.leading, cl_units, n.loc, s.pw);
+  s.pitch_word = fmt::format("the value {}", n.text);
+  s.qualifiable = true;
+}
+
+// PITCH/v,TPI: the unit word `key` (with no number after it) qualifies the leading value.
+void qualify_leading(Args& a, const Arg& key, LengthUnit cl_units, PitchReading& s) {
+  if (!s.qualifiable) {
+    a.error(key.loc, fmt::format("expected {} after {}, found {}", unit_what(key.text), key.text,
+                                 a.found()));
+    return;
+  }
+  const SourceLoc vloc = s.pw.value_loc;
+  set_pitch(key.text, s.leading, cl_units, vloc, s.pw);
+  s.pitch_word = fmt::format("{} {}", num_text(s.leading), key.text);
+  s.qualifiable = false;
 }
 
 }  // namespace
@@ -304,114 +529,8 @@ bool parse_thread_words(const Statement& st, size_t first_arg, LengthUnit cl_uni
       continue;
     }
     const Arg& key = a.take();
-    double v = 0;
-    if (key.is("DEPTH")) {
-      if (twice(a, key, w.depth) || !a.number(key, "the thread depth", v)) continue;
-      a.no_more_numbers(key, "one value (DEPTH,d)");
-      if (!std::isfinite(v) || v <= 0) {
-        a.error(key.loc, fmt::format("DEPTH must be positive; got {}", num_text(v)));
-        continue;
-      }
-      w.depth = {true, v, key.loc};
-    } else if (key.is("CUTS")) {
-      if (twice(a, key, w.cuts)) continue;
-      parse_cuts(a, key, w.cuts);
-    } else if (key.is("STEP")) {
-      if (twice(a, key, w.step) || !a.number(key, "the first infeed step", v)) continue;
-      a.no_more_numbers(key, "one value (STEP,s)");
-      if (!std::isfinite(v) || v <= 0) {
-        a.error(key.loc, fmt::format("STEP must be positive; got {}", num_text(v)));
-        continue;
-      }
-      w.step = {true, v, key.loc};
-    } else if (key.is("FINCUT")) {
-      if (twice(a, key, w.fincut)) continue;
-      parse_fincut(a, key, w.fincut);
-    } else if (key.is("OPTION")) {
-      if (twice(a, key, w.option) || !a.number(key, "the infeed option (0 to 4)", v)) continue;
-      a.no_more_numbers(key, "one value (OPTION,n)");
-      if (!is_whole(v) || v < 0 || v > 4) {
-        a.error(key.loc, fmt::format("OPTION must be 0, 1, 2, 3 or 4; got {}", num_text(v)));
-        continue;
-      }
-      w.option = {true, static_cast<int>(std::lround(v)), key.loc};
-    } else if (key.is("CUTANG")) {
-      if (twice(a, key, w.cutang) || !a.number(key, "the infeed angle in degrees", v)) continue;
-      a.no_more_numbers(key, "one value (CUTANG,angle)");
-      if (!std::isfinite(v) || v < -360 || v > 360) {
-        a.error(key.loc,
-                fmt::format("CUTANG must be between -360 and 360 degrees; got {}", num_text(v)));
-        continue;
-      }
-      w.cutang = {true, v, key.loc};
-    } else if (key.is("TLANGL")) {
-      if (twice(a, key, w.tlangl) || !a.number(key, "the tool nose angle in degrees", v)) continue;
-      a.no_more_numbers(key, "one value (TLANGL,angle)");
-      if (!std::isfinite(v) || v <= 0 || v >= 180) {
-        a.error(key.loc, fmt::format("TLANGL must be more than 0 and less than 180 degrees; got {}",
-                                     num_text(v)));
-        continue;
-      }
-      w.tlangl = {true, v, key.loc};
-    } else if (key.is("ATANGL")) {
-      if (twice(a, key, w.atangl) || !a.number(key, "the pull-out angle in degrees", v)) continue;
-      double h = 0;
-      if (a.peek_number()) h = a.take().number;
-      a.no_more_numbers(key, "ATANGL,angle[,height]");
-      if (!std::isfinite(v) || v < -80 || v > 80) {
-        a.error(key.loc,
-                fmt::format("ATANGL must be between -80 and 80 degrees; got {}", num_text(v)));
-        continue;
-      }
-      if (!std::isfinite(h) || h < 0) {
-        a.error(key.loc, fmt::format("ATANGL height must be 0 or more (0: the default "
-                                     "pitch/(2 tan 30)); got {}",
-                                     num_text(h)));
-        continue;
-      }
-      w.atangl.set = true;
-      w.atangl.loc = key.loc;
-      w.atangl.angle = v;
-      w.atangl.height = h;
-    } else if (key.is("CHAMFR")) {
-      if (twice(a, key, w.chamfr) || !a.number(key, "the chamfer length", v)) continue;
-      bool angle_given = false;
-      double beta = 45;
-      if (a.peek_number()) {
-        angle_given = true;
-        beta = a.take().number;
-      }
-      a.no_more_numbers(key, "CHAMFR,length[,angle]");
-      if (!std::isfinite(v)) {
-        a.error(key.loc, fmt::format("CHAMFR length must be a finite number; got {}", num_text(v)));
-        continue;
-      }
-      // CHAMFR,0 and CHAMFR,0,0 turn the chamfer off: the angle does not matter then.
-      if (v != 0 && angle_given && (!std::isfinite(beta) || beta < 10 || beta > 80)) {
-        a.error(key.loc, fmt::format("CHAMFR angle must be between 10 and 80 degrees; got {}",
-                                     num_text(beta)));
-        continue;
-      }
-      w.chamfr.set = true;
-      w.chamfr.loc = key.loc;
-      w.chamfr.length = v;
-      w.chamfr.angle_given = angle_given;
-      w.chamfr.angle = angle_given ? beta : 45;
-    } else if (key.is("RETURN")) {
-      if (twice(a, key, w.ret)) continue;
-      w.ret.set = true;
-      w.ret.loc = key.loc;
-      if (a.peek_number()) {
-        v = a.take().number;
-        a.no_more_numbers(key, "RETURN[,height]");
-        if (!std::isfinite(v) || v <= 0) {
-          a.error(key.loc, fmt::format("RETURN height must be positive; got {}", num_text(v)));
-          w.ret.set = false;
-          continue;
-        }
-        w.ret.height_given = true;
-        w.ret.height = v;
-      }
+    if (const ThreadWordRule* rule = find_thread_word(key)) {
+      rule->parse(a, key, w);
     } else if (is_pitch_couplet_word(key)) {
       pitch_couplet(a, key, cl_units, w.pitch, pitch_word);
     } else {
@@ -428,47 +547,20 @@ bool parse_thread_words(const Statement& st, size_t first_arg, LengthUnit cl_uni
 bool parse_pitch_words(const Statement& st, size_t first_arg, LengthUnit cl_units, PitchSpec& pitch,
                        Diagnostics& diags) {
   Args a(st, first_arg, diags);
-  PitchWords pw;
-  std::string pitch_word;
-  bool qualifiable = false;  // a leading value not yet qualified by TPI|IPR|MMPR|PERREV
-  double leading = 0;
+  PitchReading s;
   while (!a.done()) {
     if (a.peek_number()) {
-      const Arg& n = a.take();
-      if (pw.value_given) {
-        a.error(n.loc, fmt::format("unexpected number {}: the pitch is already given by {} at {}",
-                                   n.text, pitch_word, a.where(pw.value_loc, n.loc)));
-        a.skip_numbers();
-        continue;
-      }
-      if (!std::isfinite(n.number) || n.number <= 0) {
-        a.error(n.loc, fmt::format("the pitch value must be positive; got {}", num_text(n.number)));
-        a.skip_numbers();
-        continue;
-      }
-      leading = n.number;
-      set_pitch("", leading, cl_units, n.loc, pw);
-      pitch_word = fmt::format("the value {}", n.text);
-      qualifiable = true;
+      leading_value(a, cl_units, s);
       continue;
     }
     const Arg& key = a.take();
     if (is_pitch_unit(key) && !a.peek_number()) {
-      // PITCH/v,TPI: qualifies the leading value.
-      if (!qualifiable) {
-        a.error(key.loc, fmt::format("expected {} after {}, found {}", unit_what(key.text),
-                                     key.text, a.found()));
-        continue;
-      }
-      const SourceLoc vloc = pw.value_loc;
-      set_pitch(key.text, leading, cl_units, vloc, pw);
-      pitch_word = fmt::format("{} {}", num_text(leading), key.text);
-      qualifiable = false;
+      qualify_leading(a, key, cl_units, s);
       continue;
     }
-    qualifiable = false;
+    s.qualifiable = false;
     if (is_pitch_couplet_word(key)) {
-      pitch_couplet(a, key, cl_units, pw, pitch_word);
+      pitch_couplet(a, key, cl_units, s.pw, s.pitch_word);
     } else {
       a.error(key.loc,
               fmt::format("unknown pitch word '{}'; valid words: {}", key.text, kPitchWordList));
@@ -476,12 +568,12 @@ bool parse_pitch_words(const Statement& st, size_t first_arg, LengthUnit cl_unit
     }
   }
   if (!a.ok()) return false;
-  if (st.major == "PITCH" && !pw.value_given) {
+  if (st.major == "PITCH" && !s.pw.value_given) {
     diags.error(st.loc, st.line_text(st.loc.line),
                 "PITCH needs a value: PITCH/v[,TPI|IPR|MMPR|PERREV][,MULTRD,n][,INCR|DECR,dv]");
     return false;
   }
-  pw.apply_to(pitch);
+  s.pw.apply_to(pitch);
   return true;
 }
 

@@ -89,6 +89,32 @@ TEST(ThreadWords, ParsesEveryWordWithItsColumn) {
   EXPECT_FALSE(w.chamfr.set);
 }
 
+// The word list of the "unknown word" error and the words the parser knows are the same: each
+// listed word alone is parsed as itself (a missing value at most), never reported as unknown.
+TEST(ThreadWords, EveryListedWordIsKnown) {
+  std::string_view list = kThreadWordList;
+  int words = 0;
+  while (!list.empty()) {
+    const size_t comma = list.find(", ");
+    const std::string word(list.substr(0, comma));
+    list = comma == std::string_view::npos ? std::string_view() : list.substr(comma + 2);
+    ++words;
+    const std::string errors = thread_errors("THREAD/ON," + word);
+    EXPECT_EQ(errors.find("unknown"), std::string::npos) << errors;
+    if (word == "RETURN") {
+      EXPECT_EQ(errors, "");
+    } else {
+      EXPECT_NE(errors.find("after " + word + ", found the end of the statement"),
+                std::string::npos)
+          << errors;
+    }
+  }
+  EXPECT_EQ(words, 17);
+  EXPECT_EQ(thread_errors("THREAD/ON,DEPT,1"),
+            "t.cl:1:11: error: unknown thread parameter 'DEPT'; valid words: " +
+                std::string(kThreadWordList) + "\n");
+}
+
 TEST(ThreadWords, CutsForms) {
   Diagnostics d("t.cl");
   {
