@@ -290,117 +290,117 @@ TEST(PitchWords, ErrorLeavesThePitchUnchanged) {
   EXPECT_EQ(p.pitch, 1.5);
 }
 
+// Each bad THREAD/ON word with its exact message (a table, so that a new word is one row).
+struct ErrorCase {
+  const char* line;
+  const char* expected;
+};
+const ErrorCase kErrorCases[] = {
+    {"THREAD/ON,3",
+     "t.cl:1:11: error: expected a thread parameter word, found number 3; valid words: DEPTH, "
+     "CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, "
+     "PERREV, MULTRD, INCR, DECR\n"},
+    {"THREAD/ON,DEPTH,1,PITCH,2",
+     "t.cl:1:19: error: unknown thread parameter 'PITCH'; valid words: DEPTH, CUTS, STEP, "
+     "FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, PERREV, MULTRD, "
+     "INCR, DECR\n"},
+    {"THREAD/ON,DEPTH,CUTS,3",
+     "t.cl:1:11: error: expected the thread depth after DEPTH, found 'CUTS'\n"},
+    {"THREAD/ON,DEPTH",
+     "t.cl:1:11: error: expected the thread depth after DEPTH, found the end of the "
+     "statement\n"},
+    {"THREAD/ON,DEPTH,1,2",
+     "t.cl:1:19: error: unexpected number 2 after DEPTH: DEPTH takes one value (DEPTH,d)\n"},
+    {"THREAD/ON,DEPTH,0", "t.cl:1:11: error: DEPTH must be positive; got 0\n"},
+    {"THREAD/ON,DEPTH,-1.5", "t.cl:1:11: error: DEPTH must be positive; got -1.5\n"},
+    {"THREAD/ON,DEPTH,1,DEPTH,2", "t.cl:1:19: error: DEPTH is given twice (first at column 11)\n"},
+    {"THREAD/ON,CUTS",
+     "t.cl:1:11: error: expected the number of passes after CUTS, found the end of the "
+     "statement\n"},
+    {"THREAD/ON,CUTS,2,0.5,3",
+     "t.cl:1:11: error: CUTS takes a count, a count and a step, or count,step pairs; got 3 "
+     "numbers (an odd count of more than 2)\n"},
+    {"THREAD/ON,CUTS,2.5",
+     "t.cl:1:16: error: CUTS count must be a positive whole number; got 2.5\n"},
+    {"THREAD/ON,CUTS,0", "t.cl:1:16: error: CUTS count must be a positive whole number; got 0\n"},
+    {"THREAD/ON,CUTS,201",
+     "t.cl:1:16: error: CUTS count 201 is more than the 200 passes a thread may have\n"},
+    {"THREAD/ON,CUTS,4,0", "t.cl:1:18: error: CUTS step must be positive; got 0\n"},
+    {"THREAD/ON,CUTS,2,0.5,3,-0.1", "t.cl:1:24: error: CUTS step must be positive; got -0.1\n"},
+    {"THREAD/ON,STEP,0", "t.cl:1:11: error: STEP must be positive; got 0\n"},
+    {"THREAD/ON,STEP,OPTION,1",
+     "t.cl:1:11: error: expected the first infeed step after STEP, found 'OPTION'\n"},
+    {"THREAD/ON,FINCUT",
+     "t.cl:1:11: error: expected the number of finish passes after FINCUT, found the end of "
+     "the statement\n"},
+    {"THREAD/ON,FINCUT,-1",
+     "t.cl:1:11: error: FINCUT count must be a whole number, 0 or more; got -1\n"},
+    {"THREAD/ON,FINCUT,1.5",
+     "t.cl:1:11: error: FINCUT count must be a whole number, 0 or more; got 1.5\n"},
+    {"THREAD/ON,FINCUT,201",
+     "t.cl:1:11: error: FINCUT count 201 is more than the 200 passes a thread may have\n"},
+    {"THREAD/ON,FINCUT,1,-0.1", "t.cl:1:11: error: FINCUT allowance must be 0 or more; got -0.1\n"},
+    {"THREAD/ON,FINCUT,1,0.1,2",
+     "t.cl:1:24: error: unexpected number 2 after FINCUT: FINCUT takes "
+     "FINCUT,count[,allowance]\n"},
+    {"THREAD/ON,OPTION,5", "t.cl:1:11: error: OPTION must be 0, 1, 2, 3 or 4; got 5\n"},
+    {"THREAD/ON,OPTION,1.5", "t.cl:1:11: error: OPTION must be 0, 1, 2, 3 or 4; got 1.5\n"},
+    {"THREAD/ON,CUTANG,400",
+     "t.cl:1:11: error: CUTANG must be between -360 and 360 degrees; got 400\n"},
+    {"THREAD/ON,CUTANG,-360.5",
+     "t.cl:1:11: error: CUTANG must be between -360 and 360 degrees; got -360.5\n"},
+    {"THREAD/ON,TLANGL,0",
+     "t.cl:1:11: error: TLANGL must be more than 0 and less than 180 degrees; got 0\n"},
+    {"THREAD/ON,TLANGL,180",
+     "t.cl:1:11: error: TLANGL must be more than 0 and less than 180 degrees; got 180\n"},
+    {"THREAD/ON,ATANGL,85",
+     "t.cl:1:11: error: ATANGL must be between -80 and 80 degrees; got 85\n"},
+    {"THREAD/ON,ATANGL,-81",
+     "t.cl:1:11: error: ATANGL must be between -80 and 80 degrees; got -81\n"},
+    {"THREAD/ON,ATANGL,10,-1",
+     "t.cl:1:11: error: ATANGL height must be 0 or more (0: the default pitch/(2 tan 30)); got "
+     "-1\n"},
+    {"THREAD/ON,CHAMFR,2,5",
+     "t.cl:1:11: error: CHAMFR angle must be between 10 and 80 degrees; got 5\n"},
+    {"THREAD/ON,CHAMFR,-2,81",
+     "t.cl:1:11: error: CHAMFR angle must be between 10 and 80 degrees; got 81\n"},
+    {"THREAD/ON,CHAMFR",
+     "t.cl:1:11: error: expected the chamfer length after CHAMFR, found the end of the "
+     "statement\n"},
+    {"THREAD/ON,RETURN,0", "t.cl:1:11: error: RETURN height must be positive; got 0\n"},
+    {"THREAD/ON,RETURN,2,3",
+     "t.cl:1:20: error: unexpected number 3 after RETURN: RETURN takes RETURN[,height]\n"},
+    {"THREAD/ON,TPI,0", "t.cl:1:11: error: TPI must be positive; got 0\n"},
+    {"THREAD/ON,MMPR,-1", "t.cl:1:11: error: MMPR must be positive; got -1\n"},
+    {"THREAD/ON,IPR",
+     "t.cl:1:11: error: expected the pitch in inches after IPR, found the end of the "
+     "statement\n"},
+    {"THREAD/ON,PERREV,DEPTH,1",
+     "t.cl:1:11: error: expected the pitch in CL units after PERREV, found 'DEPTH'\n"},
+    {"THREAD/ON,TPI,10,MMPR,1.5",
+     "t.cl:1:18: error: MMPR: the pitch is already given by TPI at column 11\n"},
+    {"THREAD/ON,MULTRD,0",
+     "t.cl:1:11: error: MULTRD must be a positive whole number of starts; got 0\n"},
+    {"THREAD/ON,MULTRD,2.5",
+     "t.cl:1:11: error: MULTRD must be a positive whole number of starts; got 2.5\n"},
+    {"THREAD/ON,MULTRD,101",
+     "t.cl:1:11: error: MULTRD 101 is more than the 100 starts a thread may have\n"},
+    {"THREAD/ON,MULTRD,2,MULTRD,3",
+     "t.cl:1:20: error: MULTRD is given twice (first at column 11)\n"},
+    {"THREAD/ON,INCR,-0.1",
+     "t.cl:1:11: error: INCR takes the size of the lead change (0 or more); got -0.1 (use DECR "
+     "for a shrinking lead)\n"},
+    {"THREAD/ON,DECR,-0.1",
+     "t.cl:1:11: error: DECR takes the size of the lead change (0 or more); got -0.1 (use INCR "
+     "for a growing lead)\n"},
+    {"THREAD/ON,INCR,0.1,DECR,0.1",
+     "t.cl:1:20: error: DECR: the lead change is already given at column 11\n"},
+    {"THREAD/ON,TPI,8,2",
+     "t.cl:1:17: error: unexpected number 2 after TPI: TPI takes one value (TPI,v)\n"},
+};
+
 TEST(ThreadWordsErrors, ExactMessages) {
-  struct Case {
-    const char* line;
-    const char* expected;
-  };
-  const Case cases[] = {
-      {"THREAD/ON,3",
-       "t.cl:1:11: error: expected a thread parameter word, found number 3; valid words: DEPTH, "
-       "CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, "
-       "PERREV, MULTRD, INCR, DECR\n"},
-      {"THREAD/ON,DEPTH,1,PITCH,2",
-       "t.cl:1:19: error: unknown thread parameter 'PITCH'; valid words: DEPTH, CUTS, STEP, "
-       "FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, PERREV, MULTRD, "
-       "INCR, DECR\n"},
-      {"THREAD/ON,DEPTH,CUTS,3",
-       "t.cl:1:11: error: expected the thread depth after DEPTH, found 'CUTS'\n"},
-      {"THREAD/ON,DEPTH",
-       "t.cl:1:11: error: expected the thread depth after DEPTH, found the end of the "
-       "statement\n"},
-      {"THREAD/ON,DEPTH,1,2",
-       "t.cl:1:19: error: unexpected number 2 after DEPTH: DEPTH takes one value (DEPTH,d)\n"},
-      {"THREAD/ON,DEPTH,0", "t.cl:1:11: error: DEPTH must be positive; got 0\n"},
-      {"THREAD/ON,DEPTH,-1.5", "t.cl:1:11: error: DEPTH must be positive; got -1.5\n"},
-      {"THREAD/ON,DEPTH,1,DEPTH,2",
-       "t.cl:1:19: error: DEPTH is given twice (first at column 11)\n"},
-      {"THREAD/ON,CUTS",
-       "t.cl:1:11: error: expected the number of passes after CUTS, found the end of the "
-       "statement\n"},
-      {"THREAD/ON,CUTS,2,0.5,3",
-       "t.cl:1:11: error: CUTS takes a count, a count and a step, or count,step pairs; got 3 "
-       "numbers (an odd count of more than 2)\n"},
-      {"THREAD/ON,CUTS,2.5",
-       "t.cl:1:16: error: CUTS count must be a positive whole number; got 2.5\n"},
-      {"THREAD/ON,CUTS,0", "t.cl:1:16: error: CUTS count must be a positive whole number; got 0\n"},
-      {"THREAD/ON,CUTS,201",
-       "t.cl:1:16: error: CUTS count 201 is more than the 200 passes a thread may have\n"},
-      {"THREAD/ON,CUTS,4,0", "t.cl:1:18: error: CUTS step must be positive; got 0\n"},
-      {"THREAD/ON,CUTS,2,0.5,3,-0.1", "t.cl:1:24: error: CUTS step must be positive; got -0.1\n"},
-      {"THREAD/ON,STEP,0", "t.cl:1:11: error: STEP must be positive; got 0\n"},
-      {"THREAD/ON,STEP,OPTION,1",
-       "t.cl:1:11: error: expected the first infeed step after STEP, found 'OPTION'\n"},
-      {"THREAD/ON,FINCUT",
-       "t.cl:1:11: error: expected the number of finish passes after FINCUT, found the end of "
-       "the statement\n"},
-      {"THREAD/ON,FINCUT,-1",
-       "t.cl:1:11: error: FINCUT count must be a whole number, 0 or more; got -1\n"},
-      {"THREAD/ON,FINCUT,1.5",
-       "t.cl:1:11: error: FINCUT count must be a whole number, 0 or more; got 1.5\n"},
-      {"THREAD/ON,FINCUT,201",
-       "t.cl:1:11: error: FINCUT count 201 is more than the 200 passes a thread may have\n"},
-      {"THREAD/ON,FINCUT,1,-0.1",
-       "t.cl:1:11: error: FINCUT allowance must be 0 or more; got -0.1\n"},
-      {"THREAD/ON,FINCUT,1,0.1,2",
-       "t.cl:1:24: error: unexpected number 2 after FINCUT: FINCUT takes "
-       "FINCUT,count[,allowance]\n"},
-      {"THREAD/ON,OPTION,5", "t.cl:1:11: error: OPTION must be 0, 1, 2, 3 or 4; got 5\n"},
-      {"THREAD/ON,OPTION,1.5", "t.cl:1:11: error: OPTION must be 0, 1, 2, 3 or 4; got 1.5\n"},
-      {"THREAD/ON,CUTANG,400",
-       "t.cl:1:11: error: CUTANG must be between -360 and 360 degrees; got 400\n"},
-      {"THREAD/ON,CUTANG,-360.5",
-       "t.cl:1:11: error: CUTANG must be between -360 and 360 degrees; got -360.5\n"},
-      {"THREAD/ON,TLANGL,0",
-       "t.cl:1:11: error: TLANGL must be more than 0 and less than 180 degrees; got 0\n"},
-      {"THREAD/ON,TLANGL,180",
-       "t.cl:1:11: error: TLANGL must be more than 0 and less than 180 degrees; got 180\n"},
-      {"THREAD/ON,ATANGL,85",
-       "t.cl:1:11: error: ATANGL must be between -80 and 80 degrees; got 85\n"},
-      {"THREAD/ON,ATANGL,-81",
-       "t.cl:1:11: error: ATANGL must be between -80 and 80 degrees; got -81\n"},
-      {"THREAD/ON,ATANGL,10,-1",
-       "t.cl:1:11: error: ATANGL height must be 0 or more (0: the default pitch/(2 tan 30)); got "
-       "-1\n"},
-      {"THREAD/ON,CHAMFR,2,5",
-       "t.cl:1:11: error: CHAMFR angle must be between 10 and 80 degrees; got 5\n"},
-      {"THREAD/ON,CHAMFR,-2,81",
-       "t.cl:1:11: error: CHAMFR angle must be between 10 and 80 degrees; got 81\n"},
-      {"THREAD/ON,CHAMFR",
-       "t.cl:1:11: error: expected the chamfer length after CHAMFR, found the end of the "
-       "statement\n"},
-      {"THREAD/ON,RETURN,0", "t.cl:1:11: error: RETURN height must be positive; got 0\n"},
-      {"THREAD/ON,RETURN,2,3",
-       "t.cl:1:20: error: unexpected number 3 after RETURN: RETURN takes RETURN[,height]\n"},
-      {"THREAD/ON,TPI,0", "t.cl:1:11: error: TPI must be positive; got 0\n"},
-      {"THREAD/ON,MMPR,-1", "t.cl:1:11: error: MMPR must be positive; got -1\n"},
-      {"THREAD/ON,IPR",
-       "t.cl:1:11: error: expected the pitch in inches after IPR, found the end of the "
-       "statement\n"},
-      {"THREAD/ON,PERREV,DEPTH,1",
-       "t.cl:1:11: error: expected the pitch in CL units after PERREV, found 'DEPTH'\n"},
-      {"THREAD/ON,TPI,10,MMPR,1.5",
-       "t.cl:1:18: error: MMPR: the pitch is already given by TPI at column 11\n"},
-      {"THREAD/ON,MULTRD,0",
-       "t.cl:1:11: error: MULTRD must be a positive whole number of starts; got 0\n"},
-      {"THREAD/ON,MULTRD,2.5",
-       "t.cl:1:11: error: MULTRD must be a positive whole number of starts; got 2.5\n"},
-      {"THREAD/ON,MULTRD,101",
-       "t.cl:1:11: error: MULTRD 101 is more than the 100 starts a thread may have\n"},
-      {"THREAD/ON,MULTRD,2,MULTRD,3",
-       "t.cl:1:20: error: MULTRD is given twice (first at column 11)\n"},
-      {"THREAD/ON,INCR,-0.1",
-       "t.cl:1:11: error: INCR takes the size of the lead change (0 or more); got -0.1 (use DECR "
-       "for a shrinking lead)\n"},
-      {"THREAD/ON,DECR,-0.1",
-       "t.cl:1:11: error: DECR takes the size of the lead change (0 or more); got -0.1 (use INCR "
-       "for a growing lead)\n"},
-      {"THREAD/ON,INCR,0.1,DECR,0.1",
-       "t.cl:1:20: error: DECR: the lead change is already given at column 11\n"},
-      {"THREAD/ON,TPI,8,2",
-       "t.cl:1:17: error: unexpected number 2 after TPI: TPI takes one value (TPI,v)\n"},
-  };
-  for (const Case& c : cases) EXPECT_EQ(thread_errors(c.line), c.expected) << c.line;
+  for (const ErrorCase& c : kErrorCases) EXPECT_EQ(thread_errors(c.line), c.expected) << c.line;
 }
 
 TEST(ThreadWordsErrors, EveryErrorIsReported) {
