@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "reader/cldata_reader.h"
 #include "reader/continuation.h"
 #include "reader/lexer.h"
 #include "reader/line_source.h"
@@ -36,8 +37,8 @@ uint32_t first_column(std::string_view line) {
 }  // namespace
 
 struct ClReader::Impl {
-  Impl(std::FILE* in, Diagnostics& d) : src(in), diags(d) {}
-  Impl(std::string_view text, Diagnostics& d) : src(text), diags(d) {}
+  Impl(std::FILE* in, Diagnostics& d) : src(in), diags(d), in(in) {}
+  Impl(std::string_view text, Diagnostics& d) : src(text), diags(d), text(text) {}
 
   bool next(Statement& out);
   bool read_continuations(const LineSource::Line& first, bool continues);
@@ -56,6 +57,10 @@ struct ClReader::Impl {
   bool done = false;
   bool gave_up = false;  // done before the end of the input
   bool at_start = true;  // no non-blank line seen yet
+  // Binary CLDATA (cldata_reader.h), detected from the first bytes, is read by `binary`.
+  std::FILE* in = nullptr;
+  std::string_view text;
+  std::unique_ptr<CldataReader> binary;
 };
 
 void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string message) {
@@ -68,6 +73,14 @@ void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string mes
 }
 
 void ClReader::Impl::fail(Status s) {
+  const cldata::Layout* layout = nullptr;
+  if (s == Status::kBinary && src.line_number() == 0 &&
+      (layout = cldata::detect_layout(src.head())) != nullptr) {
+    binary = in ? std::make_unique<CldataReader>(*layout, src.head(), in, diags)
+                : std::make_unique<CldataReader>(*layout, text, diags);
+    done = true;
+    return;
+  }
   if (s == Status::kBinary) {
     error(SourceLoc{}, {},
           fmt::format("not a CL text file (binary data at byte {})", src.binary_offset()));
@@ -241,16 +254,17 @@ ClReader::ClReader(std::string_view text, Diagnostics& diags)
 ClReader::~ClReader() = default;
 
 bool ClReader::next(Statement& out) {
-  return impl_->next(out);
+  if (!impl_->binary && impl_->next(out)) return true;
+  return impl_->binary && impl_->binary->next(out);
 }
 size_t ClReader::bytes_read() const {
-  return impl_->src.bytes_read();
+  return impl_->binary ? impl_->binary->bytes_read() : impl_->src.bytes_read();
 }
 uint32_t ClReader::line() const {
-  return impl_->src.line_number();
+  return impl_->binary ? impl_->binary->record() : impl_->src.line_number();
 }
 bool ClReader::gave_up() const {
-  return impl_->gave_up;
+  return impl_->binary ? impl_->binary->gave_up() : impl_->gave_up;
 }
 
 }  // namespace clpost

@@ -54,6 +54,14 @@ std::string_view severity_name(Severity s) {
 
 std::string Diagnostics::render(const Diagnostic& d) const {
   std::string out;
+  if (binary_records_ && d.loc.line != 0) {
+    out = d.loc.col == 0
+              ? fmt::format("{}: record {}: ", file_, d.loc.line)
+              : fmt::format("{}: record {} (byte {}): ", file_, d.loc.line, d.loc.col - 1);
+    out += fmt::format("{}: {}\n", severity_name(d.severity), d.message);
+    if (!d.line_text.empty()) out += fmt::format("  {}\n", d.line_text);
+    return out;
+  }
   if (d.loc.line == 0) {
     out = fmt::format("{}: {}: {}\n", file_, severity_name(d.severity), d.message);
   } else if (d.loc.col == 0) {
