@@ -67,7 +67,8 @@ const Layout* detect_layout(std::string_view head) {
     const RecordHeader first = read_header(l, head.data());
     if (!plausible(first, 1)) continue;
     const size_t second = hb + static_cast<size_t>(first.length) * l.word_bytes;
-    if (head.size() >= second + hb && !plausible(read_header(l, head.data() + second), 2)) continue;
+    // The second record's number (its length or type may be damaged: the reader says so).
+    if (head.size() >= second + hb && read_header(l, head.data() + second).number != 2) continue;
     return &l;
   }
   return nullptr;

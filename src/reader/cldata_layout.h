@@ -37,7 +37,7 @@ struct RecordHeader {
 std::span<const Layout> known_layouts();
 // The layout of a binary CLDATA file from its first bytes (as many as are at hand, at least a
 // header), or nullptr when they are not one: the first record must be record 1 of a known type
-// with a possible length, and the second one, when its header is at hand, record 2.
+// with a possible length, and the second one, when its header is at hand, numbered 2.
 const Layout* detect_layout(std::string_view head);
 
 RecordHeader read_header(const Layout& layout, const char* p);
