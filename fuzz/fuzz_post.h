@@ -31,8 +31,11 @@ inline Machine shipped_machine(const char* name) {
 // Reads CL text from `in` (a ClReader over memory or a FILE*) and posts it on `m`, like
 // post_file(): the NC program, the rendered diagnostics and the thread plans as text and JSON.
 // Returns the number of errors.
-inline size_t post(ClReader& reader, Diagnostics& diags, const Machine& m, PostOptions opts,
-                   std::string* nc_out = nullptr) {
+// (Any reader with ClReader's next(), gave_up() and line(): the binary CLDATA target passes its
+// own.)
+template <class Reader>
+size_t post(Reader& reader, Diagnostics& diags, const Machine& m, PostOptions opts,
+            std::string* nc_out = nullptr) {
   StringSink sink;
   std::vector<ThreadPlan> plans;
   LengthUnit units = LengthUnit::kMm;

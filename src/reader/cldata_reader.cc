@@ -140,7 +140,10 @@ CldataReader::Word CldataReader::word(size_t i) const {
   for (char c : text) name = name && (c == ' ' || is_name_char(c)), blank = blank && c == ' ';
   for (char c : chars.substr(layout_.text_chars)) name = name && c == ' ';
   if (name && blank) return Word{Word::Kind::kBlank, 0, 0, {}};
-  if (name) return Word{Word::Kind::kText, 0, 0, trim_blanks(text)};
+  // A name starts with a letter (digits alone would be a number in the APT text).
+  const std::string_view trimmed = trim_blanks(text);
+  if (name && trimmed.front() >= 'A' && trimmed.front() <= 'Z')
+    return Word{Word::Kind::kText, 0, 0, trimmed};
   return Word{Word::Kind::kNumber, word_double(bits), 0, {}};
 }
 
