@@ -19,8 +19,6 @@ namespace {
 bool convert(std::FILE* in, std::string_view head, const cldata::Layout& layout,
              const std::string& name, OutputFile& out, Diagnostics& diags, size_t& statements) {
   CldataReader reader(layout, head, in, diags);
-  out.write(fmt::format("$$ {}: binary CLDATA ({} layout), written as APT by clpost cl2apt\n", name,
-                        layout.name));
   reader.on_comment([&](std::string_view c) { out.write(fmt::format("$$ {}\n", c)); });
   Statement st;
   while (reader.next(st)) {
@@ -28,6 +26,9 @@ bool convert(std::FILE* in, std::string_view head, const cldata::Layout& layout,
     out.write("\n");
     ++statements;
   }
+  // Last, so that line k is record k.
+  out.write(fmt::format("$$ {}: binary CLDATA ({} layout), written as APT by clpost cl2apt\n", name,
+                        layout.name));
   return !diags.has_errors();
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // `clpost cl2apt INPUT [-o OUT]`: a binary CLDATA file as APT source text, one statement per
-// record (one GOTO per point), the words by name; records that make no statement (sequence
-// numbers, surface data) become `$$` comments. The text posts to the same NC program as the
-// binary file.
+// record, the words by name; records that make no statement (sequence numbers, surface data)
+// become `$$` comments. Line k is record k — until a record of several points, written as one
+// GOTO line per point — so the text posts to the same NC program as the binary file, down to
+// the line numbers it quotes ("thread line 18").
 #include <string>
 
 namespace CLI {

@@ -258,6 +258,7 @@ bool CldataReader::motion(Statement& out) {
   const bool points = sub == 3 || sub == 5 || sub == kMotionContinuation;
   const size_t n = points ? (multax_ ? 6 : 3) : count_ - next_word_;
   if (next_word_ >= count_ || n == 0) {
+    if (count_ <= 2) comment_of_record();  // no points at all: still a line for cl2apt
     in_record_ = false;
     return false;
   }

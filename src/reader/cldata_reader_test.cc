@@ -54,11 +54,15 @@ std::string encode(std::string_view apt, cldata::EncodeOptions opts = {}) {
   return bin;
 }
 
-std::string real_file() {
-  std::ifstream in(CLPOST_SOURCE_DIR "/../shared/realcam/apt360_binary/cl.tap", std::ios::binary);
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::string real_file() {
+  return read_file(CLPOST_SOURCE_DIR "/../shared/realcam/apt360_binary/cl.tap");
 }
 
 // Every kind of record the reader turns into a statement, a lathe thread among them.
@@ -145,7 +149,7 @@ TEST(CldataReader, GivesTheStatementsOfTheAptText) {
   const Read text = read_all(kEveryRecord);
   ASSERT_EQ(text.diags, "");
   for (size_t per : {1, 2, 50}) {
-    const Read bin = read_all(encode(kEveryRecord, {true, per}));
+    const Read bin = read_all(encode(kEveryRecord, {per == 1, per}));
     EXPECT_EQ(bin.diags, "") << per;
     EXPECT_EQ(bin.st, text.st) << per;
   }
@@ -270,6 +274,7 @@ TEST(CldataReader, WritesFuzzSeeds) {
   };
   put("every_record.bin", encode(kEveryRecord));
   put("every_record_merged.bin", encode(kEveryRecord, {false, 50}));
+  put("thread_m20.bin", encode(read_file(CLPOST_SOURCE_DIR "/samples/thread-m20.apt")));
 }
 
 }  // namespace

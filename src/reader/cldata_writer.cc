@@ -48,6 +48,7 @@ class Encoder {
  public:
   Encoder(Diagnostics& diags, const EncodeOptions& opts) : diags_(diags), opts_(opts) {}
   void statement(const Statement& st);
+  void record_of(const Statement& st);
   void flush();
   const std::string& bytes() const { return w_.bytes(); }
 
@@ -64,6 +65,15 @@ class Encoder {
   std::vector<uint64_t> points_;  // GOTO coordinates not yet written
   bool continuing_ = false;       // the next GOTO record continues the last one
   bool multax_ = false;
+  uint32_t line_ = 0;  // line_aligned: the last line that has its record
+  void sequence(uint32_t line) {
+    w_.record(kSequence, line, std::vector<uint64_t>{0, w_.text("")});
+  }
+  // line_aligned: a statement's continuation lines have sequence records after its own.
+  void continuations(const Statement& st) {
+    if (!opts_.line_aligned) return;
+    for (uint32_t l = 1; l < st.lines.size(); ++l) sequence(st.first_line + l);
+  }
 };
 
 // A statement's arguments as words: numbers, minor word codes, short names as text.
@@ -102,18 +112,27 @@ void Encoder::flush() {
 }
 
 void Encoder::statement(const Statement& st) {
+  record_of(st);
+  continuations(st);
+}
+
+void Encoder::record_of(const Statement& st) {
   const std::string_view m = st.major;
   const bool point = m == "GOTO" && st.args.size() == (multax_ ? 6u : 3u);
   if (!point) {
     flush();
     continuing_ = false;
   }
-  if (opts_.sequence_numbers && points_.empty())
-    w_.record(kSequence, st.first_line, std::vector<uint64_t>{0, w_.text("")});
+  if (opts_.line_aligned) {
+    while (line_ + 1 < st.first_line) sequence(++line_);
+    line_ = st.first_line + static_cast<uint32_t>(st.lines.size()) - 1;
+  } else if (points_.empty()) {
+    sequence(st.first_line);
+  }
   std::vector<uint64_t> words;
   if (point) {
     if (args(st, words)) points_.insert(points_.end(), words.begin(), words.end());
-    if (points_.size() >= opts_.points_per_record * st.args.size()) flush();
+    if (opts_.line_aligned || points_.size() >= opts_.points_per_record * st.args.size()) flush();
     return;
   }
   if (st.form == Statement::Form::kText) {

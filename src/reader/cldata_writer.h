@@ -34,8 +34,13 @@ class Writer {
 };
 
 struct EncodeOptions {
-  bool sequence_numbers = true;  // a 1000 record (ISN = line) before each statement
-  size_t points_per_record = 1;  // consecutive GOTOs in one 5000 record (then continuations)
+  // Record k for line k of the text: a sequence number (1000) record for each line that
+  // starts no statement, one point per GOTO record. A statement then has the same number as a
+  // record as it had as a line, and so does what the NC program says of it ("thread line 18").
+  // Otherwise a sequence record before each statement (as APT360 writes) and
+  // `points_per_record` consecutive GOTO points in a record, then continuation records.
+  bool line_aligned = true;
+  size_t points_per_record = 1;
 };
 
 // The binary CLDATA of APT text. False, with the statements that have no record reported
