@@ -140,9 +140,11 @@ CldataReader::Word CldataReader::word(size_t i) const {
   for (char c : text) name = name && (c == ' ' || is_name_char(c)), blank = blank && c == ' ';
   for (char c : chars.substr(layout_.text_chars)) name = name && c == ' ';
   if (name && blank) return Word{Word::Kind::kBlank, 0, 0, {}};
-  // A name starts with a letter (digits alone would be a number in the APT text).
+  // A name starts with a letter (digits alone would be a number in the APT text) and has no
+  // blank inside (it would be two words).
   const std::string_view trimmed = trim_blanks(text);
-  if (name && trimmed.front() >= 'A' && trimmed.front() <= 'Z')
+  if (name && trimmed.front() >= 'A' && trimmed.front() <= 'Z' &&
+      trimmed.find(' ') == std::string_view::npos)
     return Word{Word::Kind::kText, 0, 0, trimmed};
   return Word{Word::Kind::kNumber, word_double(bits), 0, {}};
 }
@@ -226,9 +228,10 @@ bool CldataReader::post_word(Statement& out) {
                      fmt::format("{} text holds bytes that are not text, read as '?'", major));
     begin(out, major, Statement::Form::kText, at);
     const std::string_view trimmed = trim_blanks(text);
-    if (!trimmed.empty()) line_.append(" ").append(trimmed);
+    // A text that starts with '/' keeps it: the text reader takes one '/' after the major.
+    if (!trimmed.empty()) line_.append(trimmed.front() == '/' ? " /" : " ").append(trimmed);
     finish(out);
-    out.text = std::string_view(line_).substr(std::min(line_.size(), major_size_ + 1));
+    out.text = std::string_view(line_).substr(line_.size() - trimmed.size());
     return true;
   }
   begin(out, major, count_ ? Statement::Form::kRecord : Statement::Form::kBare, at);

@@ -42,8 +42,9 @@ class CldataReader {
   void on_comment(std::function<void(std::string_view)> f) { comment_ = std::move(f); }
 
   static constexpr size_t kMaxErrors = 100;
-  // A record longer than this is a damaged length (APT360 writes at most 242 words).
-  static constexpr int64_t kMaxRecordWords = 1 << 17;
+  // A record longer than this is a damaged length (APT360 writes at most 242 words). Its APT
+  // text stays well under ClReader::kMaxStatementBytes.
+  static constexpr int64_t kMaxRecordWords = 1 << 14;
 
  private:
   struct Word;

@@ -254,6 +254,34 @@ TEST(CldataReader, DamagedInputIsReportedAtItsRecordAndByte) {
             "t.cl: record 3 (byte 144): error: GOTO coordinate 2 is not a number\n");
 }
 
+// The statements' APT text (what cl2apt writes) read by the text reader gives them again, for
+// words that look like names but are not (a blank inside, digits alone) and texts that start
+// with '/'.
+TEST(CldataReader, AptTextReadsBackToTheSameStatements) {
+  Writer w;
+  const auto text_word = [&](std::string_view t) { return w.text(t); };
+  const std::string bin =
+      records({{{2000, 1044}, {text_word("/X  Y "), text_word("Z")}},
+               {{2000, 1015}, {text_word("A WIN"), text_word(" 1234"), text_word(" LATHE")}},
+               {{2000, 1045}, {}},
+               {{14000, 0}, {}}});
+  Diagnostics diags("t.cl");
+  CldataReader r(cldata::known_layouts().front(), bin, diags);
+  std::vector<std::string> st;
+  std::string apt;
+  Statement s;
+  while (r.next(s)) st.push_back(describe(s)), apt += std::string(s.lines.front()) + "\n";
+  EXPECT_EQ(diags.render_all(), "");
+  EXPECT_EQ(read_all(apt).st, st);
+  EXPECT_EQ(apt.substr(0, apt.find('\n')), "PPRINT //X  Y Z");
+  ASSERT_EQ(st.size(), 4u);
+  EXPECT_EQ(st[0], "2 PPRINT '/X  Y Z'");
+  EXPECT_EQ(st[1].substr(0, 10), "0 MACHIN #");  // "A WIN" is no name: a number
+  EXPECT_NE(st[1].find(" wLATHE"), std::string::npos);
+  EXPECT_EQ(std::count(st[1].begin(), st[1].end(), '#'), 2);
+  EXPECT_EQ(st[2], "2 PARTNO ''");
+}
+
 TEST(CldataReader, InterpreterDiagnosticsShowTheRecordsAptText) {
   Diagnostics diags("t.cl");
   diags.set_binary_records(true);
