@@ -53,6 +53,12 @@ RecordHeader read_header(const Layout& layout, const char* p) {
 }
 
 uint64_t read_word(const Layout& layout, const char* p) {
+  if (layout.word_bytes == 8 &&
+      layout.little_endian == (std::endian::native == std::endian::little)) {
+    uint64_t v;
+    std::memcpy(&v, p, 8);
+    return v;
+  }
   return read_uint(p, layout.word_bytes, layout.little_endian);
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 
@@ -24,6 +25,32 @@ std::string_view trim_blanks(std::string_view s) {
   while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
   while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
   return s;
+}
+
+// `v` as text that reads back as exactly `v`: CL coordinates have few decimals, so the shortest
+// n / 10^k that equals v is tried first (n / 10^k, correctly rounded, is the double a reader
+// makes of that decimal text); anything else is written as its shortest round trip by fmt.
+void append_number(std::string& out, double v) {
+  static constexpr double kPow10[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
+  if (std::fabs(v) < 1e9 && !(v == 0 && std::signbit(v))) {
+    for (int k = 0; k < 7; ++k) {
+      const double scaled = v * kPow10[k];  // |scaled| < 1e15: exact in an int64_t
+      const double n = static_cast<double>(static_cast<int64_t>(scaled + (v < 0 ? -0.5 : 0.5)));
+      if (n / kPow10[k] != v) continue;
+      char digits[24];
+      auto r = std::to_chars(digits, digits + sizeof digits, static_cast<int64_t>(std::fabs(n)));
+      std::string_view d(digits, static_cast<size_t>(r.ptr - digits));
+      if (v < 0) out += '-';
+      if (k == 0) return void(out += d);
+      if (d.size() <= static_cast<size_t>(k))
+        out.append("0.").append(k - d.size(), '0');
+      else
+        out.append(d.substr(0, d.size() - k)).append(".");
+      out += d.substr(d.size() > static_cast<size_t>(k) ? d.size() - k : 0);
+      return;
+    }
+  }
+  fmt::format_to(std::back_inserter(out), "{}", v);
 }
 
 }  // namespace
@@ -237,7 +264,6 @@ bool CldataReader::post_word(Statement& out) {
   begin(out, major, count_ ? Statement::Form::kRecord : Statement::Form::kBare, at);
   for (size_t i = 0; i < count_; ++i)
     if (!add_word_arg(out, i)) return false;
-  if (pending_.empty()) out.form = Statement::Form::kBare, line_.resize(major_size_);
   finish(out);
   return true;
 }
@@ -281,17 +307,19 @@ bool CldataReader::motion(Statement& out) {
 bool CldataReader::numbered(Statement& out, std::string_view major, size_t from) {
   begin(out, major, Statement::Form::kRecord, loc_of_word(from));
   for (size_t i = from; i < next_word_; ++i) {
-    const Word w = word(i);
-    if (w.kind != Word::Kind::kNumber) {
+    // A coordinate is a double, whatever its bytes look like, unless it is a word code.
+    const uint64_t bits = read_word(layout_, words_ + i * layout_.word_bytes);
+    if (bits != 0 && bits <= 0xFFFFFFFFu) {
       error(loc_of_word(i), fmt::format("{} coordinate {} is not a number", major, i - from + 1));
       return false;
     }
-    if (!std::isfinite(w.number)) {
+    const double v = word_double(bits);
+    if (!std::isfinite(v)) {
       error(loc_of_word(i),
             fmt::format("{} coordinate {} is not a finite number", major, i - from + 1));
       return false;
     }
-    add_number(out, w.number, loc_of_word(i));
+    add_number(out, v, loc_of_word(i));
   }
   finish(out);
   return true;
@@ -342,7 +370,7 @@ void CldataReader::begin(Statement& out, std::string_view major, Statement::Form
 void CldataReader::add_number(Statement& out, double v, SourceLoc loc) {
   line_ += pending_.empty() ? '/' : ',';
   const size_t at = line_.size();
-  fmt::format_to(std::back_inserter(line_), "{}", v);
+  append_number(line_, v);
   pending_.push_back(Pending{Arg::Kind::kNumber, at, line_.size() - at, v, loc});
   (void)out;
 }
@@ -356,6 +384,8 @@ void CldataReader::add_word(Statement& out, std::string_view w, SourceLoc loc) {
 
 // The statement's views, into line_ (which does not change until the next statement).
 void CldataReader::finish(Statement& out) {
+  // A record whose words were all blank: the major alone, as the text reader reads it.
+  if (out.form == Statement::Form::kRecord && pending_.empty()) out.form = Statement::Form::kBare;
   const std::string_view line(line_);
   out.major = line.substr(0, major_size_);
   for (const Pending& p : pending_)
