@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "reader/cldata_reader.h"
@@ -48,6 +49,8 @@ struct ClReader::Impl {
   void too_long(const LineSource::Line& first);
   void error(SourceLoc loc, std::string_view line, std::string message);
   void fail(Status s);
+  bool to_binary();
+  bool stray_nul(const LineSource::Line& l);
 
   LineSource src;
   Diagnostics& diags;
@@ -72,15 +75,29 @@ void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string mes
   }
 }
 
-void ClReader::Impl::fail(Status s) {
+// Binary CLDATA, known from the input's first bytes: `binary` reads it from the start.
+bool ClReader::Impl::to_binary() {
   const cldata::Layout* layout = nullptr;
-  if (s == Status::kBinary && src.line_number() == 0 &&
-      (layout = cldata::detect_layout(src.head())) != nullptr) {
-    binary = in ? std::make_unique<CldataReader>(*layout, src.head(), in, diags)
-                : std::make_unique<CldataReader>(*layout, text, diags);
-    done = true;
-    return;
-  }
+  if (src.line_number() > 1 || (layout = cldata::detect_layout(src.head())) == nullptr)
+    return false;
+  binary = in ? std::make_unique<CldataReader>(*layout, src.head(), in, diags)
+              : std::make_unique<CldataReader>(*layout, text, diags);
+  done = true;
+  return true;
+}
+
+// A NUL byte in a line of a text file: an error at its line and column, the statement skipped.
+bool ClReader::Impl::stray_nul(const LineSource::Line& l) {
+  const std::string_view t = src.text(l);
+  const size_t at = t.find('\0');
+  if (at == std::string_view::npos) return false;
+  error(SourceLoc{l.number, static_cast<uint32_t>(at + 1)}, t,
+        "NUL byte in a text file; the statement is skipped");
+  return true;
+}
+
+void ClReader::Impl::fail(Status s) {
+  if (s == Status::kBinary && to_binary()) return;
   if (s == Status::kBinary) {
     error(SourceLoc{}, {},
           fmt::format("not a CL text file (binary data at byte {})", src.binary_offset()));
@@ -114,6 +131,7 @@ bool ClReader::Impl::next(Statement& out) {
       break;
     }
     const std::string_view text = src.text(first);  // kTooLong: its first bytes
+    if (first.number == 1 && to_binary()) break;    // binary CLDATA that looks like text
     if (at_start && s == Status::kLine) {
       if (reader::is_blank_line(text)) continue;
       at_start = false;
@@ -136,6 +154,7 @@ bool ClReader::Impl::next(Statement& out) {
 
     out.first_line = first.number;
     if (StatementLexer::is_text_statement(text)) {
+      if (stray_nul(first)) continue;
       out.lines.assign(1, text);
       lexer.lex_text(out);
       return true;
@@ -143,6 +162,8 @@ bool ClReader::Impl::next(Statement& out) {
     bool continues = false;
     reader::code_part(text, &continues);
     if (!read_continuations(first, continues)) continue;
+    if (std::any_of(lines.begin(), lines.end(), [&](const auto& l) { return stray_nul(l); }))
+      continue;
     out.lines.clear();
     for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
     StatementLexer::Error err;

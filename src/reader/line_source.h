@@ -25,7 +25,7 @@ class LineSource {
     kLine,       // a line was read
     kTooLong,    // the next line is longer than max_len; not consumed (see next_line)
     kEnd,        // end of input
-    kBinary,     // binary data: binary_offset()
+    kBinary,     // binary data (decided on the first chunk): binary_offset()
     kReadError,  // read_error()
   };
   // A line, as an offset from the mark (so it survives the buffer moving).

@@ -76,7 +76,7 @@ std::string Diagnostics::render(const Diagnostic& d) const {
     out += "  ";
     out += before;
     // Tabs stay tabs so that the caret line lines up under them.
-    for (char c : d.line_text) out += (c == '\r' || c == '\n') ? ' ' : c;
+    for (char c : d.line_text) out += (c == '\r' || c == '\n' || c == '\0') ? ' ' : c;
     if (d.cut_after) out += "...";
     out += '\n';
     if (d.loc.col >= d.first_col) {
