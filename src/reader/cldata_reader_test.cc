@@ -282,16 +282,6 @@ TEST(CldataReader, AptTextReadsBackToTheSameStatements) {
   EXPECT_EQ(st[2], "2 PARTNO ''");
 }
 
-TEST(CldataReader, InterpreterDiagnosticsShowTheRecordsAptText) {
-  Diagnostics diags("t.cl");
-  diags.set_binary_records(true);
-  diags.error(SourceLoc{17, 1041}, "GOTO/1,2,3", "Y must be 0");
-  diags.warning(SourceLoc{3, 0}, {}, "no byte");
-  EXPECT_EQ(diags.render_all(),
-            "t.cl: record 17 (byte 1040): error: Y must be 0\n  GOTO/1,2,3\n"
-            "t.cl: record 3: warning: no byte\n");
-}
-
 // Seeds for the fuzz target (fuzz/seeds/cldata/): written when CLPOST_WRITE_SEEDS names the
 // directory, so that they are the files these tests read.
 TEST(CldataReader, WritesFuzzSeeds) {
