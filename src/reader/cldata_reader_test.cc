@@ -282,17 +282,21 @@ TEST(CldataReader, AptTextReadsBackToTheSameStatements) {
   EXPECT_EQ(st[2], "2 PARTNO ''");
 }
 
-// Seeds for the fuzz target (fuzz/seeds/cldata/): written when CLPOST_WRITE_SEEDS names the
-// directory, so that they are the files these tests read.
-TEST(CldataReader, WritesFuzzSeeds) {
-  const char* dir = std::getenv("CLPOST_WRITE_SEEDS");
-  if (dir == nullptr) GTEST_SKIP() << "set CLPOST_WRITE_SEEDS=fuzz/seeds/cldata to write them";
-  auto put = [&](const std::string& name, const std::string& bytes) {
-    std::ofstream(std::string(dir) + "/" + name, std::ios::binary) << bytes;
-  };
-  put("every_record.bin", encode(kEveryRecord));
-  put("every_record_merged.bin", encode(kEveryRecord, {false, 50}));
-  put("thread_m20.bin", encode(read_file(CLPOST_SOURCE_DIR "/samples/thread-m20.apt")));
+// The fuzz target's seeds (fuzz/seeds/cldata/) are the files these tests write and read: the
+// test fails when one is stale; CLPOST_WRITE_SEEDS=1 rewrites them.
+TEST(CldataReader, FuzzSeedsAreTheFilesTheTestsWrite) {
+  const std::string dir = CLPOST_SOURCE_DIR "/fuzz/seeds/cldata/";
+  const std::vector<std::pair<std::string, std::string>> seeds = {
+      {"every_record.bin", encode(kEveryRecord)},
+      {"every_record_merged.bin", encode(kEveryRecord, {false, 50})},
+      {"thread_m20.bin", encode(read_file(CLPOST_SOURCE_DIR "/samples/thread-m20.apt"))}};
+  for (const auto& [name, bytes] : seeds) {
+    if (std::getenv("CLPOST_WRITE_SEEDS") != nullptr)
+      std::ofstream(dir + name, std::ios::binary) << bytes;
+    EXPECT_TRUE(read_file(dir + name) == bytes)
+        << name << " is stale: run reader_tests with CLPOST_WRITE_SEEDS=1";
+    EXPECT_EQ(read_all(bytes).diags, "") << name;
+  }
 }
 
 }  // namespace
