@@ -13,6 +13,9 @@ constexpr Layout kLayouts[] = {
     // APT360 (and the C translation of it): 16-byte header, little-endian, 6 characters of
     // text in an 8-byte word.
     Layout{"APT360"},
+    // The same records with big-endian integers and IEEE doubles, as APT processors on
+    // big-endian workstations write them.
+    Layout{.name = "APT360, big-endian", .little_endian = false},
 };
 
 // The longest record a CLDATA file can hold: APT360 splits motion into records of 242 words;

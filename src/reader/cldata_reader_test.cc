@@ -157,6 +157,26 @@ TEST(CldataReader, GivesTheStatementsOfTheAptText) {
   EXPECT_EQ(text.st[9], "0 SPINDL #600=600.000000 wRPM wCLW");
 }
 
+// A layout is data: the same program in the big-endian layout is detected as such and reads
+// to the same statements.
+TEST(CldataReader, BigEndianLayout) {
+  const cldata::Layout& be = cldata::known_layouts()[1];
+  ASSERT_FALSE(be.little_endian);
+  Writer w(be);
+  w.record(cldata::kPostWord, 1009, std::vector<uint64_t>{Writer::number(0.2), Writer::code(916)});
+  w.record(cldata::kMotion, 5,
+           std::vector<uint64_t>{0, 0, Writer::number(10), 0, Writer::number(-2.5)});
+  w.record(cldata::kPostWord, 1045, std::vector<uint64_t>{w.text("SHAFT")});
+  w.record(cldata::kFini, 0, {});
+  EXPECT_EQ(w.bytes().substr(0, 8), std::string("\0\0\0\1\0\0\0\2", 8));
+  EXPECT_EQ(cldata::detect_layout(w.bytes()), &be);
+  const Read r = read_all(w.bytes());
+  EXPECT_EQ(r.diags, "");
+  EXPECT_EQ(r.st, (std::vector<std::string>{"0 FEDRAT #0.2=0.200000 wMMPR",
+                                            "0 GOTO #10=10.000000 #0=0.000000 #-2.5=-2.500000",
+                                            "2 PARTNO 'SHAFT'", "1 FINI"}));
+}
+
 TEST(CldataReader, RealApt360File) {
   const Read r = read_all(real_file());
   EXPECT_EQ(r.diags, "t.cl: record 64 (byte 4664): note: 1 bytes after FINI ignored\n");
