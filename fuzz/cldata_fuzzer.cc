@@ -1,8 +1,9 @@
-// libFuzzer target: arbitrary bytes as the records of a binary CLDATA file (APT360 layout, no
-// detection needed), through the binary reader, the interpreter, the planner and the writer on
-// generic-lathe. Then the property cl2apt rests on: the statements' APT text, read by the text
-// reader, gives the same statements (a difference aborts). Inputs that start like a CLDATA file
-// also go through ClReader's detection from a FILE*, as `clpost part.cl` reads them.
+// libFuzzer target: arbitrary bytes as the records of a binary CLDATA file (APT360's layout or
+// its big-endian twin, no detection needed), through the binary reader, the interpreter, the
+// planner and the writer on generic-lathe. Then the property cl2apt rests on: the statements'
+// APT text, read by the text reader, gives the same statements (a difference aborts). Inputs
+// that start like a CLDATA file also go through ClReader's detection from a FILE*, as
+// `clpost part.cl` reads them.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -54,7 +55,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace clpost;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  const cldata::Layout& layout = cldata::known_layouts().front();
+  // The last byte's top bit picks the layout (little- or big-endian; the seeds end in 0).
+  const auto layouts = cldata::known_layouts();
+  const cldata::Layout& layout = layouts[size > 0 && (data[size - 1] & 0x80) ? 1 : 0];
   Diagnostics diags("fuzz.cl");
   CldataReader reader(layout, bytes, diags);
   Recording rec{reader, {}, {}};
