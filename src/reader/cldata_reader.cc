@@ -27,26 +27,30 @@ std::string_view trim_blanks(std::string_view s) {
   return s;
 }
 
-// `v` as text that reads back as exactly `v`: CL coordinates have few decimals, so the shortest
-// n / 10^k that equals v is tried first (n / 10^k, correctly rounded, is the double a reader
-// makes of that decimal text); anything else is written as its shortest round trip by fmt.
+// `v` as text that reads back as exactly `v`. CL coordinates have few decimals: when n / 10^6
+// (correctly rounded, as a reader rounds the decimal text) is v, v is written as n with six
+// decimals, its trailing zeros dropped (n / 10^k is then the same number). Anything else is
+// written as its shortest round trip by fmt.
 void append_number(std::string& out, double v) {
-  static constexpr double kPow10[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
   if (std::fabs(v) < 1e9 && !(v == 0 && std::signbit(v))) {
-    for (int k = 0; k < 7; ++k) {
-      const double scaled = v * kPow10[k];  // |scaled| < 1e15: exact in an int64_t
-      const double n = static_cast<double>(static_cast<int64_t>(scaled + (v < 0 ? -0.5 : 0.5)));
-      if (n / kPow10[k] != v) continue;
+    const double scaled = v * 1e6;  // |scaled| < 1e15: exact in an int64_t and a double
+    int64_t n = static_cast<int64_t>(scaled + (v < 0 ? -0.5 : 0.5));
+    if (static_cast<double>(n) / 1e6 == v) {
+      int k = 6;
+      while (k > 0 && n % 10 == 0) n /= 10, --k;
       char digits[24];
-      auto r = std::to_chars(digits, digits + sizeof digits, static_cast<int64_t>(std::fabs(n)));
-      std::string_view d(digits, static_cast<size_t>(r.ptr - digits));
+      const auto r = std::to_chars(digits, digits + sizeof digits, n < 0 ? -n : n);
+      const std::string_view d(digits, static_cast<size_t>(r.ptr - digits));
+      const size_t decimals = static_cast<size_t>(k);
       if (v < 0) out += '-';
-      if (k == 0) return void(out += d);
-      if (d.size() <= static_cast<size_t>(k))
-        out.append("0.").append(k - d.size(), '0');
-      else
-        out.append(d.substr(0, d.size() - k)).append(".");
-      out += d.substr(d.size() > static_cast<size_t>(k) ? d.size() - k : 0);
+      if (decimals == 0) return void(out += d);
+      if (d.size() <= decimals) {
+        out.append("0.").append(decimals - d.size(), '0').append(d);
+      } else {
+        out.append(d.substr(0, d.size() - decimals))
+            .append(".")
+            .append(d.substr(d.size() - decimals));
+      }
       return;
     }
   }
