@@ -125,7 +125,7 @@ bool CldataReader::read_record() {
   const size_t hb = layout_.header_bytes();
   if (!ensure(hb)) {
     if (len_ > pos_) {
-      error(SourceLoc{ordinal_ + 1, static_cast<uint32_t>(bytes_read() + 1)},
+      error(SourceLoc{ordinal_ + 1, loc_at(bytes_read()).col},
             fmt::format("truncated record: {} bytes where a {}-byte header should be", len_ - pos_,
                         hb));
       stop();
@@ -136,7 +136,7 @@ bool CldataReader::read_record() {
   ++ordinal_;
   record_at_ = bytes_read();
   header_ = read_header(layout_, data_ + pos_);
-  const SourceLoc at{ordinal_, static_cast<uint32_t>(record_at_ + 1)};
+  const SourceLoc at = loc_at(record_at_);
   if (header_.length < 0 || header_.length > kMaxRecordWords) {
     error(at, fmt::format("impossible record length {} words (type {}); reading stops here",
                           header_.length, header_.type));
@@ -180,9 +180,13 @@ CldataReader::Word CldataReader::word(size_t i) const {
   return Word{Word::Kind::kNumber, word_double(bits), 0, {}};
 }
 
+// Record and byte: SourceLoc{record, byte + 1} (column 0, no byte, past 4 GB).
+SourceLoc CldataReader::loc_at(size_t byte) const {
+  return SourceLoc{ordinal_, byte + 1 > UINT32_MAX ? 0 : static_cast<uint32_t>(byte + 1)};
+}
+
 SourceLoc CldataReader::loc_of_word(size_t i) const {
-  const size_t at = record_at_ + layout_.header_bytes() + i * layout_.word_bytes;
-  return SourceLoc{ordinal_, at + 1 > UINT32_MAX ? 0 : static_cast<uint32_t>(at + 1)};
+  return loc_at(record_at_ + layout_.header_bytes() + i * layout_.word_bytes);
 }
 
 bool CldataReader::next(Statement& out) {
@@ -195,7 +199,7 @@ bool CldataReader::next(Statement& out) {
 
 // The next statement of the current record; false when it has no more (in_record_ cleared).
 bool CldataReader::statement_of_record(Statement& out) {
-  const SourceLoc at{ordinal_, static_cast<uint32_t>(record_at_ + 1)};
+  const SourceLoc at = loc_at(record_at_);
   switch (header_.type) {
     case kPostWord:
       in_record_ = false;
@@ -238,7 +242,7 @@ bool CldataReader::statement_of_record(Statement& out) {
 }
 
 bool CldataReader::post_word(Statement& out) {
-  const SourceLoc at{ordinal_, static_cast<uint32_t>(record_at_ + 1)};
+  const SourceLoc at = loc_at(record_at_);
   std::string_view major = major_name(header_.subtype);
   std::string code;
   if (major.empty()) major = code = fmt::format("CODE{}", header_.subtype);
@@ -280,7 +284,7 @@ bool CldataReader::motion(Statement& out) {
   std::string_view major = sub == kMotionContinuation ? motion_major_ : subtype_name(kMotion, sub);
   if (major.empty()) {
     in_record_ = false;
-    diags_.warning(SourceLoc{ordinal_, static_cast<uint32_t>(record_at_ + 1)}, {},
+    diags_.warning(loc_at(record_at_), {},
                    fmt::format("unknown subtype of record type 5000 (subtype {}, {} words); "
                                "skipped",
                                sub, count_));
@@ -434,8 +438,7 @@ void CldataReader::after_fini() {
     if (eof_ || !ensure(1)) break;
   }
   if (rest > 0 && !gave_up_)
-    diags_.note(SourceLoc{ordinal_, static_cast<uint32_t>(record_at_ + 1)}, {},
-                fmt::format("{} bytes after FINI ignored", rest));
+    diags_.note(loc_at(record_at_), {}, fmt::format("{} bytes after FINI ignored", rest));
   done_ = true;
 }
 

@@ -56,6 +56,7 @@ class CldataReader {
   bool numbered(Statement& out, std::string_view major, size_t from);
   void comment_of_record();
   Word word(size_t i) const;
+  SourceLoc loc_at(size_t byte) const;
   SourceLoc loc_of_word(size_t i) const;
   void begin(Statement& out, std::string_view major, Statement::Form form, SourceLoc loc);
   bool add_word_arg(Statement& out, size_t i);
