@@ -2,8 +2,8 @@
 // its big-endian twin, no detection needed), through the binary reader, the interpreter, the
 // planner and the writer on generic-lathe. Then the property cl2apt rests on: the statements'
 // APT text, read by the text reader, gives the same statements (a difference aborts). Inputs
-// that start like a CLDATA file also go through ClReader's detection from a FILE*, as
-// `clpost part.cl` reads them.
+// whose first bytes are a CLDATA file of that layout also go through ClReader's detection from
+// a FILE*, as `clpost part.cl` reads them, to the same number of statements.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -81,7 +81,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::abort();
   }
 
-  if (cldata::detect_layout(bytes) != nullptr) {
+  if (cldata::detect_layout(bytes) == &layout) {
     std::FILE* f = fmemopen(const_cast<uint8_t*>(data), size, "rb");
     if (f != nullptr) {
       Diagnostics file_diags("fuzz.cl");
