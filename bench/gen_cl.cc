@@ -4,6 +4,10 @@
 //                                                sequence every THREAD_EVERY of them (3000)
 //   gen_cl small DIR [COUNT [GOTOS]]             COUNT files DIR/part-NNNN.cl (1000) of GOTOS
 //                                                GOTO lines each (2000), a thread every 1500
+//   gen_cl binary IN.cl OUT.cl                   IN (APT text) as binary CLDATA, records as
+//                                                APT360 writes them: a sequence number record
+//                                                before each statement, up to 80 GOTO points
+//                                                (240 words) in a motion record
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -14,6 +18,8 @@
 #include <string_view>
 
 #include "cl_generator.h"
+#include "reader/cldata_writer.h"
+#include "support/diagnostics.h"
 
 namespace {
 
@@ -43,10 +49,34 @@ bool parse_long(const char* s, long& v) {
   return ec == std::errc() && p == end && v >= 0;
 }
 
+bool write_binary(const char* in_path, const char* out_path) {
+  std::string text;
+  std::FILE* in = std::fopen(in_path, "rb");
+  if (in == nullptr) {
+    fmt::print(stderr, "gen_cl: cannot read {}: {}\n", in_path, std::strerror(errno));
+    return false;
+  }
+  char chunk[1 << 16];
+  for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, in)) > 0;) text.append(chunk, n);
+  std::fclose(in);
+  clpost::Diagnostics diags(in_path);
+  std::string bin;
+  if (!clpost::cldata::encode_apt(text, diags, bin, {false, 80})) {
+    fmt::print(stderr, "{}", diags.render_all());
+    return false;
+  }
+  std::FILE* f = std::fopen(out_path, "wb");
+  bool ok = f != nullptr && std::fwrite(bin.data(), 1, bin.size(), f) == bin.size();
+  ok = f != nullptr && std::fclose(f) == 0 && ok;
+  if (!ok) fmt::print(stderr, "gen_cl: cannot write {}\n", out_path);
+  return ok;
+}
+
 int usage() {
   std::fputs(
       "usage: gen_cl large OUT.cl [GOTOS [THREAD_EVERY]]\n"
-      "       gen_cl small DIR [COUNT [GOTOS]]\n",
+      "       gen_cl small DIR [COUNT [GOTOS]]\n"
+      "       gen_cl binary IN.cl OUT.cl\n",
       stderr);
   return 2;
 }
@@ -73,5 +103,6 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (mode == "binary" && argc == 4) return write_binary(argv[2], argv[3]) ? 0 : 1;
   return usage();
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The speed and memory figures of clpost (README "Performance"): builds Release, generates the
 # benchmark data (bench/gen_cl), posts the large file on generic-lathe and prints MB/s, lines/s
-# and peak RSS next to `wc -l` on the same file; then a batch of small files with -j1 and -j2.
+# and peak RSS next to `wc -l` on the same file, and the same program as binary CLDATA (gen_cl
+# binary); then a batch of small files with -j1 and -j2.
 # Each timing is the best of RUNS runs (default 5).
 #
 #   bench/run.sh                 GOTOS=1000000 BATCH_FILES=200 RUNS=5 BUILD=build-release
@@ -23,6 +24,8 @@ cmake --build "$build" --target "${targets[@]}" >/dev/null
 mkdir -p "$data"
 large=$data/large-$gotos.cl
 [ -s "$large" ] || "$build/bench/gen_cl" large "$large" "$gotos"
+large_bin=$data/large-$gotos.cldata
+[ -s "$large_bin" ] || "$build/bench/gen_cl" binary "$large" "$large_bin"
 small=$data/small-$batch_files
 if [ ! -d "$small" ]; then
   mkdir -p "$small.tmp" && "$build/bench/gen_cl" small "$small.tmp" "$batch_files" && mv "$small.tmp" "$small"
@@ -65,6 +68,18 @@ awk -v file="$large" -v bytes="$bytes" -v lines="$lines" -v wall="$wall" -v user
   cpu = user + sys
   printf "%-28s %8.3f s %9.1f MB/s   (%.1f MB of NC written)\n", "clpost, CPU time (user+sys)",
          cpu, mb / cpu, out_bytes / 1e6
+}'
+
+# The same program as binary CLDATA (APT360 records): MB/s of the binary file, and points per second
+# to compare with the text's lines per second.
+bin_bytes=$(stat -c %s "$large_bin")
+read -r bwall buser bsys brss < <(best_of "$build/clpost" -m generic-lathe -o "$out/large-bin.nc" "$large_bin")
+awk -v bytes="$bin_bytes" -v gotos="$gotos" -v wall="$bwall" -v user="$buser" -v sys="$bsys" \
+    -v rss="$brss" 'BEGIN {
+  mb = bytes / 1e6
+  printf "%-28s %8.3f s %9.1f MB/s %12.0f GOTOs/s %7.1f MB peak RSS (%.1f MB binary CLDATA)\n",
+         "clpost, binary CLDATA", wall, mb / wall, gotos / wall, rss / 1024, mb
+  printf "%-28s %8.3f s %9.1f MB/s\n", "clpost, binary, CPU time", user + sys, mb / (user + sys)
 }'
 
 nfiles=$(find "$small" -name '*.cl' | wc -l)

@@ -14,6 +14,7 @@
 #include "planner/planner.h"
 #include "planner/thread_words.h"
 #include "reader/cl_reader.h"
+#include "reader/cldata_writer.h"
 #include "support/sink.h"
 #include "writer/nc_program.h"
 
@@ -63,6 +64,30 @@ void BM_Reader(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * count_lines(text)));
 }
 BENCHMARK(BM_Reader)->Unit(benchmark::kMillisecond);
+
+// The same program as binary CLDATA (APT360's records, 80 points to a motion record), through
+// the same ClReader: bytes of the binary file, and statements, per second.
+void BM_ReaderBinary(benchmark::State& state) {
+  static const std::string bin = [] {
+    Diagnostics diags("bench.cl");
+    std::string out;
+    if (!cldata::encode_apt(turning_text(), diags, out, {false, 80})) std::abort();
+    return out;
+  }();
+  size_t statements = 0, per_pass = 0;
+  for (auto _ : state) {
+    Diagnostics diags("bench.cl");
+    ClReader reader(bin, diags);
+    Statement st;
+    per_pass = 0;
+    while (reader.next(st)) ++per_pass;
+    statements += per_pass;
+    benchmark::DoNotOptimize(statements);
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * bin.size()));
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * per_pass));
+}
+BENCHMARK(BM_ReaderBinary)->Unit(benchmark::kMillisecond);
 
 // The THREAD/ON sequence of the benchmark program, ready for the planner.
 MultiThreadInput thread_input() {

@@ -15,7 +15,7 @@
 # Subcommands of clpost and of each subcommand (nested ones as "machines show").
 _clpost_subcommands_of() {
   case $1 in
-    post) echo "check machines plan plot schema verify" ;;
+    post) echo "check cl2apt machines plan plot schema verify" ;;
     machines) echo "diff show" ;;
   esac
 }
@@ -35,6 +35,7 @@ _clpost_options() {
     machines | "machines diff") echo "-h --help" ;;
     "machines show") echo "-h --help --set --origin" ;;
     schema) echo "-h --help --markdown" ;;
+    cl2apt) echo "-h --help -o --output" ;;
   esac
 }
 

@@ -28,10 +28,12 @@ inline Machine shipped_machine(const char* name) {
   return m;
 }
 
-// Reads CL text from `in` (a ClReader over memory or a FILE*) and posts it on `m`: the NC program,
-// the rendered diagnostics and the thread plans as text and JSON. Returns the number of errors.
-inline size_t post(ClReader& reader, Diagnostics& diags, const Machine& m, PostOptions opts,
-                   std::string* nc_out = nullptr) {
+// Reads CL from `reader` and posts it on `m` through post(): the NC program, the rendered
+// diagnostics and the thread plans as text and JSON. Returns the number of errors. `Reader` is
+// ClReader or any reader post() takes (the binary CLDATA target passes its own).
+template <class Reader>
+size_t post(Reader& reader, Diagnostics& diags, const Machine& m, PostOptions opts,
+            std::string* nc_out = nullptr) {
   StringSink sink;
   std::vector<ThreadPlan> plans;
   const PostSummary summary = clpost::post(reader, m, sink, diags, opts, [&](const ThreadPlan& p) {

@@ -5,7 +5,7 @@
 # left in build-fuzz/artifacts/ and the fuzzer's log in build-fuzz/logs/.
 #
 # Usage: scripts/fuzz.sh [SECONDS | --runs N] [TARGET...]
-#   targets: cl_post_fuzzer machine_yaml_fuzzer nc_verify_fuzzer
+#   targets: cl_post_fuzzer cldata_fuzzer machine_yaml_fuzzer nc_verify_fuzzer
 #   --runs N: run each target for N inputs instead of a time (e.g. --runs 1000000).
 #
 # ASan keeps 5 frames of allocation stack and a 32 MB quarantine unless ASAN_OPTIONS says
@@ -30,7 +30,7 @@ elif [ $# -gt 0 ]; then
 fi
 export ASAN_OPTIONS=${ASAN_OPTIONS:-malloc_context_size=5:quarantine_size_mb=32}
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(cl_post_fuzzer machine_yaml_fuzzer nc_verify_fuzzer)
+[ ${#targets[@]} -gt 0 ] || targets=(cl_post_fuzzer cldata_fuzzer machine_yaml_fuzzer nc_verify_fuzzer)
 build=${CLPOST_FUZZ_BUILD:-build-fuzz}
 
 scripts/deps.sh test
@@ -57,6 +57,9 @@ if [ -d ../shared/realcl ]; then
 fi
 mapfile -t samples < <(find samples -type f \( -name "*.apt" -o -name "*.cls" -o -name "*.ncl" \) | sort)
 seed cl_post_fuzzer "${samples[@]}" fuzz/seeds/cl/* "${realcl[@]}"
+realcam_bin=()
+[ -f ../shared/realcam/apt360_binary/cl.tap ] && realcam_bin+=(../shared/realcam/apt360_binary/cl.tap)
+seed cldata_fuzzer fuzz/seeds/cldata/* "${realcam_bin[@]}"
 seed machine_yaml_fuzzer machines/*.yaml posts/*.yaml fuzz/seeds/yaml/*
 mapfile -t goldens < <(find samples/golden -type f | sort)
 seed nc_verify_fuzzer "${goldens[@]}"
@@ -67,6 +70,7 @@ summary=""
 for t in "${targets[@]}"; do
   case "$t" in
     cl_post_fuzzer) dict=fuzz/cl.dict ;;
+    cldata_fuzzer) dict=fuzz/cldata.dict ;;
     machine_yaml_fuzzer) dict=fuzz/yaml.dict ;;
     nc_verify_fuzzer) dict=fuzz/nc.dict ;;
     *) echo "fuzz.sh: unknown target '$t'" >&2; exit 2 ;;

@@ -16,6 +16,7 @@
 
 #include "cli/batch.h"
 #include "cli/batch_report.h"
+#include "cli/cl2apt_command.h"
 #include "cli/data_dirs.h"
 #include "cli/machines_command.h"
 #include "cli/plot_command.h"
@@ -63,6 +64,7 @@ constexpr const char* kFooter = R"(Examples:
   clpost verify -m fanuc-0i-t part.nc --cl part.cl     check a program (edited by hand?)
   clpost plot -o part.svg part.cl         backplot and every thread's cross-section, as SVG
   clpost plot -m fanuc-0i-t --cl part.cl --thread 2 -o t2.svg part.nc   a program's passes
+  clpost cl2apt -o part.apt part.cl       a binary CL file (ISO 3592 CLDATA) as APT text
 
 Exit status: 0 ok, 1 errors in the input, 2 usage or machine-file errors.
 A batch (-d) exits 1 when any file failed, 2 when it could not start (duplicate output names,
@@ -273,6 +275,9 @@ int run_cli(int argc, char** argv) {
   plot->add_option("--thread", plot_req.thread, "Only thread N's cross-section (1 = the first)")
       ->check(CLI::PositiveNumber);
 
+  Cl2AptRequest cl2apt_req;
+  CLI::App* cl2apt = add_cl2apt_command(app, cl2apt_req);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -316,6 +321,8 @@ int run_cli(int argc, char** argv) {
     print_err(r.err);
     return r.exit_code;
   }
+
+  if (*cl2apt) return run_cl2apt_command(cl2apt_req);
 
   if (*verify) {
     Machine m;

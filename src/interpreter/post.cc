@@ -6,23 +6,14 @@
 
 namespace clpost {
 
-PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& diags,
-                 const PostOptions& opts, const std::function<void(const ThreadPlan&)>& on_thread) {
-  PostSummary summary;
-  NcProgram prog(m, out);
-  Interpreter interp(m, prog, diags, opts);
-  if (on_thread) interp.on_thread(on_thread);
-  Statement st;
-  while (reader.next(st)) interp.statement(st);
+PostSummary end_post(Interpreter& interp, Diagnostics& diags, bool reader_gave_up,
+                     uint32_t last_line, size_t bytes_in) {
   if (interp.stats().statements == 0 && !diags.has_errors()) {
     diags.error({}, {}, "no CL statements in the file");
-  } else if (!reader.gave_up()) {
-    interp.end_of_input(reader.line());
+  } else if (!reader_gave_up) {
+    interp.end_of_input(last_line);
   }
-  summary.stats = interp.stats();
-  summary.units = interp.units();
-  summary.bytes_in = reader.bytes_read();
-  return summary;
+  return PostSummary{interp.stats(), interp.units(), bytes_in};
 }
 
 PostedText post_text(std::string_view cl, const Machine& m, std::string file_name,

@@ -8,12 +8,14 @@
 #include <string_view>
 #include <vector>
 
+#include "interpreter/interpreter.h"
 #include "interpreter/post_state.h"
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
 #include "reader/cl_reader.h"
 #include "support/diagnostics.h"
 #include "support/sink.h"
+#include "writer/nc_program.h"
 
 namespace clpost {
 
@@ -24,14 +26,27 @@ struct PostSummary {
   size_t bytes_in = 0;
 };
 
+// How the input ended, said once: a file without a statement is an error; one that ends without
+// FINI is closed with a warning, unless the reader gave up before its end (post() calls it).
+PostSummary end_post(Interpreter& interp, Diagnostics& diags, bool reader_gave_up,
+                     uint32_t last_line, size_t bytes_in);
+
 // Posts every statement `reader` delivers on machine `m`: the program to `out`, the diagnostics
 // to `diags` (the reader's own among them), every thread plan to `on_thread` as it is planned.
-// A file without a statement is an error; one that ends without FINI is closed with a warning,
-// unless the reader gave up before its end. `out` gets a program even when there are errors:
-// the caller decides what to keep (diags.has_errors()).
-PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& diags,
+// `out` gets a program even when there are errors: the caller decides what to keep
+// (diags.has_errors()). `Reader` is ClReader (text or binary CL, detected), or any reader with
+// its next(), gave_up(), line() and bytes_read() (the binary fuzz target records what it reads).
+template <class Reader = ClReader>
+PostSummary post(Reader& reader, const Machine& m, Sink& out, Diagnostics& diags,
                  const PostOptions& opts = {},
-                 const std::function<void(const ThreadPlan&)>& on_thread = {});
+                 const std::function<void(const ThreadPlan&)>& on_thread = {}) {
+  NcProgram prog(m, out);
+  Interpreter interp(m, prog, diags, opts);
+  if (on_thread) interp.on_thread(on_thread);
+  Statement st;
+  while (reader.next(st)) interp.statement(st);
+  return end_post(interp, diags, reader.gave_up(), reader.line(), reader.bytes_read());
+}
 
 // post() of CL text in memory, collected: the program, the diagnostics and every plan.
 struct PostedText {

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
+#include "reader/cldata_reader.h"
 #include "reader/continuation.h"
 #include "reader/lexer.h"
 #include "reader/line_source.h"
@@ -36,8 +38,8 @@ uint32_t first_column(std::string_view line) {
 }  // namespace
 
 struct ClReader::Impl {
-  Impl(std::FILE* in, Diagnostics& d) : src(in), diags(d) {}
-  Impl(std::string_view text, Diagnostics& d) : src(text), diags(d) {}
+  Impl(std::FILE* in, Diagnostics& d) : src(in), diags(d), in(in) {}
+  Impl(std::string_view text, Diagnostics& d) : src(text), diags(d), text(text) {}
 
   bool next(Statement& out);
   bool read_continuations(const LineSource::Line& first, bool continues, bool is_text);
@@ -47,6 +49,8 @@ struct ClReader::Impl {
   void too_long(const LineSource::Line& first);
   void error(SourceLoc loc, std::string_view line, std::string message);
   void fail(Status s);
+  bool to_binary();
+  bool stray_nul(const LineSource::Line& l);
 
   LineSource src;
   Diagnostics& diags;
@@ -56,6 +60,10 @@ struct ClReader::Impl {
   bool done = false;
   bool gave_up = false;  // done before the end of the input
   bool at_start = true;  // no non-blank line seen yet
+  // Binary CLDATA (cldata_reader.h), detected from the first bytes, is read by `binary`.
+  std::FILE* in = nullptr;
+  std::string_view text;
+  std::unique_ptr<CldataReader> binary;
 };
 
 void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string message) {
@@ -67,7 +75,29 @@ void ClReader::Impl::error(SourceLoc loc, std::string_view line, std::string mes
   }
 }
 
+// Binary CLDATA, known from the input's first bytes: `binary` reads it from the start.
+bool ClReader::Impl::to_binary() {
+  const cldata::Layout* layout = nullptr;
+  if (src.line_number() > 1 || (layout = cldata::detect_layout(src.head())) == nullptr)
+    return false;
+  binary = in ? std::make_unique<CldataReader>(*layout, src.head(), in, diags)
+              : std::make_unique<CldataReader>(*layout, text, diags);
+  done = true;
+  return true;
+}
+
+// A NUL byte in a line of a text file: an error at its line and column, the statement skipped.
+bool ClReader::Impl::stray_nul(const LineSource::Line& l) {
+  const std::string_view t = src.text(l);
+  const size_t at = t.find('\0');
+  if (at == std::string_view::npos) return false;
+  error(SourceLoc{l.number, static_cast<uint32_t>(at + 1)}, t,
+        "NUL byte in a text file; the statement is skipped");
+  return true;
+}
+
 void ClReader::Impl::fail(Status s) {
+  if (s == Status::kBinary && to_binary()) return;
   if (s == Status::kBinary) {
     error(SourceLoc{}, {},
           fmt::format("not a CL text file (binary data at byte {})", src.binary_offset()));
@@ -101,6 +131,7 @@ bool ClReader::Impl::next(Statement& out) {
       break;
     }
     const std::string_view text = src.text(first);  // kTooLong: its first bytes
+    if (first.number == 1 && to_binary()) break;    // binary CLDATA that looks like text
     if (at_start && s == Status::kLine) {
       if (reader::is_blank_line(text)) continue;
       at_start = false;
@@ -130,6 +161,8 @@ bool ClReader::Impl::next(Statement& out) {
       reader::code_part(text, &continues);
     }
     if (!read_continuations(first, continues, is_text)) continue;
+    if (std::any_of(lines.begin(), lines.end(), [&](const auto& l) { return stray_nul(l); }))
+      continue;
     out.lines.clear();
     for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
     if (is_text) {
@@ -251,16 +284,17 @@ ClReader::ClReader(std::string_view text, Diagnostics& diags)
 ClReader::~ClReader() = default;
 
 bool ClReader::next(Statement& out) {
-  return impl_->next(out);
+  if (!impl_->binary && impl_->next(out)) return true;
+  return impl_->binary && impl_->binary->next(out);
 }
 size_t ClReader::bytes_read() const {
-  return impl_->src.bytes_read();
+  return impl_->binary ? impl_->binary->bytes_read() : impl_->src.bytes_read();
 }
 uint32_t ClReader::line() const {
-  return impl_->src.line_number();
+  return impl_->binary ? impl_->binary->record() : impl_->src.line_number();
 }
 bool ClReader::gave_up() const {
-  return impl_->gave_up;
+  return impl_->binary ? impl_->binary->gave_up() : impl_->gave_up;
 }
 
 }  // namespace clpost

@@ -398,18 +398,30 @@ TEST(ClReader, BinaryInput) {
   EXPECT_EQ(controls.diags, "t.cl: error: not a CL text file (binary data at byte 0)\n");
 }
 
-TEST(ClReader, BinaryAfterFirstChunkStopsThere) {
+// Binary or not is decided on the first 64 KiB; a NUL further on is a stray byte in a text
+// file: an error at its line and column, and the file is read on.
+TEST(ClReader, NulAfterFirstChunkIsAnErrorAtItsLine) {
   std::string text;
-  while (text.size() < 100 * 1024) text += "GOTO/1,2,3\n";
-  const size_t nul = text.size() + 3;
+  size_t lines = 0;
+  while (text.size() < 100 * 1024) text += "GOTO/1,2,3\n", ++lines;
   text += std::string("ABC\0DEF\n", 8);
   text += "FINI\n";
   Result r = read(text);
-  EXPECT_GT(r.st.size(), 5000u);  // the first 64 KiB
+  EXPECT_EQ(r.diags, "t.cl:" + std::to_string(lines + 1) +
+                         ":4: error: NUL byte in a text file; the statement is skipped\n"
+                         "  ABC DEF\n     ^\n");
+  EXPECT_EQ(r.st.size(), lines + 1);
+  EXPECT_NE(dump(r).find("FINI"), std::string::npos);
+}
+
+TEST(ClReader, StrayNulInTextIsAnErrorAtItsLine) {
+  Result r = read(std::string("GOTO/1,2,3\nGOTO/4,\0,6\nGOTO/7,$\n8\0,9\nFINI\n", 41));
   EXPECT_EQ(r.diags,
-            "t.cl: error: not a CL text file (binary data at byte " + std::to_string(nul) + ")\n");
-  EXPECT_NE(dump(r).find("R GOTO/"), std::string::npos);
-  EXPECT_EQ(dump(r).find("FINI"), std::string::npos);
+            "t.cl:2:8: error: NUL byte in a text file; the statement is skipped\n"
+            "  GOTO/4, ,6\n         ^\n"
+            "t.cl:4:2: error: NUL byte in a text file; the statement is skipped\n"
+            "  8 ,9\n   ^\n");
+  EXPECT_EQ(r.st.size(), 2u);
 }
 
 TEST(ClReader, GaveUpOnlyWhenStoppedBeforeTheEnd) {

@@ -66,14 +66,11 @@ LineSource::Status LineSource::refill() {
 }
 
 void LineSource::check_binary(size_t from, size_t n, bool first_chunk) {
-  const char* p = data_ + from;
-  if (const void* nul = std::memchr(p, 0, n)) {
-    binary_offset_ = base_ + from + static_cast<size_t>(static_cast<const char*>(nul) - p);
-    failed_ = Status::kBinary;
-    return;
-  }
+  // Only the first chunk decides: text has next to no control characters (NUL among them), so
+  // more than one byte in ten is not text. A stray NUL in a text file is the reader's to
+  // report at its line and column.
   if (!first_chunk) return;
-  // Text has next to no control characters; more than one byte in ten is not text.
+  const char* p = data_ + from;
   size_t controls = 0;
   size_t first = 0;
   for (size_t i = 0; i < n; ++i) {
@@ -83,7 +80,10 @@ void LineSource::check_binary(size_t from, size_t n, bool first_chunk) {
     if (control && controls++ == 0) first = i;
   }
   if (controls * 10 > n) {
-    binary_offset_ = base_ + from + first;
+    // Where the data stops being text: the first NUL, else the first control character.
+    const void* nul = std::memchr(p, 0, n);
+    binary_offset_ =
+        base_ + from + (nul ? static_cast<size_t>(static_cast<const char*>(nul) - p) : first);
     failed_ = Status::kBinary;
   }
 }

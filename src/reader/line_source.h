@@ -25,7 +25,7 @@ class LineSource {
     kLine,       // a line was read
     kTooLong,    // the next line is longer than max_len; not consumed (see next_line)
     kEnd,        // end of input
-    kBinary,     // binary data: binary_offset()
+    kBinary,     // binary data (decided on the first chunk): binary_offset()
     kReadError,  // read_error()
   };
   // A line, as an offset from the mark (so it survives the buffer moving).
@@ -66,6 +66,8 @@ class LineSource {
   size_t bytes_read() const { return base_ + pos_; }
   uint32_t line_number() const { return line_no_; }
   size_t binary_offset() const { return binary_offset_; }
+  // The input's first bytes, as read so far (before any line was read; binary detection).
+  std::string_view head() const { return base_ == 0 ? std::string_view(data_, len_) : ""; }
   const std::string& read_error() const { return read_error_; }
   // Bytes held for file input (tests check that memory stays bounded).
   size_t capacity() const { return cap_; }

@@ -31,7 +31,7 @@ void Diagnostics::add(Severity severity, SourceLoc loc, std::string_view line_te
   bool cut_after = false;
   if (line_text.size() > kMaxExcerpt) {
     constexpr size_t kLeadIn = 80;
-    if (loc.col > kLeadIn + 1)
+    if (loc.col > kLeadIn + 1 && !binary_records_)  // binary: col is a byte offset
       start = std::min<size_t>(loc.col - 1 - kLeadIn, line_text.size() - kMaxExcerpt);
     cut_after = start + kMaxExcerpt < line_text.size();
     line_text = line_text.substr(start, kMaxExcerpt);
@@ -54,6 +54,14 @@ std::string_view severity_name(Severity s) {
 
 std::string Diagnostics::render(const Diagnostic& d) const {
   std::string out;
+  if (binary_records_ && d.loc.line != 0) {
+    out = d.loc.col == 0
+              ? fmt::format("{}: record {}: ", file_, d.loc.line)
+              : fmt::format("{}: record {} (byte {}): ", file_, d.loc.line, d.loc.col - 1);
+    out += fmt::format("{}: {}\n", severity_name(d.severity), d.message);
+    if (!d.line_text.empty()) out += fmt::format("  {}{}\n", d.line_text, d.cut_after ? "..." : "");
+    return out;
+  }
   if (d.loc.line == 0) {
     out = fmt::format("{}: {}: {}\n", file_, severity_name(d.severity), d.message);
   } else if (d.loc.col == 0) {
@@ -68,7 +76,7 @@ std::string Diagnostics::render(const Diagnostic& d) const {
     out += "  ";
     out += before;
     // Tabs stay tabs so that the caret line lines up under them.
-    for (char c : d.line_text) out += (c == '\r' || c == '\n') ? ' ' : c;
+    for (char c : d.line_text) out += (c == '\r' || c == '\n' || c == '\0') ? ' ' : c;
     if (d.cut_after) out += "...";
     out += '\n';
     if (d.loc.col >= d.first_col) {

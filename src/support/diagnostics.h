@@ -47,6 +47,11 @@ class Diagnostics {
   size_t dropped() const { return dropped_; }
   // When true, warnings are counted as errors (clpost --strict).
   void set_warnings_are_errors(bool on) { werror_ = on; }
+  // Binary input (a CLDATA file): a location is SourceLoc{record, byte offset + 1}, rendered
+  // `file: record 17 (byte 1040): error: ...`, and the line shown is the record's APT text,
+  // without a caret.
+  void set_binary_records(bool on) { binary_records_ = on; }
+  bool binary_records() const { return binary_records_; }
 
   static constexpr size_t kMaxKept = 200;
   // The most characters of a source line kept for the caret display.
@@ -64,6 +69,7 @@ class Diagnostics {
   size_t warnings_ = 0;
   size_t dropped_ = 0;
   bool werror_ = false;
+  bool binary_records_ = false;
 };
 
 }  // namespace clpost

@@ -113,5 +113,24 @@ TEST(Diagnostics, ALongLineShowsItsEndForAColumnAtTheEnd) {
                 std::string(200, 'z') + "\n" + "     " + std::string(200, ' ') + "^\n");
 }
 
+// Binary input (a CLDATA file): record and byte, the record's APT text without a caret, a long
+// one cut at its start's first 200 characters whatever the byte offset.
+TEST(Diagnostics, BinaryRecordsRenderRecordAndByte) {
+  Diagnostics d("part.tap");
+  d.set_binary_records(true);
+  d.error(SourceLoc{22, 761}, "CUTCOM/LENGTH,1", "unknown CUTCOM word 'LENGTH'");
+  d.note(SourceLoc{64, 0}, {}, "1 bytes after FINI ignored");
+  d.warning(SourceLoc{}, {}, "no place");
+  d.error(SourceLoc{3, 5000}, "PPRINT " + std::string(300, 'x'), "long");
+  EXPECT_EQ(d.render_all(),
+            "part.tap: record 22 (byte 760): error: unknown CUTCOM word 'LENGTH'\n"
+            "  CUTCOM/LENGTH,1\n"
+            "part.tap: record 64: note: 1 bytes after FINI ignored\n"
+            "part.tap: warning: no place\n"
+            "part.tap: record 3 (byte 4999): error: long\n"
+            "  PPRINT " +
+                std::string(193, 'x') + "...\n");
+}
+
 }  // namespace
 }  // namespace clpost

@@ -47,7 +47,7 @@ machines="fanuc-0i-t generic-lathe haas-st heidenhain-pilot linuxcnc-lathe nct-2
 files="cl-files lathe5.yaml notes.txt out part.cl part.nc"
 
 # Subcommands and inputs.
-expect "clpost |" "check machines plan plot schema verify $files"
+expect "clpost |" "check cl2apt machines plan plot schema verify $files"
 expect "clpost p|" "plan plot part.cl part.nc"
 expect "clpost ch|" "check"
 expect "clpost cl-files/|" "cl-files/a.cl"
@@ -56,6 +56,8 @@ expect "clpost machines show |" "$machines cl-files lathe5.yaml out"
 expect "clpost machines show --|" "--help --set --origin"
 expect "clpost machines diff fanuc-0i-t |" "$machines cl-files lathe5.yaml out"
 expect "clpost schema --|" "--help --markdown"
+expect "clpost cl2apt -|" "-h --help -o --output"
+expect "clpost cl2apt |" "$files"
 expect "clpost check part.cl |" "$files"
 # Options, per command.
 expect "clpost --k|" "--keep-going"
