@@ -105,6 +105,27 @@ TEST(Verify, G33LoopInfeedEdited) {
                                 ":12: pass 2: depth 0.6000, plan 0.5520 (tolerance 0.001)");
 }
 
+// A chained thread (threading.md section 11): one segment of one pass moved 0.05 in radius is
+// found, at its move within the pass. The plan's second vertex of pass 1 is (X 15 + 3 - 0.411437,
+// Z -60 - 0.237543) as diameter X35.1771.
+TEST(Verify, ChainSegmentEdited) {
+  const std::string cl = "samples/threads/chain.apt";
+  std::string text = read_file(source_dir() + "/samples/golden/generic-lathe/threads-chain.nc");
+  const std::string from = "N110 X35.177 Z-60.238 F2.\n";
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "N110 X35.277 Z-60.238 F2.\n");
+  const std::string path = temp_dir() + "/threads-chain.nc";
+  write_file(path, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m generic-lathe " + quote(path) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), path + ":12:1: error: thread at " + cl +
+                                ":12: pass 1: move 2 ends at X35.2770 Z-60.2380, plan X35.1771 "
+                                "Z-60.2375 (tolerance 0.001)");
+  EXPECT_NE(r.out.find("\nFAILED: 1 difference beyond 0.001 mm\n"), std::string::npos) << r.out;
+}
+
 TEST(Verify, AgainstASavedPlan) {
   const std::string dir = temp_dir();
   RunResult plan =

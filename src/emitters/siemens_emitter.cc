@@ -40,6 +40,8 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
     call.mismatch = std::move(why);
     return call;
   };
+  if (plan.form == ThreadForm::kChain)
+    return fail("a chained thread: CYCLE99 cuts one straight thread line");
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return fail("CYCLE99 cuts multi-pass threads (THREAD/ON) only");
   if (!m.templates.count(std::string(tmpl::kCycle99.name)))

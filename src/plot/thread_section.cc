@@ -13,7 +13,8 @@ ThreadSection section_from_plan(const ThreadPlan& plan, std::string title) {
   if (title.empty()) {
     title = fmt::format("thread at line {} - pitch {}, depth {}", plan.loc.line,
                         num_text(plan.pitch.pitch), num_text(plan.depth));
-    if (plan.form == ThreadForm::kMulti) title += fmt::format(", OPTION {}", plan.option);
+    if (plan.form == ThreadForm::kMulti || plan.form == ThreadForm::kChain)
+      title += fmt::format(", OPTION {}", plan.option);
   }
   s.title = std::move(title);
   s.units = plan.units;
