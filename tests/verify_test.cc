@@ -126,6 +126,26 @@ TEST(Verify, ChainSegmentEdited) {
   EXPECT_NE(r.out.find("\nFAILED: 1 difference beyond 0.001 mm\n"), std::string::npos) << r.out;
 }
 
+// CYCLE98 read back through the same law the emitter checks: TDEP 0.92 edited to 0.9 moves
+// pass 1 to depth 0.9 sqrt(1/5) = 0.402492 (diameter 30 - 2 x 0.402492 = 29.1950), shifted
+// 0.402492 tan 30 = 0.2324 along -Z, where the plan has 0.411437 (29.1771, Z-0.2375).
+TEST(Verify, Cycle98DepthArgumentEdited) {
+  const std::string cl = "samples/threads/chain.apt";
+  std::string text = read_file(source_dir() + "/samples/golden/sinumerik-840d/threads-chain.mpf");
+  const std::string from = "-80, 50, 0, 0, 0.92, 0, 30,";
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "-80, 50, 0, 0, 0.9, 0, 30,");
+  const std::string path = temp_dir() + "/threads-chain.mpf";
+  write_file(path, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m sinumerik-840d " + quote(path) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), path + ":8:1: error: thread at " + cl +
+                                ":12: pass 1: starts at X29.1950 Z-0.2324, plan X29.1771 Z-0.2375 "
+                                "(tolerance 0.001)");
+}
+
 TEST(Verify, AgainstASavedPlan) {
   const std::string dir = temp_dir();
   RunResult plan =

@@ -58,9 +58,10 @@ TEST(ChainOutput, CyclesFallBackWithTheirReason) {
        "[G31 not used: a chained thread: clpost writes G31 for one straight thread line only. "
        "G33 loop instead]",
        "G33 Z-10. F1.5", "X31. Z-20. F1.5"},
+      // CYCLE98 is tried first (OPTION 0 is not one of its laws), then the G33 loop.
       {"sinumerik-840d",
-       "; CYCLE99 not used: a chained thread: CYCLE99 cuts one straight thread line. G33 loop "
-       "instead",
+       "; CYCLE98 not used: OPTION 0, steps shrinking by a constant amount: CYCLE98 cuts constant "
+       "infeed (VARI 1, 2) or constant cross-section (VARI 3, 4). G33 loop instead",
        "G33 Z-10 K1.5", "X31 Z-20 K1.5"},
       {"nct-2000t", "", "G33 Z-10. F1.5", "X31. Z-20. F1.5"},
   };
@@ -74,6 +75,62 @@ TEST(ChainOutput, CyclesFallBackWithTheirReason) {
     const size_t next = nc.find('\n', first) + 1;
     const std::string line = nc.substr(next, nc.find('\n', next) - next);
     EXPECT_NE(line.find(c.second), std::string::npos) << nc;
+  }
+}
+
+// The seed's CYCLE98 thread (controllers.md) as a CL chain: pitch 2, diameter 30 from Z0 to
+// Z-30, taper to 36 at Z-60, to 50 at Z-80, depth 0.92 in 5 constant cross-section cuts and one
+// spring pass (NID 1), a 45 degree run-out of 10 (CHAMFR,-10: ROP 10). What differs from the
+// seed's call is what the CL says otherwise: no run-in (APP 0), OPTION 1 infeeds along the flank
+// (IANG 30 = TLANGL/2), one lead (PP 2, 2, 2), and the clear line (_VRT above the largest
+// diameter). The run-out of the shallowest pass (depth 0.92 sqrt(1/5) = 0.411437) rises
+// 10 (7, -20)/sqrt(449) + 10 (20, 7)/sqrt(449) = (X 12.742, Z -6.135) from its end at
+// X 25 - 0.411437 - 10.562753 * 7/sqrt(449) = 21.099152 (slid back 0.92 tan 30 / (20/sqrt(449))
+// + 10 along the last segment): the clear line is raised from P0's X 30 to 33.841 (diameter
+// 67.682), 8.8412 outside X 25.
+TEST(ChainOutput, Cycle98ForTheSeedsThread) {
+  const Machine m = shipped_machine("sinumerik-840d");
+  const ThreadPlan plan =
+      plan_for(m, "THREAD/ON,MMPR,2,DEPTH,0.92,CUTS,5,FINCUT,1,OPTION,1,CHAMFR,-10,CHAIN", {30, 5},
+               {{15, 0}, {15, -30}, {18, -60}, {25, -80}});
+  const testing::Emitted e = emit_on(m, plan);
+  ASSERT_TRUE(e.ok) << e.diags;
+  EXPECT_EQ(e.nc,
+            "N10 G1 X67.682 Z0 G95 F0.2\n"
+            "N20 CYCLE98(0, 30, -30, 30, -60, 36, -80, 50, 0, 10, 0.92, 0, 30, 0, 5, 1, 2, 2, 2, "
+            "3, 1, 8.8412)\n");
+  // Two segments: the last point is written again as point 4.
+  const ThreadPlan two = plan_for(m, "THREAD/ON,MMPR,2,DEPTH,0.92,CUTS,5,OPTION,3,CHAIN", {30, 5},
+                                  {{15, 0}, {15, -30}, {18, -60}});
+  const testing::Emitted e2 = emit_on(m, two);
+  EXPECT_NE(e2.nc.find("CYCLE98(0, 30, -30, 30, -60, 36, -60, 36, 0, 0, 0.92, 0, 30, 0, 5, 0, 2, "
+                       "2, 2, 1, 1, 12)\n"),
+            std::string::npos)
+      << e2.nc;
+}
+
+TEST(ChainOutput, Cycle98FallsBackWithItsReason) {
+  const Machine m = shipped_machine("sinumerik-840d");
+  struct Case {
+    const char* on;
+    std::vector<Vec2> gotos;
+    const char* comment;
+  };
+  const Case cases[] = {
+      {"THREAD/ON,MMPR,2,DEPTH,0.92,CUTS,5,OPTION,1,CHAIN",
+       {{15, 0}, {15, -10}, {16, -20}, {17, -30}, {18, -40}},
+       "; CYCLE98 not used: 4 segments: CYCLE98 cuts at most 3. G33 loop instead\n"},
+      {"THREAD/ON,MMPR,2,DEPTH,0.92,CUTS,5,OPTION,0,CHAIN", kContour,
+       "; CYCLE98 not used: OPTION 0, steps shrinking by a constant amount: CYCLE98 cuts constant "
+       "infeed (VARI 1, 2) or constant cross-section (VARI 3, 4). G33 loop instead\n"},
+      {"THREAD/ON,MMPR,2,DEPTH,0.92,CUTS,5,OPTION,2,CHAIN", kContour,
+       "; CYCLE98 not used: OPTION 2 alternates the flanks: CYCLE98 infeeds along one flank "
+       "(IANG). G33 loop instead\n"},
+  };
+  for (const Case& c : cases) {
+    const testing::Emitted e = emit_on(m, plan_for(m, c.on, {30, 5}, c.gotos));
+    EXPECT_TRUE(e.ok) << e.diags;
+    EXPECT_NE(e.nc.find(c.comment), std::string::npos) << c.on << "\n" << e.nc;
   }
 }
 

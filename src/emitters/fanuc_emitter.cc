@@ -50,7 +50,7 @@ std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view 
     if (p.start != start) continue;
     out.heights.push_back(p.depth / out.cos_t);
     out.shifts.push_back(p.shift);
-    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end});
+    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end, {}});
     if (p.depth <= 1e-12) continue;
     const double a = deg(std::atan(p.shift / p.depth));
     if (flank && std::fabs(*flank - a) > 1e-6) one_angle = false;
