@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "emitters/siemens_emitter.h"
 #include "emitters/written_value.h"
 #include "planner/number_text.h"
 #include "planner/vec2_math.h"
@@ -144,12 +145,7 @@ bool Cycle98Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
   const Cycle98Call c = cycle98_call(plan, m);
   if (!c.mismatch.empty()) return unfit_error(plan, ctx, m, name(), c.mismatch);
   const Cycle98Words& w = c.words;
-  // The start position: on the clear line above the first point, reached as the CL approaches.
-  const LathePoint above{plan.end_position.x, plan.end_position.z};
-  if (plan.feed_approach)
-    prog.linear(above);
-  else
-    prog.rapid(above);
+  const LathePoint above = go_to_cycle_start(plan, prog);  // above the first point
   auto num = [&](std::string_view f, double v) { return prog.num(f, v); };
   TemplateFill<tmpl::kCycle98> a;
   a.text<"po1">(num("Z", w.po[0]));
@@ -160,14 +156,7 @@ bool Cycle98Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
   a.text<"dm3">(num("X", w.dm[2]));
   a.text<"po4">(num("Z", w.po[3]));
   a.text<"dm4">(num("X", w.dm[3]));
-  a.text<"app">(num(kDepthFormat, w.app));
-  a.text<"rop">(num(kDepthFormat, w.rop));
-  a.text<"tdep">(num(kDepthFormat, w.tdep));
-  a.text<"fal">(num(kDepthFormat, w.fal));
-  a.text<"iang">(num(kAngleFormat, w.iang));
-  a.text<"nsp">(num(kAngleFormat, w.nsp));
-  a.text<"nrc">(std::to_string(w.nrc));
-  a.text<"nid">(std::to_string(w.nid));
+  fill_shared_cycle_words(a, w, prog);
   a.text<"pp1">(num(kLeadFormat, w.pp[0]));
   a.text<"pp2">(num(kLeadFormat, w.pp[1]));
   a.text<"pp3">(num(kLeadFormat, w.pp[2]));

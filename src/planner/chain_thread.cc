@@ -226,25 +226,15 @@ bool clear_line(const MultiThreadInput& in, const MultiGeometry& g, const MultiG
   return true;
 }
 
+// The multi-pass header (multi_geometry.h) with what a chain says otherwise: its form, its
+// last point as P2, its contour, and its kind from the lead axis alone.
 ThreadPlan chain_header(const MultiThreadInput& in, const PlannerSettings& settings,
                         const PitchSpec& pitch, const MultiGeometry& g) {
-  ThreadPlan plan;
-  plan.loc = in.on_loc;
+  ThreadPlan plan = plan_header(in, settings, pitch, g);
   plan.form = ThreadForm::kChain;
-  plan.units = in.units;
-  plan.pitch = pitch;
-  plan.lead = pitch.starts * pitch.pitch;
-  plan.p0 = g.p0;
-  plan.p1 = in.gotos.front().point;
   plan.p2 = in.gotos.back().point;
   for (const ThreadGoto& p : in.gotos) plan.points.push_back(p.point);
-  plan.feed_approach = in.feed_approach;
   plan.kind = g.lead_along_z ? ThreadKind::kTurn : ThreadKind::kFace;
-  plan.lead_along_z = g.lead_along_z;
-  plan.cutang = g.cutang;
-  plan.side = side_of(g);
-  plan.option = in.words.option.set ? in.words.option.value : settings.default_option;
-  plan.tool_angle = in.words.tlangl.set ? in.words.tlangl.value : settings.default_tool_angle;
   return plan;
 }
 

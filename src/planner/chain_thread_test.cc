@@ -24,15 +24,6 @@ using testing::TestStatement;
 
 const std::vector<Vec2> kContour = {{15, 0}, {15, -30}, {18, -60}, {22, -68}};
 
-std::string messages(const Diagnostics& d) {
-  std::string out;
-  for (const Diagnostic& x : d.kept()) {
-    const std::string s = d.render(x);
-    out += s.substr(0, s.find('\n') + 1);
-  }
-  return out;
-}
-
 struct Chain {
   bool ok = false;
   ThreadPlan plan;
@@ -53,7 +44,7 @@ Chain chain(const std::string& on_line, const std::vector<Vec2>& gotos = kContou
   c.in.modal_pitch = modal;
   r.ok = plan_chain_thread(c.in, settings, r.plan, d);
   EXPECT_EQ(r.ok, !d.has_errors());
-  r.messages = messages(d);
+  r.messages = testing::first_lines(d);
   return r;
 }
 
