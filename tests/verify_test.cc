@@ -173,6 +173,34 @@ TEST(Verify, AgainstASavedPlan) {
                                 "0.005)");
 }
 
+// A chain's plan JSON (points, every pass's path) read back: the golden cuts it; the middle
+// vertex of pass 1 moved 0.05 outward in the JSON (radius 14.203 -> 14.253) is found at its move.
+TEST(Verify, AgainstASavedChainPlan) {
+  const std::string dir = temp_dir();
+  const std::string cl = "samples/threads/chain-internal.apt";
+  RunResult plan =
+      run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+          " plan -m fanuc-0i-t --format json " + cl + " > " + quote(dir + "/plan.json"));
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  const std::string golden = source_dir() + "/samples/golden/fanuc-0i-t/threads-chain-internal.nc";
+  RunResult r = run(quote(clpost_bin()) + " verify -m fanuc-0i-t " + quote(golden) + " --plan " +
+                    quote(dir + "/plan.json"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 threads, 4 passes planned, 4 cut\n"), std::string::npos) << r.out;
+  std::string json = read_file(dir + "/plan.json");
+  const std::string vertex = "{\"x\": 14.203, \"z\": -10.117202}";
+  const size_t at = json.find(vertex);
+  ASSERT_NE(at, std::string::npos) << json.substr(0, 2000);
+  json.replace(at, vertex.size(), "{\"x\": 14.253, \"z\": -10.117202}");
+  write_file(dir + "/plan.json", json);
+  r = run(quote(clpost_bin()) + " verify -m fanuc-0i-t " + quote(golden) + " --plan " +
+          quote(dir + "/plan.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), golden + ":13:1: error: thread at " + dir +
+                                "/plan.json:11: pass 1: move 1 ends at X28.4060 Z-10.1170, plan "
+                                "X28.5060 Z-10.1172 (tolerance 0.005)");
+}
+
 TEST(Verify, PlanJsonErrorsPointIntoTheJson) {
   const std::string dir = temp_dir();
   const std::string golden = source_dir() + "/samples/golden/haas-st/threads-options.nc";
