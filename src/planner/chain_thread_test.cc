@@ -220,6 +220,39 @@ TEST(ChainThread, PlanJsonHasPointsAndPaths) {
   EXPECT_NE(text.find("  returns to X 30; ends at (X 30, Z 0)\n"), std::string::npos) << text;
 }
 
+TEST(ChainThread, NegativeChamfrShortensTheLastSegment) {
+  // CHAMFR,-2 (45 degrees) on a last segment along -Z: every pass ends 2 earlier and runs out
+  // 2 along it and 2 outward (X +2, Z -2), ending where the pass would have ended.
+  const Chain r = chain("THREAD/ON,DEPTH,1,CHAMFR,-2,CHAIN", {{15, 0}, {15, -10}, {15, -20}});
+  ASSERT_TRUE(r.ok) << r.messages;
+  ASSERT_TRUE(r.plan.pullout.has_value());
+  EXPECT_NEAR(r.plan.pullout->x, 2, 1e-12);
+  EXPECT_NEAR(r.plan.pullout->z, -2, 1e-12);
+  expect_path(r.plan.passes[0], {{14, 0}, {14, -10}, {14, -18}});
+  EXPECT_NEAR(r.plan.passes[0].pullout_end.x, 16, 1e-12);
+  EXPECT_NEAR(r.plan.passes[0].pullout_end.z, -20, 1e-12);
+}
+
+TEST(ChainThread, ClearLineBelowThePulloutIsRaised) {
+  // P0 X 16, one pass 1 deep, ATANGL,0,3 pulls 3 straight out to X 17: the tool clears to 17.
+  const Chain r = chain("THREAD/ON,DEPTH,1,ATANGL,0,3,CHAIN", {{15, 0}, {15, -10}}, {16, 5});
+  ASSERT_TRUE(r.ok) << r.messages;
+  EXPECT_EQ(r.messages,
+            "t.cl:2:1: warning: the clear line X 16 is inside the pull-out end: the tool clears "
+            "to 17\n");
+  EXPECT_NEAR(r.plan.end_position.x, 17, 1e-12);
+  EXPECT_NEAR(r.plan.passes[0].clear.x, 17, 1e-12);
+}
+
+TEST(ChainThread, FaceChainErrorsNameTheXAxis) {
+  const Chain r = chain("THREAD/ON,DEPTH,1,CHAIN", {{30, 0}, {20, 0}, {25, -5}}, {35, 5});
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.messages,
+            "t.cl:5:1: error: the chain segment from (X 20, Z 0) to (X 25, Z -5) moves 5 along X; "
+            "every segment must advance along X like the first one (-X)\n"
+            "t.cl:2:1: note: the thread sequence starts here\n");
+}
+
 struct ChainError {
   const char* on;
   std::vector<Vec2> gotos;
