@@ -244,6 +244,25 @@ struct Seg {
 };
 
 // Planned synchronized segments: each pass's cut, then its threaded pull-out.
+// The {"x": .., "z": ..} points of `text`, in order.
+std::vector<XZ> points_in(const std::string& text) {
+  std::vector<XZ> out;
+  std::regex point_re(R"re(\{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\})re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), point_re);
+       it != std::sregex_iterator(); ++it)
+    out.push_back({std::stod((*it)[1]), std::stod((*it)[2])});
+  return out;
+}
+
+// The JSON array that follows `key` in `text` ("" when there is none).
+std::string array_after(const std::string& text, const std::string& key) {
+  const size_t at = text.find("\"" + key + "\": [");
+  if (at == std::string::npos) return "";
+  return text.substr(at, text.find(']', at) - at);
+}
+
+// Every planned synchronized move of one thread's JSON: each pass from -> to (a chain's pass:
+// every segment of its path), then its threaded pull-out.
 std::vector<Seg> planned(const std::string& json, bool linear) {
   std::vector<Seg> out;
   std::regex pullout_re(R"re("pullout": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\})re");
@@ -251,12 +270,17 @@ std::vector<Seg> planned(const std::string& json, bool linear) {
   bool have_pullout = std::regex_search(json, m, pullout_re);
   XZ d = have_pullout ? XZ{std::stod(m[1]), std::stod(m[2])} : XZ{};
   std::regex pass_re(
-      R"re("from": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\}, "to": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\})re");
+      R"re("from": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\}, "to": \{"x": ([-0-9.e]+), "z": ([-0-9.e]+)\}([^\n]*))re");
   for (auto it = std::sregex_iterator(json.begin(), json.end(), pass_re);
        it != std::sregex_iterator(); ++it) {
     const std::smatch& p = *it;
     XZ from{std::stod(p[1]), std::stod(p[2])}, to{std::stod(p[3]), std::stod(p[4])};
-    out.push_back({from, to});
+    const std::vector<XZ> path = points_in(array_after(p[5].str(), "path"));
+    if (path.size() >= 2) {
+      for (size_t j = 1; j < path.size(); ++j) out.push_back({path[j - 1], path[j]});
+    } else {
+      out.push_back({from, to});
+    }
     if (have_pullout && !linear) out.push_back({to, {to.x + d.x, to.z + d.z}});
   }
   return out;
@@ -352,7 +376,13 @@ std::vector<Seg> planned_all(const std::string& json) {
     std::smatch m, q;
     bool linear = false;
     if (std::regex_search(one, q, pullout_re) && std::regex_search(one, m, p1_re)) {
-      const double tx = std::stod(m[4]) - std::stod(m[2]), tr = std::stod(m[3]) - std::stod(m[1]);
+      // The pull-out's angle with the thread line (a chain's: its last segment).
+      double tx = std::stod(m[4]) - std::stod(m[2]), tr = std::stod(m[3]) - std::stod(m[1]);
+      const std::vector<XZ> contour = points_in(array_after(one, "points"));
+      if (contour.size() >= 2) {
+        tx = contour.back().z - contour[contour.size() - 2].z;
+        tr = contour.back().x - contour[contour.size() - 2].x;
+      }
       const double dx = std::stod(q[1]), dz = std::stod(q[2]);
       const double c = std::fabs(tx * dz + tr * dx) / std::hypot(tx, tr) / std::hypot(dx, dz);
       const double angle = std::acos(std::min(1.0, c)) * 180 / 3.14159265358979323846;

@@ -105,6 +105,47 @@ TEST(Verify, G33LoopInfeedEdited) {
                                 ":12: pass 2: depth 0.6000, plan 0.5520 (tolerance 0.001)");
 }
 
+// A chained thread (threading.md section 11): one segment of one pass moved 0.05 in radius is
+// found, at its move within the pass. The plan's second vertex of pass 1 is (X 15 + 3 - 0.411437,
+// Z -60 - 0.237543) as diameter X35.1771.
+TEST(Verify, ChainSegmentEdited) {
+  const std::string cl = "samples/threads/chain.apt";
+  std::string text = read_file(source_dir() + "/samples/golden/generic-lathe/threads-chain.nc");
+  const std::string from = "N110 X35.177 Z-60.238 F2.\n";
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "N110 X35.277 Z-60.238 F2.\n");
+  const std::string path = temp_dir() + "/threads-chain.nc";
+  write_file(path, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m generic-lathe " + quote(path) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), path + ":12:1: error: thread at " + cl +
+                                ":12: pass 1: move 2 ends at X35.2770 Z-60.2380, plan X35.1771 "
+                                "Z-60.2375 (tolerance 0.001)");
+  EXPECT_NE(r.out.find("\nFAILED: 1 difference beyond 0.001 mm\n"), std::string::npos) << r.out;
+}
+
+// CYCLE98 read back through the same law the emitter checks: TDEP 0.92 edited to 0.9 moves
+// pass 1 to depth 0.9 sqrt(1/5) = 0.402492 (diameter 30 - 2 x 0.402492 = 29.1950), shifted
+// 0.402492 tan 30 = 0.2324 along -Z, where the plan has 0.411437 (29.1771, Z-0.2375).
+TEST(Verify, Cycle98DepthArgumentEdited) {
+  const std::string cl = "samples/threads/chain.apt";
+  std::string text = read_file(source_dir() + "/samples/golden/sinumerik-840d/threads-chain.mpf");
+  const std::string from = "-80, 50, 0, 0, 0.92, 0, 30,";
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "-80, 50, 0, 0, 0.9, 0, 30,");
+  const std::string path = temp_dir() + "/threads-chain.mpf";
+  write_file(path, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m sinumerik-840d " + quote(path) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), path + ":8:1: error: thread at " + cl +
+                                ":12: pass 1: starts at X29.1950 Z-0.2324, plan X29.1771 Z-0.2375 "
+                                "(tolerance 0.001)");
+}
+
 TEST(Verify, AgainstASavedPlan) {
   const std::string dir = temp_dir();
   RunResult plan =
@@ -130,6 +171,34 @@ TEST(Verify, AgainstASavedPlan) {
   EXPECT_EQ(first_error(r), golden + ":14:1: error: thread at " + dir +
                                 "/plan.json:12: pass 3: depth 0.7260, plan 0.7360 (tolerance "
                                 "0.005)");
+}
+
+// A chain's plan JSON (points, every pass's path) read back: the golden cuts it; the middle
+// vertex of pass 1 moved 0.05 outward in the JSON (radius 14.203 -> 14.253) is found at its move.
+TEST(Verify, AgainstASavedChainPlan) {
+  const std::string dir = temp_dir();
+  const std::string cl = "samples/threads/chain-internal.apt";
+  RunResult plan =
+      run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+          " plan -m fanuc-0i-t --format json " + cl + " > " + quote(dir + "/plan.json"));
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  const std::string golden = source_dir() + "/samples/golden/fanuc-0i-t/threads-chain-internal.nc";
+  RunResult r = run(quote(clpost_bin()) + " verify -m fanuc-0i-t " + quote(golden) + " --plan " +
+                    quote(dir + "/plan.json"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 threads, 4 passes planned, 4 cut\n"), std::string::npos) << r.out;
+  std::string json = read_file(dir + "/plan.json");
+  const std::string vertex = "{\"x\": 14.203, \"z\": -10.117202}";
+  const size_t at = json.find(vertex);
+  ASSERT_NE(at, std::string::npos) << json.substr(0, 2000);
+  json.replace(at, vertex.size(), "{\"x\": 14.253, \"z\": -10.117202}");
+  write_file(dir + "/plan.json", json);
+  r = run(quote(clpost_bin()) + " verify -m fanuc-0i-t " + quote(golden) + " --plan " +
+          quote(dir + "/plan.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r), golden + ":13:1: error: thread at " + dir +
+                                "/plan.json:11: pass 1: move 1 ends at X28.4060 Z-10.1170, plan "
+                                "X28.5060 Z-10.1172 (tolerance 0.005)");
 }
 
 TEST(Verify, PlanJsonErrorsPointIntoTheJson) {

@@ -75,7 +75,8 @@ PlotOutcome plot_file(const PlotRequest& req) {
     if (!simulate_text(p.program, "<program of " + display_name(req.input) + ">", m, sim,
                        out.diagnostics))
       return out;
-    for (const ThreadPlan& t : p.plans) sections.push_back(section_from_plan(t, ""));
+    for (const ThreadPlan& t : p.plans)
+      for (ThreadSection& s : sections_from_plan(t)) sections.push_back(std::move(s));
     title = fmt::format("{} posted on {}", display_name(req.input), m.name);
   } else {
     if (!simulate_file(req.input, m, sim, out.diagnostics)) return out;

@@ -12,8 +12,10 @@ namespace clpost {
 std::vector<Cut> plan_cuts(const ThreadPlan& plan) {
   std::vector<Cut> out;
   out.reserve(plan.passes.size());
-  for (const ThreadPass& p : plan.passes)
-    out.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end});
+  for (const ThreadPass& p : plan.passes) {
+    out.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end, {}});
+    if (p.path.size() > 2) out.back().corners.assign(p.path.begin() + 1, p.path.end() - 1);
+  }
   return out;
 }
 
@@ -60,6 +62,13 @@ std::string compare_cuts(const std::vector<Cut>& control, const std::vector<Cut>
       return fmt::format("{}: depth {:.4f}, plan {:.4f}", name, c.depth, p.depth);
     if (dist(c.from, p.from) > tol)
       return fmt::format("{}: starts at {}, plan {}", name, point(c.from), point(p.from));
+    if (c.corners.size() != p.corners.size())
+      return fmt::format("{}: {} segments, plan {}", name, c.corners.size() + 1,
+                         p.corners.size() + 1);
+    for (size_t j = 0; j < c.corners.size(); ++j)
+      if (dist(c.corners[j], p.corners[j]) > tol)
+        return fmt::format("{}: segment {} ends at {}, plan {}", name, j + 1, point(c.corners[j]),
+                           point(p.corners[j]));
     if (dist(c.to, p.to) > tol)
       return fmt::format("{}: ends at {}, plan {}", name, point(c.to), point(p.to));
     if (dist(c.end, p.end) > tol)

@@ -11,11 +11,12 @@
 namespace clpost {
 
 struct Cut {
-  int start = 0;     // start index, 0-based
-  double depth = 0;  // cumulative depth below the thread surface
-  Vec2 from;         // synchronized cut start (CL frame, x radius)
-  Vec2 to;           // synchronized cut end
-  Vec2 end;          // after the pull-out (== to when there is none)
+  int start = 0;              // start index, 0-based
+  double depth = 0;           // cumulative depth below the thread surface
+  Vec2 from;                  // synchronized cut start (CL frame, x radius)
+  Vec2 to;                    // synchronized cut end
+  Vec2 end;                   // after the pull-out (== to when there is none)
+  std::vector<Vec2> corners;  // a chained thread: the vertices between from and to, in order
 };
 
 // The plan's passes as cuts, in cutting order.

@@ -33,7 +33,9 @@ inline ThreadPlan plan_for(const Machine& m, const std::string& on, Vec2 p0,
   c.in.feed_approach = feed_approach;
   PlannerSettings s = planner_settings(m);
   ThreadPlan plan;
-  EXPECT_TRUE(plan_multi_thread(c.in, s, plan, d)) << d.render_all();
+  const bool ok = c.in.words.chain.set ? plan_chain_thread(c.in, s, plan, d)
+                                       : plan_multi_thread(c.in, s, plan, d);
+  EXPECT_TRUE(ok) << d.render_all();
   plan.loc = {2, 1};
   return plan;
 }

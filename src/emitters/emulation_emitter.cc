@@ -55,7 +55,13 @@ bool EmulationEmitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitC
       prog.rapid(lp(p.from));
     ThreadLead l = base;
     if (plan.starts_by_angle && plan.pitch.starts > 1) l.start_angle = p.start_angle;
-    prog.thread(lp(p.to), l);
+    if (p.path.size() >= 2) {
+      // A chain (threading.md section 11): one block per segment, modal, synchronized once (the
+      // start angle on the first block only).
+      for (size_t j = 1; j < p.path.size(); ++j) prog.thread(lp(p.path[j]), j == 1 ? l : base);
+    } else {
+      prog.thread(lp(p.to), l);
+    }
     if (plan.pullout) {
       if (plan.pullout_linear) {
         prog.linear(lp(p.pullout_end));

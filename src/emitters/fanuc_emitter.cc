@@ -25,6 +25,8 @@ std::string describe_pullout(const ThreadPlan& plan) {
 
 std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view cycle,
                             CyclePlan& out) {
+  if (plan.form == ThreadForm::kChain)
+    return fmt::format("a chained thread: {} cuts one straight thread line", cycle);
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return fmt::format("not a multi-pass thread: {} is a multi-pass cycle", cycle);
   if (plan.kind == ThreadKind::kFace || !plan.lead_along_z)
@@ -48,7 +50,7 @@ std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view 
     if (p.start != start) continue;
     out.heights.push_back(p.depth / out.cos_t);
     out.shifts.push_back(p.shift);
-    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end});
+    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end, {}});
     if (p.depth <= 1e-12) continue;
     const double a = deg(std::atan(p.shift / p.depth));
     if (flank && std::fabs(*flank - a) > 1e-6) one_angle = false;
@@ -124,6 +126,8 @@ std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, 
     f.mismatch = std::move(why);
     return std::nullopt;
   };
+  if (plan.form == ThreadForm::kChain)
+    return fail("a chained thread: G76 cuts one straight thread line");
   if (plan.pitch.lead_change != 0) return fail("variable lead: G76 cuts a constant lead");
   if (plan.pitch.starts > 1)
     return fail(fmt::format("{} starts: G76 has no start-angle word (G92 with Q cuts them)",
@@ -257,6 +261,8 @@ std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& 
     f.mismatch = std::move(why);
     return std::nullopt;
   };
+  if (plan.form == ThreadForm::kChain)
+    return fail("a chained thread: G92 cuts one straight line per pass");
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return fail("not a multi-pass thread");
   if (plan.pitch.lead_change != 0) return fail("variable lead: G92 cuts a constant lead");

@@ -39,6 +39,8 @@ std::optional<std::vector<HaasBlock>> haas_words(const ThreadPlan& plan, const M
     f.mismatch = std::move(why);
     return std::nullopt;
   };
+  if (plan.form == ThreadForm::kChain)
+    return fail("a chained thread: G76 cuts one straight thread line");
   if (plan.pitch.lead_change != 0) return fail("variable lead: G76 cuts a constant lead");
   if (plan.option == 0)
     return fail(

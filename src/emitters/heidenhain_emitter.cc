@@ -44,6 +44,8 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
     why = std::move(reason);
     return std::nullopt;
   };
+  if (plan.form == ThreadForm::kChain)
+    return no("a chained thread: clpost writes G31 for one straight thread line only");
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return no("G31 cuts multi-pass threads only");
   if (plan.pitch.lead_change != 0)

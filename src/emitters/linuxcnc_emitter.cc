@@ -101,6 +101,8 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
     why = std::move(reason);
     return std::nullopt;
   };
+  if (plan.form == ThreadForm::kChain)
+    return no("a chained thread: G76 cuts one straight thread line");
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return no("G76 cuts multi-pass threads only");
   if (plan.pitch.lead_change != 0)

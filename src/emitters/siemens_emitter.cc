@@ -40,6 +40,8 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
     call.mismatch = std::move(why);
     return call;
   };
+  if (plan.form == ThreadForm::kChain)
+    return fail("a chained thread: CYCLE99 cuts one straight thread line");
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
     return fail("CYCLE99 cuts multi-pass threads (THREAD/ON) only");
   if (!m.templates.count(std::string(tmpl::kCycle99.name)))
@@ -217,6 +219,15 @@ Fit Cycle99Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
   return Fit{c.mismatch, c.notes};
 }
 
+LathePoint go_to_cycle_start(const ThreadPlan& plan, NcProgram& prog) {
+  const LathePoint above{plan.end_position.x, plan.end_position.z};
+  if (plan.feed_approach)
+    prog.linear(above);
+  else
+    prog.rapid(above);
+  return above;
+}
+
 bool Cycle99Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
   Cycle99Call c = cycle99_call(plan, prog.machine());
   if (!c.mismatch.empty()) {
@@ -224,26 +235,14 @@ bool Cycle99Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitCon
     return false;
   }
   const Cycle99Words& w = c.words;
-  // The start position: on the clear line above the thread start, reached as the CL approaches.
-  const LathePoint above{plan.end_position.x, plan.end_position.z};
-  if (plan.feed_approach)
-    prog.linear(above);
-  else
-    prog.rapid(above);
+  const LathePoint above = go_to_cycle_start(plan, prog);
   auto num = [&](std::string_view f, double v) { return prog.num(f, v); };
   TemplateFill<tmpl::kCycle99> a;
   a.text<"spl">(num("Z", w.spl));
   a.text<"dm1">(num("X", w.dm1));
   a.text<"fpl">(num("Z", w.fpl));
   a.text<"dm2">(num("X", w.dm2));
-  a.text<"app">(num(kDepthFormat, w.app));
-  a.text<"rop">(num(kDepthFormat, w.rop));
-  a.text<"tdep">(num(kDepthFormat, w.tdep));
-  a.text<"fal">(num(kDepthFormat, w.fal));
-  a.text<"iang">(num(kAngleFormat, w.iang));
-  a.text<"nsp">(num(kAngleFormat, w.nsp));
-  a.text<"nrc">(std::to_string(w.nrc));
-  a.text<"nid">(std::to_string(w.nid));
+  fill_shared_cycle_words(a, w, prog);
   a.text<"pit">(num(kLeadFormat, w.pit));
   a.text<"vari">(std::to_string(w.vari));
   a.text<"numth">(std::to_string(w.numth));

@@ -7,6 +7,7 @@
 
 #include "emitters/emitter.h"
 #include "emitters/siemens_law.h"
+#include "machine/template_values.h"
 
 namespace clpost {
 
@@ -18,6 +19,27 @@ struct Cycle99Call {
   std::vector<std::string> notes;
 };
 Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m);
+
+// Where a SINUMERIK cycle call starts and the control returns: on the clear line above the
+// thread start (the plan's end position), reached as the CL approaches (fed or rapid). Returns
+// that point.
+LathePoint go_to_cycle_start(const ThreadPlan& plan, NcProgram& prog);
+
+// The words CYCLE99 and CYCLE98 share (APP, ROP, TDEP, FAL, IANG, NSP, NRC, NID), from `w`
+// (Cycle99Words or Cycle98Words) into `a` (a fill of either template), in the cycles' named
+// formats.
+template <const TemplateSpec& T, typename Words>
+void fill_shared_cycle_words(TemplateFill<T>& a, const Words& w, const NcProgram& prog) {
+  auto num = [&](std::string_view f, double v) { return prog.num(f, v); };
+  a.template text<"app">(num("cycle99_depth", w.app));
+  a.template text<"rop">(num("cycle99_depth", w.rop));
+  a.template text<"tdep">(num("cycle99_depth", w.tdep));
+  a.template text<"fal">(num("cycle99_depth", w.fal));
+  a.template text<"iang">(num("cycle99_angle", w.iang));
+  a.template text<"nsp">(num("cycle99_angle", w.nsp));
+  a.template text<"nrc">(std::to_string(w.nrc));
+  a.template text<"nid">(std::to_string(w.nid));
+}
 
 class Cycle99Emitter : public Emitter {
  public:

@@ -7,6 +7,7 @@
 
 #include <functional>
 
+#include "emitters/cycle98_emitter.h"
 #include "emitters/emitter_test_util.h"
 #include "emitters/fanuc_emitter.h"
 #include "emitters/haas_emitter.h"
@@ -46,6 +47,8 @@ const Case kCases[] = {
      "THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,5,OPTION,1,FINCUT,2", "x1"},
     {"sinumerik-840d", "cycle99", [] { return std::make_unique<Cycle99Emitter>(); },
      "THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,4,OPTION,1", "spl"},
+    {"sinumerik-840d", "cycle98", [] { return std::make_unique<Cycle98Emitter>(); },
+     "THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,4,OPTION,1,CHAIN", "po1"},
 };
 
 TEST(TemplateFailure, EveryCycleTemplateThatCannotBeWrittenIsAnErrorAtTheThread) {

@@ -3,6 +3,7 @@
 // make_loop_emitter below; add a new control's emitter there.
 #include <fmt/format.h>
 
+#include "emitters/cycle98_emitter.h"
 #include "emitters/emitter.h"
 #include "emitters/emulation_emitter.h"
 #include "emitters/fanuc_emitter.h"
@@ -70,23 +71,30 @@ namespace {
 // not fit, an NC comment says why (or, with `fallback: error`, an error diagnostic).
 class ThreadOutput : public Emitter {
  public:
-  ThreadOutput(const Machine& m, std::vector<std::unique_ptr<Emitter>> chain, bool error_fallback)
-      : m_(m), chain_(std::move(chain)), error_fallback_(error_fallback) {}
+  // `for_chains`: tried first for a chained thread (threading.md section 11), or null.
+  ThreadOutput(const Machine& m, std::vector<std::unique_ptr<Emitter>> chain,
+               std::unique_ptr<Emitter> for_chains, bool error_fallback)
+      : m_(m),
+        chain_(std::move(chain)),
+        for_chains_(std::move(for_chains)),
+        error_fallback_(error_fallback) {}
 
   std::string_view name() const override { return chain_.front()->name(); }
 
   Fit fit(const ThreadPlan& plan, const Machine& m) const override {
-    for (const auto& e : chain_) {
+    const std::vector<Emitter*> order = order_for(plan);
+    for (Emitter* e : order) {
       Fit f = e->fit(plan, m);
       if (f.exact() || error_fallback_) return f;
     }
-    return chain_.back()->fit(plan, m);
+    return order.back()->fit(plan, m);
   }
 
   bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) override {
     std::string why;
-    for (size_t i = 0; i < chain_.size(); ++i) {
-      Emitter& e = *chain_[i];
+    const std::vector<Emitter*> order = order_for(plan);
+    for (size_t i = 0; i < order.size(); ++i) {
+      Emitter& e = *order[i];
       Fit f = e.fit(plan, m_);
       if (!f.exact()) {
         if (error_fallback_) {
@@ -110,8 +118,17 @@ class ThreadOutput : public Emitter {
   }
 
  private:
+  // The emitters tried for `plan`, in order.
+  std::vector<Emitter*> order_for(const ThreadPlan& plan) const {
+    std::vector<Emitter*> order;
+    if (for_chains_ && plan.form == ThreadForm::kChain) order.push_back(for_chains_.get());
+    for (const auto& e : chain_) order.push_back(e.get());
+    return order;
+  }
+
   const Machine& m_;
   std::vector<std::unique_ptr<Emitter>> chain_;
+  std::unique_ptr<Emitter> for_chains_;
   bool error_fallback_;
 };
 
@@ -158,7 +175,11 @@ std::vector<std::unique_ptr<Emitter>> emitter_chain(const Machine& m) {
 }  // namespace
 
 std::unique_ptr<Emitter> make_emitter(const Machine& m) {
-  return std::make_unique<ThreadOutput>(m, emitter_chain(m),
+  // A machine with a cycle98 template cuts chained threads with CYCLE98 where it is exact.
+  std::unique_ptr<Emitter> for_chains;
+  if (m.templates.count(std::string(tmpl::kCycle98.name)))
+    for_chains = std::make_unique<Cycle98Emitter>();
+  return std::make_unique<ThreadOutput>(m, emitter_chain(m), std::move(for_chains),
                                         m.thread_fallback == ThreadFallback::kError);
 }
 

@@ -692,3 +692,40 @@ TEST(InterpreterThreads, CoupledVariableLeadStartsEachMoveAtItsLead) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// THREAD/ON,...,CHAIN (threading.md section 11): the GOTOs up to THREAD/OFF are the contour, cut
+// as one synchronized block per segment; the tool returns to P0's X (radius 20, X40.).
+TEST(InterpreterThreads, ChainIsPlannedAndCutSegmentBySegment) {
+  Posted p = post(
+      "SPINDL/500,RPM,CLW\nRAPID\nGOTO/20,0,5\nTHREAD/ON,MMPR,1.5,DEPTH,0.5,OPTION,0,CHAIN\n"
+      "GOTO/15,0,0\nGOTO/15,0,-10\nGOTO/16,0,-20\nTHREAD/OFF\nFINI\n",
+      generic());
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(p.nc, std::string(kHeader) +
+                      "G97 S500 M3\nG0 X40. Z5.\n(thread line 4: 1 passes, pitch 1.5, depth 0.5)\n"
+                      "(pass 1 depth 0.5000 rough)\nZ0.\nX29.\nG33 Z-10. F1.5\nX31. Z-20. F1.5\n"
+                      "G0 X40.\nZ0.\nM30\n%\n");
+}
+
+// 22 GOTOs: the error is at the 22nd (line 26), with a note at THREAD/ON; nothing is written.
+TEST(InterpreterThreads, ChainOfTwentyTwoGotosIsAnErrorAtTheLast) {
+  std::string cl = "SPINDL/500,RPM,CLW\nRAPID\nGOTO/20,0,5\nTHREAD/ON,MMPR,1.5,DEPTH,0.5,CHAIN\n";
+  for (int i = 0; i < 22; ++i) cl += "GOTO/15,0," + std::to_string(-i) + "\n";
+  cl += "THREAD/OFF\nFINI\n";
+  Posted p = post(cl, generic());
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_EQ(p.diags,
+            "t.cl:26:1: error: THREAD/ON,CHAIN takes at most 21 GOTOs before THREAD/OFF (20 "
+            "segments); this is GOTO 22\n"
+            "  GOTO/15,0,-21\n"
+            "  ^\n"
+            "t.cl:4:1: note: the thread sequence starts here\n"
+            "  THREAD/ON,MMPR,1.5,DEPTH,0.5,CHAIN\n"
+            "  ^\n");
+}
+
+}  // namespace
+}  // namespace clpost

@@ -89,9 +89,17 @@ void thread_planned(PostState& s, const ThreadPlan& plan) {
 void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
   ensure_started(s);
   const CutSite at{plan.loc, lines.text(plan.loc.line)};
-  if (!begin_thread_spindle(s, std::max(std::abs(plan.p1.x), std::abs(plan.p2.x)), at)) return;
+  double radius = std::max(std::abs(plan.p1.x), std::abs(plan.p2.x));
+  for (const Vec2& p : plan.points) radius = std::max(radius, std::abs(p.x));  // a chain
+  if (!begin_thread_spindle(s, radius, at)) return;
   // Every synchronized move: the thread line, and the pull-out when it is cut synchronized.
-  bool fits = check_thread_feed(s, plan.p1, plan.p2, plan.lead, at);
+  bool fits = true;
+  if (plan.form == ThreadForm::kChain) {
+    for (size_t j = 1; fits && j < plan.points.size(); ++j)
+      fits = check_thread_feed(s, plan.points[j - 1], plan.points[j], plan.lead, at);
+  } else {
+    fits = check_thread_feed(s, plan.p1, plan.p2, plan.lead, at);
+  }
   if (fits && plan.pullout && !plan.pullout_linear && !plan.passes.empty())
     fits = check_thread_feed(s, plan.passes[0].to, plan.passes[0].pullout_end, plan.lead, at);
   if (!fits) return;

@@ -54,7 +54,11 @@ void close_multi(PostState& s, const Statement& st) {
   t.kind = Kind::kNone;
   t.multi.off_loc = st.loc;
   ThreadPlan plan;
-  if (t.failed || !plan_multi_thread(t.multi, t.settings, plan, s.diags)) return;
+  if (t.failed) return;
+  const bool planned = t.multi.words.chain.set
+                           ? plan_chain_thread(t.multi, t.settings, plan, s.diags)
+                           : plan_multi_thread(t.multi, t.settings, plan, s.diags);
+  if (!planned) return;
   cut_multi_thread(s, plan, t.multi.on_lines);
 }
 
@@ -242,7 +246,8 @@ void thread_goto(PostState& s, const Statement& st, Point3 p) {
     s.rapid_next = false;
   }
   // The lists are kept bounded: one GOTO too many is what the planner needs to report.
-  if (t.kind == Kind::kMulti && t.multi.gotos.size() < 4)
+  const size_t multi_max = t.multi.words.chain.set ? kMaxChainGotos + 1 : 4;
+  if (t.kind == Kind::kMulti && t.multi.gotos.size() < multi_max)
     t.multi.gotos.push_back(ThreadGoto{v, st.loc, SavedLines::of(st)});
   if (t.kind == Kind::kSingle && t.single.gotos.size() < 3)
     t.single.gotos.push_back(ThreadGoto{v, st.loc, SavedLines::of(st)});

@@ -213,11 +213,10 @@ const NameSpec kFormats[] = {
 };
 
 const TemplateSpec* const kTemplates[] = {
-    &tmpl::kProgramStart,  &tmpl::kProgramEnd,  &tmpl::kToolChange,
-    &tmpl::kSpindleRpm,    &tmpl::kSpindleCss,  &tmpl::kSpindleStop,
-    &tmpl::kDwell,         &tmpl::kCycle99,     &tmpl::kCycle96,
-    &tmpl::kFanucG76,      &tmpl::kHaasG76,     &tmpl::kG92,
-    &tmpl::kG92Next,       &tmpl::kLinuxcncG76, &tmpl::kLinuxcncG76Taper,
+    &tmpl::kProgramStart,  &tmpl::kProgramEnd,  &tmpl::kToolChange,  &tmpl::kSpindleRpm,
+    &tmpl::kSpindleCss,    &tmpl::kSpindleStop, &tmpl::kDwell,       &tmpl::kCycle99,
+    &tmpl::kCycle98,       &tmpl::kCycle96,     &tmpl::kFanucG76,    &tmpl::kHaasG76,
+    &tmpl::kG92,           &tmpl::kG92Next,     &tmpl::kLinuxcncG76, &tmpl::kLinuxcncG76Taper,
     &tmpl::kHeidenhainG31,
 };
 

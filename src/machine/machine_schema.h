@@ -140,6 +140,29 @@ inline constexpr TemplateField kCycle99Fields[] = {
     {"vrt", kText, "retraction, format cycle99_depth"},
     {"pita", kText, "lead unit"},
     {"psys", kText, "thread type"}};
+inline constexpr TemplateField kCycle98Fields[] = {
+    {"po1", kText, "contour point 1 Z"},
+    {"dm1", kText, "diameter at point 1"},
+    {"po2", kText, "contour point 2 Z"},
+    {"dm2", kText, "diameter at point 2"},
+    {"po3", kText, "contour point 3 Z (point 2 again for one segment)"},
+    {"dm3", kText, "diameter at point 3"},
+    {"po4", kText, "contour point 4 Z (the last point again for fewer segments)"},
+    {"dm4", kText, "diameter at point 4"},
+    {"app", kText, "run-in, format cycle99_depth"},
+    {"rop", kText, "run-out, format cycle99_depth"},
+    {"tdep", kText, "thread depth, format cycle99_depth"},
+    {"fal", kText, "finishing allowance, format cycle99_depth"},
+    {"iang", kText, "infeed angle, format cycle99_angle"},
+    {"nsp", kText, "start angle offset, format cycle99_angle"},
+    {"nrc", kText, "number of roughing cuts"},
+    {"nid", kText, "number of idle (spring) passes"},
+    {"pp1", kText, "lead of segment 1, format cycle99_lead"},
+    {"pp2", kText, "lead of segment 2 (= PP1), format cycle99_lead"},
+    {"pp3", kText, "lead of segment 3 (= PP1), format cycle99_lead"},
+    {"vari", kText, "machining type 1 to 4 (infeed law, external or internal)"},
+    {"numth", kText, "number of starts"},
+    {"vrt", kText, "retraction, format cycle99_depth"}};
 inline constexpr TemplateField kCycle96Fields[] = {{"diath", kText, "nominal diameter, format X"},
                                                    {"axsa", kText, "undercut position Z, format Z"},
                                                    {"form", kText, "DIN 76 form A, B, C or D"}};
@@ -224,6 +247,14 @@ inline constexpr TemplateSpec kDwell{
     "DELAY/t or DELAY/REV,n"};
 inline constexpr TemplateSpec kCycle99{
     "cycle99", kCycle99Fields, kSetting, "SINUMERIK thread cycle", "threading.cycle", "cycle99"};
+inline constexpr TemplateSpec kCycle98{"cycle98",
+                                       kCycle98Fields,
+                                       kOptional,
+                                       "SINUMERIK chained thread of 1 to 3 segments; without it a "
+                                       "chain is cut with the G33 loop",
+                                       {},
+                                       {},
+                                       "THREAD/ON,...,CHAIN"};
 inline constexpr TemplateSpec kCycle96{"cycle96",
                                        kCycle96Fields,
                                        kOptional,

@@ -88,6 +88,27 @@ bool make_infeed_direction(const MultiThreadInput& in, MultiGeometry& g, Reporte
   return true;
 }
 
+ThreadPlan plan_header(const MultiThreadInput& in, const PlannerSettings& settings,
+                       const PitchSpec& pitch, const MultiGeometry& g) {
+  ThreadPlan plan;
+  plan.loc = in.on_loc;
+  plan.form = ThreadForm::kMulti;
+  plan.units = in.units;
+  plan.pitch = pitch;
+  plan.lead = pitch.starts * pitch.pitch;
+  plan.p0 = g.p0;
+  plan.p1 = g.p1;
+  plan.p2 = g.p2;
+  plan.feed_approach = in.feed_approach;
+  plan.kind = kind_of(g.d12);
+  plan.lead_along_z = g.lead_along_z;
+  plan.cutang = g.cutang;
+  plan.side = side_of(g);
+  plan.option = in.words.option.set ? in.words.option.value : settings.default_option;
+  plan.tool_angle = in.words.tlangl.set ? in.words.tlangl.value : settings.default_tool_angle;
+  return plan;
+}
+
 ThreadSide side_of(const MultiGeometry& g) {
   return (!g.lead_along_z || g.n.x < 0) ? ThreadSide::kExternal : ThreadSide::kInternal;
 }

@@ -31,6 +31,11 @@ bool make_thread_line(const MultiThreadInput& in, MultiGeometry& g, plan_report:
 // False, reported, when CUTANG is too close to the thread line or no default can be chosen.
 bool make_infeed_direction(const MultiThreadInput& in, MultiGeometry& g, plan_report::Reporter& r);
 
+// What the plan of a multi-pass thread (form "multi") says before its passes: units, pitch and
+// lead from `pitch`, P0, P1, P2, kind, side, lead axis, CUTANG, OPTION and tool angle.
+ThreadPlan plan_header(const MultiThreadInput& in, const PlannerSettings& settings,
+                       const PitchSpec& pitch, const MultiGeometry& g);
+
 // External when the infeed moves toward the axis; face threads are reported external.
 ThreadSide side_of(const MultiGeometry& g);
 

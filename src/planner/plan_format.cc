@@ -19,6 +19,8 @@ const char* form_name(ThreadForm f) {
       return "single";
     case ThreadForm::kCouple:
       return "couple";
+    case ThreadForm::kChain:
+      return "chain";
   }
   return "multi";
 }
@@ -70,6 +72,23 @@ std::string text_point(Vec2 p) {
   return fmt::format("(X {}, Z {})", num_text(p.x), num_text(p.z));
 }
 
+// A chain's points: "[{...}, {...}]" (JSON) or "(X .., Z ..) -> (X .., Z ..)" (text).
+std::string json_points(const std::vector<Vec2>& v) {
+  std::string o = "[";
+  for (size_t i = 0; i < v.size(); ++i) o += (i ? ", " : "") + json_point(v[i]);
+  return o + "]";
+}
+std::string text_points(const std::vector<Vec2>& v) {
+  std::string o;
+  for (size_t i = 0; i < v.size(); ++i) o += (i ? " -> " : "") + text_point(v[i]);
+  return o;
+}
+
+// A multi-pass form: multi or chain.
+bool is_multi(const ThreadPlan& p) {
+  return p.form == ThreadForm::kMulti || p.form == ThreadForm::kChain;
+}
+
 }  // namespace
 
 std::string plan_to_json(const std::string& file, LengthUnit units,
@@ -84,7 +103,8 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
   o += "  \"threads\": [\n";
   for (size_t k = 0; k < plans.size(); ++k) {
     const ThreadPlan& p = plans[k];
-    const bool multi = p.form == ThreadForm::kMulti;
+    const bool multi = is_multi(p);
+    const bool chain = p.form == ThreadForm::kChain;
     o += "    {\n";
     o += fmt::format("      \"line\": {},\n", p.loc.line);
     o += fmt::format("      \"form\": \"{}\",\n", form_name(p.form));
@@ -99,6 +119,7 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
     o += fmt::format("      \"cutang\": {},\n", multi ? json_num(p.cutang) : "null");
     o += fmt::format("      \"p1\": {},\n", json_point(p.p1));
     o += fmt::format("      \"p2\": {},\n", json_point(p.p2));
+    if (chain) o += fmt::format("      \"points\": {},\n", json_points(p.points));
     o += fmt::format("      \"pullout\": {},\n", p.pullout ? json_point(*p.pullout) : "null");
     if (p.passes.empty()) {
       o += "      \"passes\": []\n";
@@ -108,9 +129,11 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
         const ThreadPass& s = p.passes[i];
         o += fmt::format(
             "        {{\"n\": {}, \"start\": {}, \"depth\": {}, \"kind\": \"{}\", \"shift\": {}, "
-            "\"from\": {}, \"to\": {}}}{}\n",
+            "\"from\": {}, \"to\": {}{}}}{}\n",
             s.n, s.start, json_num(s.depth), pass_kind_name(s.kind), json_num(s.shift),
-            json_point(s.from), json_point(s.to), i + 1 < p.passes.size() ? "," : "");
+            json_point(s.from), json_point(s.to),
+            chain ? fmt::format(", \"path\": {}", json_points(s.path)) : "",
+            i + 1 < p.passes.size() ? "," : "");
       }
       o += "      ]\n";
     }
@@ -125,7 +148,8 @@ std::string plan_to_text(const std::string& file, LengthUnit units,
   std::string o = fmt::format("{}: {} thread{} ({})\n", file, plans.size(),
                               plans.size() == 1 ? "" : "s", units_name(units));
   for (const ThreadPlan& p : plans) {
-    const bool multi = p.form == ThreadForm::kMulti;
+    const bool multi = is_multi(p);
+    const bool chain = p.form == ThreadForm::kChain;
     std::string pitch = num_text(p.pitch.pitch);
     if (p.pitch.from_tpi) pitch += fmt::format(" ({} TPI)", num_text(p.pitch.tpi));
     std::string head =
@@ -148,6 +172,7 @@ std::string plan_to_text(const std::string& file, LengthUnit units,
       }
     }
     o += head + "\n";
+    if (chain) o += fmt::format("  contour {}\n", text_points(p.points));
     const bool angles = p.starts_by_angle;
     o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {}\n", "pass", "start",
                      angles ? fmt::format(" {:>7}", "angle") : "", "depth", "step", "shift", "kind",
@@ -159,12 +184,16 @@ std::string plan_to_text(const std::string& file, LengthUnit units,
         step = s.depth - last[static_cast<size_t>(s.start)];
         last[static_cast<size_t>(s.start)] = s.depth;
       }
-      o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {} -> {}\n", s.n, s.start,
+      o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {}\n", s.n, s.start,
                        angles ? fmt::format(" {:>7}", num_text(s.start_angle)) : "",
                        num_text(s.depth), num_text(step), num_text(s.shift), pass_kind_name(s.kind),
-                       text_point(s.from), text_point(s.to));
+                       chain ? text_points(s.path) : text_points({s.from, s.to}));
     }
-    if (multi) {
+    if (chain) {
+      o += fmt::format("  returns to {} {}; ends at {}\n", p.lead_along_z ? "X" : "Z",
+                       num_text(p.lead_along_z ? p.end_position.x : p.end_position.z),
+                       text_point(p.end_position));
+    } else if (multi) {
       o += fmt::format("  returns {} above the thread line; ends at {}\n", num_text(p.clearance),
                        text_point(p.end_position));
     } else {

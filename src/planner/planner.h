@@ -48,6 +48,16 @@ struct MultiThreadInput {
 bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settings, ThreadPlan& out,
                        Diagnostics& diags);
 
+// Most GOTOs of a chained thread (THREAD/ON,...,CHAIN): 20 segments.
+inline constexpr size_t kMaxChainGotos = 21;
+
+// Plans a chained multi-pass thread (threading.md section 11): `in.gotos` is the contour P1 ...
+// Pk (2 to kMaxChainGotos; the interpreter keeps one more for the error). Form "chain", every
+// pass the contour translated along the infeed, with its `path`. Returns false (with
+// diagnostics) on any error.
+bool plan_chain_thread(const MultiThreadInput& in, const PlannerSettings& settings, ThreadPlan& out,
+                       Diagnostics& diags);
+
 // A single-pass thread: THREAD/TURN|FACE|TAPER[,pitch couplets] and the GOTOs up to the next
 // statement that is not a GOTO (exactly 2 are valid). Same as GOTO/start, COUPLE/ON, GOTO/end,
 // COUPLE/OFF.

@@ -106,6 +106,16 @@ inline MultiCase make_multi(const TestStatement& on, LengthUnit units, Vec2 p0,
   return c;
 }
 
+// The first line of every kept diagnostic ("t.cl:2:1: error: ..."), one per line.
+inline std::string first_lines(const Diagnostics& d) {
+  std::string out;
+  for (const Diagnostic& x : d.kept()) {
+    const std::string s = d.render(x);
+    out += s.substr(0, s.find('\n') + 1);
+  }
+  return out;
+}
+
 inline PitchSpec pitch_of(double p, int starts = 1) {
   PitchSpec s;
   s.set = true;

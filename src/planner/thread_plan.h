@@ -33,7 +33,7 @@ struct PitchSpec {
   SourceLoc lead_change_loc;  // where INCR / DECR was given (line 0: never)
 };
 
-enum class ThreadForm : uint8_t { kMulti, kSingle, kCouple };
+enum class ThreadForm : uint8_t { kMulti, kSingle, kCouple, kChain };
 enum class ThreadKind : uint8_t { kTurn, kFace, kTaper };
 enum class ThreadSide : uint8_t { kExternal, kInternal };
 enum class PassKind : uint8_t { kRough, kFinish, kSpring };
@@ -51,6 +51,9 @@ struct ThreadPass {
   Vec2 clear;        // after the cut: the tool rapids here (clear of the thread, above the end)
   double start_angle = 0;  // spindle start angle in degrees for this start (0 when starts are
                            // made by offset)
+  // A chained thread (threading.md section 11): the vertices of the synchronized cut in cutting
+  // order, `from` first and `to` last. Empty for the other forms (their cut is from -> to).
+  std::vector<Vec2> path;
 };
 
 struct ThreadPlan {
@@ -77,6 +80,8 @@ struct ThreadPlan {
   // Coupled / single-pass threads: the synchronized moves in order (the first point is where
   // the tool is when the thread starts).
   std::vector<Vec2> path;
+  // A chained thread: the contour P1 ... Pk as the CL gives it (the passes are it translated).
+  std::vector<Vec2> points;
   size_t passes_not_kept = 0;  // a coupled path longer than the plan keeps: moves cut, not listed
 };
 

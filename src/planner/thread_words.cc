@@ -451,6 +451,13 @@ void parse_return(Args& a, const Arg& key, ThreadWords& w) {
   w.ret.height = v;
 }
 
+// CHAIN: the GOTOs up to THREAD/OFF are the thread's contour (threading.md section 11).
+void parse_chain(Args& a, const Arg& key, ThreadWords& w) {
+  if (twice(a, key, w.chain)) return;
+  w.chain = {true, true, key.loc};
+  a.no_more_numbers(key, "no value");
+}
+
 // The THREAD/ON words other than the pitch couplets, and how each is parsed once its keyword has
 // been taken.
 struct ThreadWordRule {
@@ -461,7 +468,7 @@ constexpr ThreadWordRule kThreadWordRules[] = {
     {"DEPTH", parse_depth},   {"CUTS", parse_cuts},     {"STEP", parse_step},
     {"FINCUT", parse_fincut}, {"OPTION", parse_option}, {"CUTANG", parse_cutang},
     {"TLANGL", parse_tlangl}, {"ATANGL", parse_atangl}, {"CHAMFR", parse_chamfr},
-    {"RETURN", parse_return},
+    {"RETURN", parse_return}, {"CHAIN", parse_chain},
 };
 
 const ThreadWordRule* find_thread_word(const Arg& key) {

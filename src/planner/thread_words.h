@@ -104,13 +104,14 @@ struct ThreadWords {
   AtanglParam atangl;          // ATANGL,-80..80[,h >= 0]
   ChamfrParam chamfr;          // CHAMFR,L[,10..80]
   ReturnParam ret;             // RETURN[,h > 0]
+  ThreadParam<bool> chain;     // CHAIN: the GOTOs are a contour (threading.md section 11)
   PitchWords pitch;            // TPI / IPR / MMPR / PERREV, MULTRD, INCR / DECR
 };
 
 // The words parse_thread_words accepts, as listed in its "unknown word" error.
 inline constexpr std::string_view kThreadWordList =
-    "DEPTH, CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, "
-    "PERREV, MULTRD, INCR, DECR";
+    "DEPTH, CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, CHAIN, TPI, IPR, "
+    "MMPR, PERREV, MULTRD, INCR, DECR";
 // The words parse_pitch_words accepts.
 inline constexpr std::string_view kPitchWordList = "TPI, IPR, MMPR, PERREV, MULTRD, INCR, DECR";
 

@@ -89,6 +89,20 @@ TEST(ThreadWords, ParsesEveryWordWithItsColumn) {
   EXPECT_FALSE(w.chamfr.set);
 }
 
+// CHAIN (threading.md section 11) takes no value, once.
+TEST(ThreadWords, Chain) {
+  TestStatement st("THREAD/ON,DEPTH,1,CHAIN");
+  Diagnostics d("t.cl");
+  ThreadWords w;
+  ASSERT_TRUE(parse_thread_words(st.st, 1, LengthUnit::kMm, w, d)) << d.render_all();
+  EXPECT_TRUE(w.chain.set);
+  EXPECT_EQ(w.chain.loc.col, 19u);
+  EXPECT_EQ(thread_errors("THREAD/ON,CHAIN,DEPTH,1,CHAIN"),
+            "t.cl:1:25: error: CHAIN is given twice (first at column 11)\n");
+  EXPECT_EQ(thread_errors("THREAD/ON,CHAIN,3"),
+            "t.cl:1:17: error: unexpected number 3 after CHAIN: CHAIN takes no value\n");
+}
+
 // The word list of the "unknown word" error and the words the parser knows are the same: each
 // listed word alone is parsed as itself (a missing value at most), never reported as unknown.
 TEST(ThreadWords, EveryListedWordIsKnown) {
@@ -101,7 +115,7 @@ TEST(ThreadWords, EveryListedWordIsKnown) {
     ++words;
     const std::string errors = thread_errors("THREAD/ON," + word);
     EXPECT_EQ(errors.find("unknown"), std::string::npos) << errors;
-    if (word == "RETURN") {
+    if (word == "RETURN" || word == "CHAIN") {
       EXPECT_EQ(errors, "");
     } else {
       EXPECT_NE(errors.find("after " + word + ", found the end of the statement"),
@@ -109,7 +123,7 @@ TEST(ThreadWords, EveryListedWordIsKnown) {
           << errors;
     }
   }
-  EXPECT_EQ(words, 17);
+  EXPECT_EQ(words, 18);
   EXPECT_EQ(thread_errors("THREAD/ON,DEPT,1"),
             "t.cl:1:11: error: unknown thread parameter 'DEPT'; valid words: " +
                 std::string(kThreadWordList) + "\n");
@@ -298,11 +312,12 @@ struct ErrorCase {
 const ErrorCase kErrorCases[] = {
     {"THREAD/ON,3",
      "t.cl:1:11: error: expected a thread parameter word, found number 3; valid words: DEPTH, "
-     "CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, "
+     "CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, CHAIN, TPI, IPR, MMPR, "
      "PERREV, MULTRD, INCR, DECR\n"},
     {"THREAD/ON,DEPTH,1,PITCH,2",
      "t.cl:1:19: error: unknown thread parameter 'PITCH'; valid words: DEPTH, CUTS, STEP, "
-     "FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, PERREV, MULTRD, "
+     "FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, CHAIN, TPI, IPR, MMPR, PERREV, "
+     "MULTRD, "
      "INCR, DECR\n"},
     {"THREAD/ON,DEPTH,CUTS,3",
      "t.cl:1:11: error: expected the thread depth after DEPTH, found 'CUTS'\n"},
@@ -405,12 +420,13 @@ TEST(ThreadWordsErrors, ExactMessages) {
 
 TEST(ThreadWordsErrors, EveryErrorIsReported) {
   // Two independent mistakes: both are reported, each at its own word.
-  EXPECT_EQ(thread_errors("THREAD/ON,DEPTH,0,FOO,OPTION,9"),
-            "t.cl:1:11: error: DEPTH must be positive; got 0\n"
-            "t.cl:1:19: error: unknown thread parameter 'FOO'; valid words: DEPTH, CUTS, STEP, "
-            "FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, TPI, IPR, MMPR, PERREV, "
-            "MULTRD, INCR, DECR\n"
-            "t.cl:1:23: error: OPTION must be 0, 1, 2, 3 or 4; got 9\n");
+  EXPECT_EQ(
+      thread_errors("THREAD/ON,DEPTH,0,FOO,OPTION,9"),
+      "t.cl:1:11: error: DEPTH must be positive; got 0\n"
+      "t.cl:1:19: error: unknown thread parameter 'FOO'; valid words: DEPTH, CUTS, STEP, "
+      "FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, CHAIN, TPI, IPR, MMPR, PERREV, "
+      "MULTRD, INCR, DECR\n"
+      "t.cl:1:23: error: OPTION must be 0, 1, 2, 3 or 4; got 9\n");
 }
 
 TEST(ThreadWordsErrors, NonFiniteNumber) {

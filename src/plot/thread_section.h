@@ -17,3 +17,13 @@ namespace clpost {
 ThreadSection section_from_plan(const ThreadPlan& plan, std::string title);
 
 }  // namespace clpost
+
+namespace clpost {
+
+// The sections `clpost plot` draws for a planned thread: one, section_from_plan's, or for a
+// chained thread (threading.md section 11) one per segment, titled "... segment j of k", each
+// pass's depth and flank shift measured at right angles to that segment and along it (on a
+// segment sloping a from the infeed's normal the depth is d cos a).
+std::vector<ThreadSection> sections_from_plan(const ThreadPlan& plan);
+
+}  // namespace clpost

@@ -141,3 +141,40 @@ TEST(SectionGeometry, GroovesOnePitchApartAndFallbacks) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// A chain (threading.md section 11): one section per segment. Contour (X 15, Z 0) - (X 15,
+// Z -10) - (X 18, Z -16), every pass the contour moved 1 toward the axis: on the cylinder the
+// depth is 1 with no shift; on the taper (direction (3, -6)/sqrt(45)) the depth at right angles
+// is cos(26.565 deg) = 2/sqrt(5) = 0.894427 and the pass sits 1/sqrt(5) = 0.447214 back along it.
+TEST(ThreadSection, ChainHasASectionPerSegment) {
+  ThreadPlan plan;
+  plan.form = ThreadForm::kChain;
+  plan.loc.line = 7;
+  plan.pitch.pitch = 2;
+  plan.option = 0;
+  plan.points = {{15, 0}, {15, -10}, {18, -16}};
+  ThreadPass p;
+  p.n = 1;
+  p.depth = 1;
+  p.path = {{14, 0}, {14, -10}, {17, -16}};
+  plan.passes.push_back(p);
+  const std::vector<ThreadSection> s = sections_from_plan(plan);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].title,
+            "thread at line 7 - segment 1 of 2, (X 15, Z 0) to (X 15, Z -10) - pitch 2, "
+            "OPTION 0");
+  EXPECT_NEAR(s[0].passes[0].depth, 1, 1e-12);
+  EXPECT_NEAR(s[0].passes[0].shift, 0, 1e-12);
+  EXPECT_NEAR(s[1].passes[0].depth, 2 / std::sqrt(5.0), 1e-12);
+  EXPECT_NEAR(s[1].passes[0].shift, -1 / std::sqrt(5.0), 1e-12);
+  EXPECT_NEAR(s[1].depth, 2 / std::sqrt(5.0), 1e-12);
+  // Any other form: the one section of section_from_plan.
+  plan.form = ThreadForm::kMulti;
+  EXPECT_EQ(sections_from_plan(plan).size(), 1u);
+}
+
+}  // namespace
+}  // namespace clpost

@@ -90,7 +90,8 @@ void State::cycle_cuts(const std::vector<Cut>& cuts, Vec2 start, Vec2 after,
     n.from = c.from;
     n.to = c.to;
     n.end = c.end;
-    n.chain = {c.to};
+    n.chain = c.corners;  // a chained cycle's segments (CYCLE98)
+    n.chain.push_back(c.to);
     if (c.end.x != c.to.x || c.end.z != c.to.z) n.chain.push_back(c.end);
     n.lead = lead;
     n.start = keep_start_index ? c.start : -1;
@@ -105,6 +106,7 @@ void State::cycle_cuts(const std::vector<Cut>& cuts, Vec2 start, Vec2 after,
     // the cut, out to the start line, back.
     move(MoveKind::kRapid, {start.x, c.from.z});
     move(MoveKind::kRapid, c.from);
+    for (const Vec2& corner : c.corners) move(MoveKind::kThread, corner, {}, lead);
     move(MoveKind::kThread, c.to, {}, lead);
     if (c.end.x != c.to.x || c.end.z != c.to.z) move(MoveKind::kThread, c.end, {}, lead);
     move(MoveKind::kRapid, {start.x, pos.z});
@@ -236,7 +238,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::has_code(b, c.dwell)) return;  // G4 X/P/F is a time, not a position
   // Cycles.
   if (!b.calls.empty()) {
-    if (sim::cycle99_call(s, b)) return;
+    if (sim::cycle99_call(s, b) || sim::cycle98_call(s, b)) return;
     return;  // other calls (CYCLE96 undercuts) are not simulated
   }
   switch (m.thread_cycle) {

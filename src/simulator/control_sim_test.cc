@@ -238,3 +238,54 @@ TEST(ControlSim, CycleCountsOutOfRangeAreRefusedNotRun) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// The seed's CYCLE98 example (controllers.md: PO1 0, DM1 30, PO2 -30, DM2 30, PO3 -60, DM3 36,
+// PO4 -80, DM4 50, APP 10, ROP 10, TDEP 0.92, FAL/IANG/NSP empty, NRC 5, NID 1, VARI 3,
+// NUMTH 1) with one lead for the three segments: the contour moved in by 0.92 sqrt(i/5), run in
+// 10 before PO1 along the first segment, ending 10 back along the last one (7, -20)/sqrt(449)
+// and running out at 45 degrees over 10; then the idle pass at 0.92.
+TEST(ControlSim, SiemensCycle98TheSeedsExample) {
+  SimRun r = run(shipped("sinumerik-840d"),
+                 "N10 G18 G71 G40 G90 DIAMON\nN20 G0 X70 Z15\n"
+                 "N30 CYCLE98(0, 30, -30, 30, -60, 36, -80, 50, 10, 10, 0.92, , , , 5, 1, 2, 2, "
+                 "2, 3, 1,)\n");
+  ASSERT_TRUE(r.ok) << r.diagnostics;
+  ASSERT_EQ(r.sim.cuts.size(), 6u);
+  const double s = std::sqrt(449.0);
+  for (int i = 0; i < 6; ++i) {
+    const double d = 0.92 * std::sqrt(std::min(i + 1, 5) / 5.0);
+    const NcCut& c = r.sim.cuts[static_cast<size_t>(i)];
+    EXPECT_NEAR(c.from.x, 15 - d, 1e-9) << i;
+    EXPECT_NEAR(c.from.z, 10, 1e-9) << i;
+    ASSERT_EQ(c.chain.size(), 4u) << i;  // two corners, the end of the last segment, run-out
+    EXPECT_NEAR(c.chain[0].x, 15 - d, 1e-9) << i;
+    EXPECT_NEAR(c.chain[0].z, -30, 1e-9) << i;
+    EXPECT_NEAR(c.chain[1].x, 18 - d, 1e-9) << i;
+    EXPECT_NEAR(c.chain[1].z, -60, 1e-9) << i;
+    EXPECT_NEAR(c.to.x, 25 - d - 70 / s, 1e-9) << i;
+    EXPECT_NEAR(c.to.z, -80 + 200 / s, 1e-9) << i;
+    EXPECT_NEAR(c.end.x, c.to.x + 270 / s, 1e-9) << i;
+    EXPECT_NEAR(c.end.z, c.to.z - 130 / s, 1e-9) << i;
+    EXPECT_DOUBLE_EQ(c.lead, 2);
+    EXPECT_EQ(c.source, "CYCLE98");
+  }
+}
+
+TEST(ControlSim, SiemensCycle98WithOneLeadPerSegmentIsNotExpanded) {
+  // The seed's call as printed: PP1 1.5, PP2 2, PP3 2.
+  SimRun r = run(shipped("sinumerik-840d"),
+                 "N10 G18 G71 G40 G90 DIAMON\nN20 G0 X70 Z15\n"
+                 "N30 CYCLE98(0, 30, -30, 30, -60, 36, -80, 50, 10, 10, 0.92, , , , 5, 1, 1.5, 2, "
+                 "2, 3, 1,)\n");
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.diagnostics.find("p.nc:3:5: error: CYCLE98 is not expanded: PP2 2 differs from PP1 "
+                               "1.5: one lead per chain is expanded\n"),
+            std::string::npos)
+      << r.diagnostics;
+}
+
+}  // namespace
+}  // namespace clpost

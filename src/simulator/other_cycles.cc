@@ -1,10 +1,15 @@
-// Threading cycles read back: LinuxCNC G76, HEIDENHAIN G31 ... G80 and SINUMERIK CYCLE99.
+// Threading cycles read back: LinuxCNC G76, HEIDENHAIN G31 ... G80 and SINUMERIK CYCLE99 and
+// CYCLE98.
 // Laws: emitters/linuxcnc_law.h, emitters/heidenhain_law.h, emitters/siemens_law.h.
 #include <fmt/format.h>
 
 #include <cmath>
 #include <map>
+#include <optional>
+#include <string>
+#include <utility>
 
+#include "emitters/cycle98_law.h"
 #include "emitters/heidenhain_emitter.h"
 #include "emitters/heidenhain_law.h"
 #include "emitters/linuxcnc_law.h"
@@ -179,81 +184,147 @@ std::map<std::string, size_t> call_fields(std::string_view t) {
 
 namespace {
 
-// A CYCLE99 field by its name in the declared template (machine_schema.h): a name the template
-// does not declare does not compile.
+// A CYCLE99 / CYCLE98 field by its name in the declared template (machine_schema.h): a name the
+// template does not declare does not compile.
 consteval const char* cycle99_field(const char* name) {
   (void)tmpl::kCycle99.field(name, FieldKind::kText);
   return name;
 }
+consteval const char* cycle98_field(const char* name) {
+  (void)tmpl::kCycle98.field(name, FieldKind::kText);
+  return name;
+}
+
+constexpr std::string_view kDepth = "cycle99_depth", kAngle = "cycle99_angle",
+                           kLead = "cycle99_lead";
+
+// The arguments of a call the machine's template `spec` writes, read by field name; an argument
+// that is not a number is reported once and makes ok() false.
+class CallArgs {
+ public:
+  // Null when the block has no such call (or the machine no such template).
+  static std::optional<CallArgs> find(State& s, const NcBlock& b, const TemplateSpec& spec) {
+    const auto tmpl = s.m.templates.find(std::string(spec.name));
+    if (tmpl == s.m.templates.end() || tmpl->second.empty()) return std::nullopt;
+    std::string_view t = tmpl->second.front();
+    const std::string name(t.substr(0, t.find('(')));
+    for (const NcCall& c : b.calls)
+      if (c.name == name) return CallArgs(s, c, name, call_fields(t));
+    return std::nullopt;
+  }
+
+  double arg(const char* field, std::string_view format, double fallback) {
+    auto it = fields_.find(field);
+    if (it == fields_.end() || it->second >= call_->args.size() || !ok_) return fallback;
+    const std::string& a = call_->args[it->second];
+    if (a.empty()) return fallback;
+    double v = 0;
+    if (reader::parse_number(a, v) != reader::NumberStatus::kOk) {
+      s_->error(call_->cols[it->second], fmt::format("{} argument {} ({}): invalid number '{}'",
+                                                     name_, it->second + 1, field, a));
+      ok_ = false;
+      return fallback;
+    }
+    const double scale = s_->m.format_for(format).scale;
+    return scale != 0 ? v / scale : v;
+  }
+  int whole(double v, const char* n, int lo, int hi) {
+    if (!ok_) return lo;
+    const std::optional<int> r = s_->whole(v, n, lo, hi, call_->col);
+    ok_ = ok_ && r.has_value();
+    return r.value_or(lo);
+  }
+  bool ok() const { return ok_; }
+  uint32_t col() const { return call_->col; }
+
+ private:
+  CallArgs(State& s, const NcCall& c, std::string name, std::map<std::string, size_t> fields)
+      : s_(&s), call_(&c), name_(std::move(name)), fields_(std::move(fields)) {}
+  State* s_;
+  const NcCall* call_;
+  std::string name_;
+  std::map<std::string, size_t> fields_;
+  bool ok_ = true;
+};
 
 }  // namespace
 
 bool cycle99_call(State& s, const NcBlock& b) {
-  const auto tmpl = s.m.templates.find(std::string(tmpl::kCycle99.name));
-  if (tmpl == s.m.templates.end() || tmpl->second.empty()) return false;
-  std::string_view t = tmpl->second.front();
-  const std::string name(t.substr(0, t.find('(')));
-  const NcCall* call = nullptr;
-  for (const NcCall& c : b.calls)
-    if (c.name == name) call = &c;
-  if (call == nullptr) return false;
-  const std::map<std::string, size_t> fields = call_fields(t);
-  bool ok = true;
-  auto arg = [&](const char* field, std::string_view format, double fallback) {
-    auto it = fields.find(field);
-    if (it == fields.end() || it->second >= call->args.size() || !ok) return fallback;
-    const std::string& a = call->args[it->second];
-    if (a.empty()) return fallback;
-    double v = 0;
-    if (reader::parse_number(a, v) != reader::NumberStatus::kOk) {
-      s.error(call->cols[it->second], fmt::format("{} argument {} ({}): invalid number '{}'", name,
-                                                  it->second + 1, field, a));
-      ok = false;
-      return fallback;
-    }
-    const double scale = s.m.format_for(format).scale;
-    return scale != 0 ? v / scale : v;
-  };
-  constexpr std::string_view kDepth = "cycle99_depth", kAngle = "cycle99_angle",
-                             kLead = "cycle99_lead";
-  auto whole = [&](double v, const char* n, int lo, int hi) {
-    if (!ok) return lo;
-    const std::optional<int> r = s.whole(v, n, lo, hi, call->col);
-    ok = ok && r.has_value();
-    return r.value_or(lo);
-  };
+  std::optional<CallArgs> c = CallArgs::find(s, b, tmpl::kCycle99);
+  if (!c) return false;
   Cycle99Words w;
-  w.spl = arg(cycle99_field("spl"), "Z", 0);
-  w.dm1 = arg(cycle99_field("dm1"), "X", 0);
-  w.fpl = arg(cycle99_field("fpl"), "Z", 0);
-  w.dm2 = arg(cycle99_field("dm2"), "X", 0);
-  w.app = arg(cycle99_field("app"), kDepth, 0);
-  w.rop = arg(cycle99_field("rop"), kDepth, 0);
-  w.tdep = arg(cycle99_field("tdep"), kDepth, 0);
-  w.fal = arg(cycle99_field("fal"), kDepth, 0);
-  w.iang = arg(cycle99_field("iang"), kAngle, 0);
-  w.nsp = arg(cycle99_field("nsp"), kAngle, 0);
-  w.nrc = whole(arg(cycle99_field("nrc"), "", 1), "NRC", 1, kMaxCyclePasses);
-  w.nid = whole(arg(cycle99_field("nid"), "", 0), "NID", 0, kMaxCyclePasses);
-  w.pit = arg(cycle99_field("pit"), kLead, 0);
-  w.vari = whole(arg(cycle99_field("vari"), "", kVariExternalConstantInfeed), "VARI", 0, 999999);
-  w.numth = whole(arg(cycle99_field("numth"), "", 0), "NUMTH", 0, 100);
-  w.vrt = arg(cycle99_field("vrt"), kDepth, 0);
-  w.pita = whole(arg(cycle99_field("pita"), "", 1), "PITA", 1, 4);
-  w.psys = whole(arg(cycle99_field("psys"), "", 0), "PSYS", 0, 99);
-  if (!ok) return true;
+  w.spl = c->arg(cycle99_field("spl"), "Z", 0);
+  w.dm1 = c->arg(cycle99_field("dm1"), "X", 0);
+  w.fpl = c->arg(cycle99_field("fpl"), "Z", 0);
+  w.dm2 = c->arg(cycle99_field("dm2"), "X", 0);
+  w.app = c->arg(cycle99_field("app"), kDepth, 0);
+  w.rop = c->arg(cycle99_field("rop"), kDepth, 0);
+  w.tdep = c->arg(cycle99_field("tdep"), kDepth, 0);
+  w.fal = c->arg(cycle99_field("fal"), kDepth, 0);
+  w.iang = c->arg(cycle99_field("iang"), kAngle, 0);
+  w.nsp = c->arg(cycle99_field("nsp"), kAngle, 0);
+  w.nrc = c->whole(c->arg(cycle99_field("nrc"), "", 1), "NRC", 1, kMaxCyclePasses);
+  w.nid = c->whole(c->arg(cycle99_field("nid"), "", 0), "NID", 0, kMaxCyclePasses);
+  w.pit = c->arg(cycle99_field("pit"), kLead, 0);
+  w.vari =
+      c->whole(c->arg(cycle99_field("vari"), "", kVariExternalConstantInfeed), "VARI", 0, 999999);
+  w.numth = c->whole(c->arg(cycle99_field("numth"), "", 0), "NUMTH", 0, 100);
+  w.vrt = c->arg(cycle99_field("vrt"), kDepth, 0);
+  w.pita = c->whole(c->arg(cycle99_field("pita"), "", 1), "PITA", 1, 4);
+  w.psys = c->whole(c->arg(cycle99_field("psys"), "", 0), "PSYS", 0, 99);
+  if (!c->ok()) return true;
   if (!s.diameter) {
-    s.error(call->col, "CYCLE99 in radius programming (DIAMOF) is not expanded");
+    s.error(c->col(), "CYCLE99 in radius programming (DIAMOF) is not expanded");
     return true;
   }
   const Cycle99Expansion e = expand_cycle99(w);
   if (!e.alarm.empty()) {
-    s.error(call->col, "CYCLE99 alarm: " + e.alarm);
+    s.error(c->col(), "CYCLE99 alarm: " + e.alarm);
     return true;
   }
   const Vec2 start = s.pos;
   const double lead = cycle99_lead(w, s.out.units == LengthUnit::kInch);
   s.cycle_cuts(e.cuts, start, start, "CYCLE99", lead, std::nullopt, false, w.numth > 1);
+  return true;
+}
+
+bool cycle98_call(State& s, const NcBlock& b) {
+  std::optional<CallArgs> c = CallArgs::find(s, b, tmpl::kCycle98);
+  if (!c) return false;
+  Cycle98Words w;
+  constexpr const char* kPo[] = {cycle98_field("po1"), cycle98_field("po2"), cycle98_field("po3"),
+                                 cycle98_field("po4")};
+  constexpr const char* kDm[] = {cycle98_field("dm1"), cycle98_field("dm2"), cycle98_field("dm3"),
+                                 cycle98_field("dm4")};
+  constexpr const char* kPp[] = {cycle98_field("pp1"), cycle98_field("pp2"), cycle98_field("pp3")};
+  for (int j = 0; j < 4; ++j) {
+    w.po[j] = c->arg(kPo[j], "Z", 0);
+    w.dm[j] = c->arg(kDm[j], "X", 0);
+  }
+  for (int j = 0; j < 3; ++j) w.pp[j] = c->arg(kPp[j], kLead, 0);
+  w.app = c->arg(cycle98_field("app"), kDepth, 0);
+  w.rop = c->arg(cycle98_field("rop"), kDepth, 0);
+  w.tdep = c->arg(cycle98_field("tdep"), kDepth, 0);
+  w.fal = c->arg(cycle98_field("fal"), kDepth, 0);
+  w.iang = c->arg(cycle98_field("iang"), kAngle, 0);
+  w.nsp = c->arg(cycle98_field("nsp"), kAngle, 0);
+  w.nrc = c->whole(c->arg(cycle98_field("nrc"), "", 1), "NRC", 1, kMaxCyclePasses);
+  w.nid = c->whole(c->arg(cycle98_field("nid"), "", 0), "NID", 0, kMaxCyclePasses);
+  w.vari = c->whole(c->arg(cycle98_field("vari"), "", 1), "VARI", 0, 99);
+  w.numth = c->whole(c->arg(cycle98_field("numth"), "", 0), "NUMTH", 0, 100);
+  w.vrt = c->arg(cycle98_field("vrt"), kDepth, 0);
+  if (!c->ok()) return true;
+  if (!s.diameter) {
+    s.error(c->col(), "CYCLE98 in radius programming (DIAMOF) is not expanded");
+    return true;
+  }
+  const Cycle98Expansion e = expand_cycle98(w);
+  if (!e.alarm.empty()) {
+    s.error(c->col(), "CYCLE98 is not expanded: " + e.alarm);
+    return true;
+  }
+  const Vec2 start = s.pos;
+  s.cycle_cuts(e.cuts, start, start, "CYCLE98", w.pp[0], std::nullopt, false, w.numth > 1);
   return true;
 }
 

@@ -112,5 +112,6 @@ bool g92_cycle(State& s, const NcBlock& b);
 bool linuxcnc_g76(State& s, const NcBlock& b);
 bool heidenhain_g31(State& s, const NcBlock& b);  // G31, its contour, G80
 bool cycle99_call(State& s, const NcBlock& b);
+bool cycle98_call(State& s, const NcBlock& b);
 
 }  // namespace clpost::sim

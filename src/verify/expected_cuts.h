@@ -15,7 +15,9 @@ struct ExpectedCut {
   double shift = 0;
   double start_angle = 0;
   Vec2 from, to, end;
-  std::vector<Vec2> chain;  // coupled / single-pass threads: every synchronized move's end
+  // Coupled / single-pass / chained threads: every synchronized move's end (a chain's pass: its
+  // segments, then a threaded pull-out).
+  std::vector<Vec2> chain;
   PassKind kind = PassKind::kRough;
 };
 

@@ -62,7 +62,40 @@ struct Reader {
     }
     return {number(v, "x"), number(v, "z")};
   }
+  // A list of points (a chain's `points`, a pass's `path`).
+  std::vector<Vec2> points(const YAML::Node& n, const char* key) {
+    std::vector<Vec2> out;
+    YAML::Node v = need(n, key);
+    if (!v) return out;
+    if (!v.IsSequence()) {
+      error(v.Mark(), fmt::format("plan JSON: '{}' is not a list of points", key));
+      return out;
+    }
+    for (const YAML::Node& q : v) {
+      if (!q.IsMap()) {
+        error(q.Mark(),
+              fmt::format("plan JSON: a point of '{}' is not {{\"x\": ..., \"z\": ...}}", key));
+        return out;
+      }
+      out.push_back({number(q, "x"), number(q, "z")});
+    }
+    return out;
+  }
 };
+
+// What a chain's JSON leaves to be worked out: the lead axis from its kind, and whether its
+// pull-out is cut linear (at less than 30 or more than 60 degrees to the last segment, as the
+// planner decides).
+void chain_details(ThreadPlan& p) {
+  p.lead_along_z = p.kind != ThreadKind::kFace;
+  if (!p.pullout || p.points.size() < 2) return;
+  const Vec2 a = p.points[p.points.size() - 2], b = p.points.back();
+  const double tx = b.x - a.x, tz = b.z - a.z;
+  const double along = (p.pullout->x * tx + p.pullout->z * tz) / std::hypot(tx, tz);
+  const double out = std::fabs(p.pullout->x * tz - p.pullout->z * tx) / std::hypot(tx, tz);
+  const double angle = std::atan2(out, along) * 180 / 3.14159265358979323846;
+  p.pullout_linear = angle < 30 - 1e-9 || angle > 60 + 1e-9;
+}
 
 }  // namespace
 
@@ -97,7 +130,8 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
     p.loc.line = static_cast<uint32_t>(std::max(0.0, r.number(t, "line")));
     p.loc.col = 1;
     const std::string form = r.word(t, "form");
-    if (r.ok && form != form_name(ThreadForm::kMulti)) {
+    const bool chain = form == form_name(ThreadForm::kChain);
+    if (r.ok && form != form_name(ThreadForm::kMulti) && !chain) {
       r.error(t.Mark(), fmt::format("thread at line {}: a {} thread's path is not in the plan "
                                     "JSON; verify against the CL file (--cl)",
                                     p.loc.line, form));
@@ -118,7 +152,12 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
     p.p1 = r.point(t, "p1");
     p.p2 = r.point(t, "p2");
     if (YAML::Node po = t["pullout"]; po && !po.IsNull()) p.pullout = r.point(t, "pullout");
+    if (chain) {
+      p.form = ThreadForm::kChain;
+      p.points = r.points(t, "points");
+    }
     p.lead_along_z = std::fabs(p.p2.z - p.p1.z) >= std::fabs(p.p2.x - p.p1.x);
+    if (chain) chain_details(p);
     p.starts_by_angle = p.pitch.starts > 1 && m.start_angle_word;
     YAML::Node passes = r.need(t, "passes");
     if (!passes) continue;
@@ -132,6 +171,7 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
       s.shift = r.number(q, "shift");
       s.from = r.point(q, "from");
       s.to = r.point(q, "to");
+      if (chain) s.path = r.points(q, "path");
       s.pullout_end = p.pullout ? Vec2{s.to.x + p.pullout->x, s.to.z + p.pullout->z} : s.to;
       s.start_angle = p.starts_by_angle ? s.start * 360.0 / p.pitch.starts : 0;
       p.passes.push_back(s);

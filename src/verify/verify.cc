@@ -180,6 +180,13 @@ class Comparer {
         return differ([&] {
           return fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size());
         });
+      if (plan.form == ThreadForm::kChain && plan.pullout && plan.pullout_linear &&
+          (!c.linear_pullout || length(*c.linear_pullout - e.end) > tol))
+        return differ([&] {
+          return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})",
+                             c.linear_pullout ? point(*c.linear_pullout) : "(none)", point(e.end),
+                             tol_);
+        });
       return r;
     }
     const SectionPass at = measure(e, c);
@@ -230,7 +237,8 @@ class Comparer {
 };
 
 std::string pass_name(const ThreadPlan& plan, const ExpectedCut& e) {
-  if (plan.form != ThreadForm::kMulti) return "its synchronized path";
+  if (plan.form != ThreadForm::kMulti && plan.form != ThreadForm::kChain)
+    return "its synchronized path";
   return plan.pitch.starts > 1 ? fmt::format("pass {} (start {})", e.pass, e.start + 1)
                                : fmt::format("pass {}", e.pass);
 }
