@@ -260,10 +260,20 @@ struct ChainError {
   const char* expected;
 };
 
-TEST(ChainThread, Errors) {
+void expect_chain_errors(const std::vector<ChainError>& cases) {
+  for (const ChainError& c : cases) {
+    PlannerSettings settings;
+    settings.variable_lead = true;  // the chain's own refusal of INCR / DECR
+    const Chain r = chain(c.on, c.gotos, c.p0, pitch_of(2), settings);
+    EXPECT_FALSE(r.ok) << c.on;
+    EXPECT_EQ(r.messages, c.expected) << c.on;
+  }
+}
+
+TEST(ChainThread, GotoAndSegmentErrors) {
   std::vector<Vec2> many;
   for (int i = 0; i < 22; ++i) many.push_back({15, -2.0 * i});
-  const ChainError cases[] = {
+  expect_chain_errors({
       {"THREAD/ON,DEPTH,1,CHAIN",
        {{15, 0}},
        {30, 5},
@@ -305,6 +315,11 @@ TEST(ChainThread, Errors) {
        "t.cl:5:1: error: the chain segment from (X 15, Z -10) to (X 18, Z -12) is 56.309932° off "
        "the Z axis; a chain segment may be at most 45° off it\n"
        "t.cl:2:1: note: the thread sequence starts here\n"},
+  });
+}
+
+TEST(ChainThread, ReturnLeadShiftAndInfeedErrors) {
+  expect_chain_errors({
       {"THREAD/ON,DEPTH,1,CHAIN",
        {{15, 0}, {15, -10}, {25, -20}},
        {20, 5},
@@ -332,14 +347,7 @@ TEST(ChainThread, Errors) {
        {30, 5},
        "t.cl:2:19: error: CUTANG 95 is within 10° of the chain's lead axis Z: the infeed must "
        "cross it\n"},
-  };
-  for (const ChainError& c : cases) {
-    PlannerSettings settings;
-    settings.variable_lead = true;  // the chain's own refusal of INCR / DECR
-    const Chain r = chain(c.on, c.gotos, c.p0, pitch_of(2), settings);
-    EXPECT_FALSE(r.ok) << c.on;
-    EXPECT_EQ(r.messages, c.expected) << c.on;
-  }
+  });
 }
 
 }  // namespace
