@@ -56,6 +56,24 @@ void couple_stmt(PostState& s, const Statement& st);
 void cycle_stmt(PostState& s, const Statement& st);
 void undercut_stmt(PostState& s, const Statement& st);  // CYCLE/UNDCUT (undercut.cc)
 
+// CAM words (cam_words.cc) and APT geometric motion (geometric_motion.cc).
+void syn_stmt(PostState& s, const Statement& st);
+void dntcut_stmt(PostState& s, const Statement& st);
+void cut_stmt(PostState& s, const Statement& st);
+void toolno_stmt(PostState& s, const Statement& st);
+void tprint_stmt(PostState& s, const Statement& st);
+void cutter_stmt(PostState& s, const Statement& st);
+void switch_stmt(PostState& s, const Statement& st);
+void indirv_stmt(PostState& s, const Statement& st);
+void psis_stmt(PostState& s, const Statement& st);
+void go_stmt(PostState& s, const Statement& st);  // GOFWD, GOLFT, GORGT, GOBACK
+// The replacement SYN/ gave major word `major` (empty: ignored), or nullptr.
+const std::string* synonym_of(const PostState& s, std::string_view major);
+// GOFWD, GOLFT, GORGT, GOBACK: the words whose modifiers (TLON, TLLFT, TLRGT) go_stmt reads.
+inline bool is_motion_word(std::string_view w) {
+  return w == "GOFWD" || w == "GOLFT" || w == "GORGT" || w == "GOBACK";
+}
+
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);
 // A statement the reader could not read (Statement::problem) or with words before its major word
