@@ -191,5 +191,66 @@ TEST(CamWords, ThreadTurnWithANumberIsThePitch) {
   }
 }
 
+// ---- the CATIA + ICAM thread (issue 15) against the same thread in plain numbers ----
+
+struct IcamThread {
+  const char* units;
+  const char* pitch_expr;   // ICAM: PITCH/(1/p)
+  const char* pitch_plain;  // the same value written out
+  int starts;
+  const char* clearance;  // GODLTA: + external, - internal
+  const char* cutang;     // 180 external, 0 internal
+  const char* radius;     // thread radius
+  const char* start;      // radius + clearance
+  const char* depth;
+};
+
+// As ICAM's CATIA table writes it (reference/cam/ICAM_MM_pptable_threading_excerpt.txt).
+std::string icam_form(const IcamThread& t) {
+  std::string r = std::string("UNITS/") + t.units +
+                  "\nPPFUN/15,1318046,OFF\nPPFUN/15,1319003,OFF\nSYN/'TLAXIS','$$*TLAXIS'\n"
+                  "PPRINT TOOL: Thread Tool.1\nTURRET/7,OSETNO,7,SETOOL,0.0,0.0,0.0\n"
+                  "TLAXIS/0,1,0\nSPINDL/500,RPM,CLW\n";
+  r += std::string("PITCH/") + t.pitch_expr + ",MULTRD," + std::to_string(t.starts) + "\n";
+  r += std::string("DNTCUT\nGOTO/") + t.radius + ",0,2\nGODLTA/" + t.clearance + ",0,0\nCUT\n";
+  r += std::string("THREAD/ON,DEPTH,") + t.depth + ",CUTS,5,CUTANG," + t.cutang +
+       ",FINCUT,1,$\n\tATANGL,30,1.5,TLANGL,60,OPTION,1\n";
+  r += std::string("GOTO/") + t.radius + ",0,2\nGOTO/" + t.radius + ",0,-30\nTHREAD/OFF\nFINI\n";
+  return r;
+}
+
+// The same thread with plain numbers; comment lines keep THREAD/ON on line 14 as above (the NC
+// names its line).
+std::string plain_form(const IcamThread& t) {
+  std::string r = std::string("UNITS/") + t.units +
+                  "\nPPRINT TOOL: Thread Tool.1\nTURRET/7,OSETNO,7\nSPINDL/500,RPM,CLW\n";
+  r += std::string("PITCH/") + t.pitch_plain + ",MULTRD," + std::to_string(t.starts) + "\n";
+  r += std::string("FROM/") + t.start + ",0,2\n$$\n$$\n$$\n$$\n$$\n$$\n$$\n";
+  r += std::string("THREAD/ON,DEPTH,") + t.depth + ",CUTS,5,CUTANG," + t.cutang +
+       ",FINCUT,1,ATANGL,30,1.5,TLANGL,60,OPTION,1\n";
+  r += std::string("GOTO/") + t.radius + ",0,2\nGOTO/" + t.radius + ",0,-30\nTHREAD/OFF\nFINI\n";
+  return r;
+}
+
+TEST(IcamThread, PostsExactlyAsThePlainThread) {
+  const IcamThread cases[] = {
+      {"MM", "(1/2.5)", "0.4", 1, "1", "180", "10", "11", "1.534"},  // the issue's thread
+      {"MM", "(1/2)", "0.5", 2, "1", "180", "10", "11", "1.2"},      // MULTRD 2
+      {"MM", "(1/1.5)", "0.6666666666666666", 1, "-1", "0", "8", "7", "0.92"},  // internal
+      {"INCHES", "(1/0.1)", "10", 1, "0.04", "180", "0.5", "0.54", "0.06"},     // inch
+  };
+  for (const char* name : {"generic-lathe", "linuxcnc-lathe"}) {
+    const Machine m = lathe({}, name);
+    for (const IcamThread& t : cases) {
+      const Posted icam = post(icam_form(t), m);
+      const Posted plain = post(plain_form(t), m);
+      EXPECT_EQ(icam.errors, 0u) << name << " " << t.pitch_expr << "\n" << icam.diags;
+      EXPECT_EQ(plain.errors, 0u) << name << " " << t.pitch_expr << "\n" << plain.diags;
+      EXPECT_NE(icam.nc.find("(thread line 14: "), std::string::npos) << icam.nc;
+      EXPECT_EQ(icam.nc, plain.nc) << name << " " << t.pitch_expr;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace clpost
