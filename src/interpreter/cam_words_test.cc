@@ -176,6 +176,49 @@ TEST(SurfaceSpeed, WordConvertsFeetAndMetres) {
             "  ^\n");
 }
 
+// ---- Fusion's MOVARC ----
+
+TEST(CamWords, MovarcIsTheCircleOfItsGoto) {
+  Posted p = post(
+      "FEDRAT/0.1,MMPR\nGOTO/20.4,0,-30\nMOVARC/25,0,-30,0,1,0,4.6,ANGLE,90\nGOTO/25,0,-25.4\n"
+      "MOVARC/CENTER,25,0,-20,AXIS,0,-1,0,RADIUS,5.4\nGOTO/30.4,0,-20\nMOVARC/1,2\nFINI\n",
+      lathe());
+  EXPECT_EQ(p.diags,
+            "t.cl:7:1: error: MOVARC/ takes cx,cy,cz,i,j,k,r[,ANGLE,a] or "
+            "CENTER,cx,cy,cz,AXIS,i,j,k,RADIUS,r\n"
+            "  MOVARC/1,2\n"
+            "  ^\n");
+  Posted q = post(
+      "FEDRAT/0.1,MMPR\nGOTO/20.4,0,-30\nMOVARC/25,0,-30,0,1,0,4.6,ANGLE,90\nGOTO/25,0,-25.4\n"
+      "MOVARC/CENTER,25,0,-20,AXIS,0,-1,0,RADIUS,5.4\nGOTO/30.4,0,-20\nFINI\n",
+      lathe());
+  EXPECT_EQ(q.nc, std::string(kHeader) +
+                      "G1 X40.8 Z-30. G95 F0.1\nG3 X50. Z-25.4 I4.6 K0.\nG2 X60.8 Z-20. I0. "
+                      "K5.4\nM30\n%\n");
+  EXPECT_EQ(q.diags, "");
+}
+
+// ---- CATIA's CYCLE/LATHTHRD ----
+
+TEST(CamWords, LaththrdIsRefusedNamingWhatIsMissing) {
+  Posted p = post(
+      "SPINDL/500,RPM\nCYCLE/LATHTHRD,1.5,MMPR,1.5,NOM_DIAM,20,DEPTH,0.92,NB_PATHES,5,"
+      "COORD,9.08,-30,START_THRD_RAD,10,LENGTH,32\nGOTO/10,0,2\nCYCLE/OFF\n"
+      "CYCLE/LATHTHRD,1.5,MMPR,1.5,DEPTH,0.92\nCYCLE/OFF\nFINI\n",
+      lathe());
+  EXPECT_EQ(p.errors, 2u);
+  EXPECT_EQ(p.diags,
+            "t.cl:2:1: error: CYCLE/LATHTHRD does not say where the thread starts along the axis "
+            "(COORD is its end; LENGTH and LEAD_IN_DIST give no side and no origin): the thread "
+            "cannot be planned; write it as THREAD/ON … THREAD/OFF (CATIA's ICAM tables do)\n"
+            "  CYCLE/LATHTHRD,1.5,MMPR,1.5,NOM_DIAM,20,DEPTH,0.92,NB_PATHES,5,COORD,9.08,-30,"
+            "START_THRD_RAD,10,LENGTH,32\n"
+            "  ^\n"
+            "t.cl:5:1: error: CYCLE/LATHTHRD without NB_PATHES: the thread cannot be planned\n"
+            "  CYCLE/LATHTHRD,1.5,MMPR,1.5,DEPTH,0.92\n"
+            "  ^\n");
+}
+
 // ---- THREAD/TURN,pitch ----
 
 TEST(CamWords, ThreadTurnWithANumberIsThePitch) {

@@ -147,6 +147,33 @@ void circle_stmt(PostState& s, const Statement& st) {
   s.circle = c;
 }
 
+// Fusion's APT post: MOVARC/cx,cy,cz,i,j,k,r[,ANGLE,a] (or CENTER,cx,cy,cz,AXIS,i,j,k,RADIUS,r)
+// then the GOTO that ends the arc: CIRCLE/ with the rotation axis (Fusion flips the normal of a
+// clockwise arc). The sweep ANGLE is implied by the GOTO and not read.
+void movarc_stmt(PostState& s, const Statement& st) {
+  Statement circle = st;
+  circle.args.clear();
+  const auto take = [&](size_t from, size_t n) {
+    for (size_t i = from; i < from + n && i < st.args.size(); ++i)
+      circle.args.push_back(st.args[i]);
+  };
+  if (!st.args.empty() && st.args[0].is("CENTER")) {
+    for (size_t i = 0; i < st.args.size(); ++i) {
+      if (st.args[i].is("CENTER")) take(i + 1, 3);
+      if (st.args[i].is("AXIS")) take(i + 1, 3);
+      if (st.args[i].is("RADIUS")) take(i + 1, 1);
+    }
+  } else {
+    take(0, 7);
+  }
+  if (circle.args.size() < 7 && !st.args.empty()) {
+    error(s, st, st.loc,
+          "MOVARC/ takes cx,cy,cz,i,j,k,r[,ANGLE,a] or CENTER,cx,cy,cz,AXIS,i,j,k,RADIUS,r");
+    return;
+  }
+  circle_stmt(s, circle);
+}
+
 void rapid_stmt(PostState& s, const Statement&) {
   s.rapid_next = true;
 }

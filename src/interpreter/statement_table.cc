@@ -14,6 +14,7 @@ constexpr StatementEntry kEntries[] = {
     {"FROM", from_stmt},
     {"GODLTA", godlta_stmt},
     {"CIRCLE", circle_stmt},
+    {"MOVARC", movarc_stmt},
     {"RAPID", rapid_stmt},
     // Feed, spindle, dwell (spindle_feed.cc)
     {"FEDRAT", fedrat_stmt},
@@ -75,6 +76,8 @@ constexpr StatementEntry kEntries[] = {
     {"PLABEL", skipped_stmt},
     {"CALSUB", skipped_stmt},
     {"ORIGIN", skipped_stmt},
+    {"TLAXIS", skipped_stmt},
+    {"REWIND", skipped_stmt},
     // Text (text_words.cc)
     {"PARTNO", partno_stmt},
     {"PPRINT", pprint_stmt},

@@ -30,6 +30,7 @@ void from_stmt(PostState& s, const Statement& st);
 void godlta_stmt(PostState& s, const Statement& st);
 void circle_stmt(PostState& s, const Statement& st);
 void rapid_stmt(PostState& s, const Statement& st);
+void movarc_stmt(PostState& s, const Statement& st);
 void fedrat_stmt(PostState& s, const Statement& st);
 void spindl_stmt(PostState& s, const Statement& st);
 void delay_stmt(PostState& s, const Statement& st);
@@ -54,7 +55,8 @@ void thread_stmt(PostState& s, const Statement& st);
 void op_stmt(PostState& s, const Statement& st);
 void couple_stmt(PostState& s, const Statement& st);
 void cycle_stmt(PostState& s, const Statement& st);
-void undercut_stmt(PostState& s, const Statement& st);  // CYCLE/UNDCUT (undercut.cc)
+void undercut_stmt(PostState& s, const Statement& st);       // CYCLE/UNDCUT (undercut.cc)
+void lathe_thread_cycle(PostState& s, const Statement& st);  // CYCLE/LATHTHRD (its own file)
 
 // CAM words (cam_words.cc) and APT geometric motion (geometric_motion.cc).
 void syn_stmt(PostState& s, const Statement& st);
