@@ -39,6 +39,7 @@ bool decide(PostState& s, const Statement& st, Point3 p) {
   }
   s.radial = on_a ? a : b;
   s.radial_found = st.loc.line;
+  s.off_plane_axis = static_cast<int>(third_axis(s));
   // The usual frame (the first candidate, X when Z is the axis) goes without a note: the
   // program is the one a fixed `radial_axis: x` gives.
   if (s.radial != a)
@@ -59,6 +60,7 @@ void frame_normal(PostState& s, const Statement& st, Point3 n) {
     if (std::abs(std::abs(axis_value(n, normal)) / len - 1) > 1e-6) continue;
     s.radial = normal == a ? b : a;
     s.radial_found = st.loc.line;
+    s.off_plane_axis = static_cast<int>(third_axis(s));
     if (s.radial != a)
       note_once(s, st, "radial-axis",
                 fmt::format("the radius is CL {}: the arc turns about CL {} (cl.radial_axis: auto, "
@@ -68,7 +70,7 @@ void frame_normal(PostState& s, const Statement& st, Point3 n) {
   }
 }
 
-bool frame_point(PostState& s, const Statement& st, Point3 p) {
+bool frame_point_checked(PostState& s, const Statement& st, Point3 p) {
   if (s.radial_auto && s.radial_found == 0) return decide(s, st, p);
   const ClAxis third = third_axis(s);
   const double off = axis_value(p, third);

@@ -96,6 +96,7 @@ struct PostState {
   ClAxis radial = ClAxis::kX;
   bool radial_auto = false;   // cl.radial_axis: auto
   uint32_t radial_found = 0;  // the CL line that decided it (auto; 0: not yet)
+  int off_plane_axis = -1;    // the third axis once the frame is settled (-1: not yet)
   ToolInfo tool;              // the tool loaded last
   ToolInfo next_tool;  // tool data written before the tool change it describes (TOOLNO, TPRINT)
   double cutter_diameter = 0;      // CUTTER/
@@ -148,7 +149,15 @@ double axis_value(Point3 p, ClAxis a);
 // auto the first point off the spindle axis decides the radial axis (a note), and a point off
 // the lathe plane after that is an error; with a fixed axis such a point is warned about once
 // and its third coordinate ignored. False: an error was reported.
-bool frame_point(PostState& s, const Statement& st, Point3 p);
+// The common case inline (every GOTO comes here): the frame is settled and the point on the plane.
+bool frame_point_checked(PostState& s, const Statement& st, Point3 p);
+inline bool frame_point(PostState& s, const Statement& st, Point3 p) {
+  if (s.off_plane_axis >= 0) {
+    const double v[3] = {p.x, p.y, p.z};
+    if (!(std::abs(v[s.off_plane_axis]) > 1e-6)) return true;
+  }
+  return frame_point_checked(s, st, p);
+}
 // An arc's axis `n` (cl.radial_axis: auto, not yet found): an axis normal to one of the two
 // candidate planes decides the radial axis (a note); anything else leaves it open.
 void frame_normal(PostState& s, const Statement& st, Point3 n);
