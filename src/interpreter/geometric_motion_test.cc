@@ -72,6 +72,25 @@ TEST(GeometricMotion, LinesTantoPastToAndTurns) {
   EXPECT_EQ(p.diags, "");
 }
 
+// Tool offsets and the n-th intersection, CUTTER/1 (radius 0.5):
+// - TLLFT on the circle about (15, -20) radius 5, moving -Z at its bottom: seen from +Y the left
+//   is away from the centre, so the tool runs at radius 5.5, clockwise to X = 15: (15, -25.5);
+// - along X = 10 the second intersection with the circle about (12, -20) radius 5:
+//   Z = -20 - sqrt(25 - 4) = -24.583;
+// - TLRGT on X = 10 moving -Z: the right is +X, the tool at X = 10.5, to Z = -5.
+TEST(GeometricMotion, ToolOffsetsAndIntof) {
+  const Posted p = post(
+      "FEDRAT/0.1,MMPR\nGOTO/9.5,0,-20\nCUTTER/1\nINDIRV/0,0,-1\n"
+      "TLLFT,GOFWD/(CIRCLE/15,0,-20,5),ON,(LINE/15,0,-20,15,0,-30)\n"
+      "GOTO/10,0,0\nINDIRV/0,0,-1\nGOFWD/(LINE/10,0,0,10,0,-1),ON,2,INTOF,(CIRCLE/12,0,-20,5)\n"
+      "GOTO/10.5,0,0\nINDIRV/0,0,-1\nTLRGT,GOFWD/(LINE/10,0,0,10,0,-1),ON,(LINE/0,0,-5,1,0,-5)\n"
+      "FINI\n");
+  EXPECT_EQ(p.nc, std::string(kHeader) +
+                      "G1 X19. Z-20. G95 F0.1\nG2 X30. Z-25.5 I5.5 K0.\nG1 X20. Z0.\nZ-24.583\n"
+                      "X21. Z0.\nZ-5.\nM30\n%\n");
+  EXPECT_EQ(p.diags, "");
+}
+
 TEST(GeometricMotion, ErrorsAtTheirColumns) {
   const Posted p = post(
       "FEDRAT/0.1,MMPR\n"
