@@ -43,6 +43,21 @@ TEST(GeometricMotion, CatiaCircleIsTheArcCircleAndGotoGive) {
   EXPECT_EQ(go.diags, "");
 }
 
+// The same with the radius in CL Y (CATIA lathe programs of other setups): the same program, and
+// the note that says which axis is the radius.
+TEST(GeometricMotion, RadiusInYGivesTheSameArc) {
+  const Posted y = post(
+      "FEDRAT/0.1,MMPR\nGOTO/0,20.4,-30\nINDIRV/0,0,1\n"
+      "TLON,GOFWD/(CIRCLE/0,25,-30,4.6),ON,(LINE/0,25,-30,0,25,-25.4)\nFINI\n");
+  EXPECT_EQ(y.nc, std::string(kHeader) +
+                      "G1 X40.8 Z-30. G95 F0.1\nG3 X50. Z-25.4 I4.6 K0.\n"
+                      "M30\n%\n");
+  EXPECT_EQ(y.diags,
+            "t.cl:2:1: note: the radius is CL Y and CL X is 0 (cl.radial_axis: auto, found here)\n"
+            "  GOTO/0,20.4,-30\n"
+            "  ^\n");
+}
+
 // CATIA's custom table (realcam/catia_toussaint, "FIN RAYON - G2"): a cylinder about Y and a
 // plane through two points perpendicular to the XZ plane. From (2, 0) toward +X about (2, 2)
 // radius 2 to the line Z = 2: the quarter to (4, 2), clockwise in (Z, X): G2.
