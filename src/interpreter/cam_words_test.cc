@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "interpreter/post.h"
+#include "interpreter/statement_table.h"
 #include "machine/machine_loader.h"
+#include "reader/cl_reader.h"
+#include "support/sink.h"
+#include "writer/nc_program.h"
 
 namespace clpost {
 namespace {
@@ -133,6 +137,43 @@ TEST(CamWords, ToolDataIsReadNotWritten) {
       lathe());
   EXPECT_EQ(p.nc, std::string(kHeader) + "T0101\nM30\n%\n");
   EXPECT_EQ(p.diags, "");
+}
+
+// The tool data CATIA writes before LOADTL describe the tool it loads (ToolInfo, which the tool
+// list reads); SWITCH after the change sets the quadrant of the tool in use.
+TEST(CamWords, ToolDataBeforeTheChangeDescribeTheToolItLoads) {
+  const Machine m = lathe();
+  StringSink out;
+  NcProgram prog(m, out);
+  Diagnostics diags("t.cl");
+  PostState s(m, prog, diags, {});
+  const std::string cl =
+      "PPRINT TOOL: Thread Tool.1\n"
+      "TOOLNO/1,TURN,1,0,3,0.4,0,0,0.1,MMPR,500,SFM,CCLW,ON,0,NOTE\n"
+      "TPRINT/SDJCL 1210 D07\nLOADTL/1,1,1\nSWITCH/9\nTURRET/7,OSETNO,8,SETOOL,0,0,0\n";
+  ClReader reader(cl, diags);
+  Statement st;
+  std::vector<ToolInfo> after;
+  while (reader.next(st)) {
+    find_statement(st.major)->handler(s, st);
+    after.push_back(s.tool);
+  }
+  ASSERT_EQ(after.size(), 6u);
+  const ToolInfo& t1 = after[3];  // after LOADTL
+  EXPECT_EQ(t1.number, 1);
+  EXPECT_EQ(t1.offset, 1);
+  EXPECT_EQ(t1.text, "SDJCL 1210 D07");  // TPRINT after PPRINT TOOL:
+  EXPECT_EQ(t1.nose_radius, 0.4);
+  EXPECT_EQ(t1.tip_quadrant, 3);
+  EXPECT_EQ(t1.feed, "0.1 MMPR");
+  EXPECT_EQ(t1.speed, "500 SFM");
+  EXPECT_EQ(after[4].tip_quadrant, 9);  // SWITCH/9
+  const ToolInfo& t7 = after[5];        // TURRET: nothing pending, a bare tool
+  EXPECT_EQ(t7.number, 7);
+  EXPECT_EQ(t7.offset, 8);
+  EXPECT_EQ(t7.text, "");
+  EXPECT_FALSE(t7.nose_radius.has_value());
+  EXPECT_EQ(diags.error_count(), 0u);
 }
 
 TEST(CamWords, BadToolDataIsAnErrorAtItsColumn) {
