@@ -99,6 +99,11 @@ TEST(CamWords, SynIgnoresOrRenamesWords) {
             "  ^\n");
 }
 
+TEST(CamWords, SynReachesGotoToo) {
+  Posted p = post("SYN/'GOTO','$$'\nRAPID\nGOTO/10,0,2\nFINI\n", lathe());
+  EXPECT_EQ(p.nc, std::string(kHeader) + "M30\n%\n");
+}
+
 TEST(CamWords, SynNeedsPairsOfWords) {
   Posted p = post("SYN/'A'\nSYN/'A',5\nFINI\n", lathe());
   EXPECT_EQ(p.diags,

@@ -35,7 +35,7 @@ void Interpreter::statement(const Statement& st) {
   }
   // The common case first: a plain GOTO outside a thread sequence.
   if (st.major == "GOTO" && s.thread.kind == ThreadSequence::Kind::kNone && !st.has_problem() &&
-      st.modifiers.empty())
+      st.modifiers.empty() && s.synonyms.empty())
     return goto_stmt(s, st);
   if (!s.synonyms.empty()) [[unlikely]] {
     if (const std::string* to = synonym_of(s, st.major)) {

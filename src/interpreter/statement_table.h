@@ -3,8 +3,9 @@
 // GODLTA, CIRCLE, RAPID), spindle_feed.cc (FEDRAT, SPINDL, DELAY), tool.cc (LOADTL, LOAD/TOOL,
 // TURRET), program_words.cc (UNITS, COOLNT, CUTCOM, STOP, FINI, … and the words skipped),
 // text_words.cc (PARTNO, PPRINT, INSERT, TOOL PATH, unknown words), thread_statements.cc
-// (PITCH, THREAD, OP/THREAD, COUPLE), cycles.cc (CYCLE/). A new CL word is one entry in
-// statement_table.cc and one handler.
+// (PITCH, THREAD, OP/THREAD, COUPLE), cycles.cc (CYCLE/), cam_words.cc (SYN, DNTCUT/CUT, TOOLNO,
+// TPRINT, CUTTER, SWITCH), geometric_motion.cc (INDIRV, PSIS, GOFWD …; its geometry in
+// lathe_geometry.cc). A new CL word is one entry in statement_table.cc and one handler.
 #include <span>
 #include <string_view>
 
