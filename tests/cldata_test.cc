@@ -142,8 +142,9 @@ TEST(Cldata, RealApt360FilePostsWithLocatedDiagnostics) {
                            "expected LEFT, RIGHT or OFF\n  CUTCOM/LENGTH,1\n"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find(f + ": record 31 (byte 1072): warning: Y = 0.5181383283346455 but a "
-                           "lathe has no such axis"),
+  EXPECT_NE(r.err.find(f + ": record 31 (byte 1072): error: CL Y = 0.5181383283346455 but the "
+                           "radius is CL X (found at line 14): the program moves in both, off "
+                           "the lathe plane"),
             std::string::npos)
       << r.err;
   EXPECT_FALSE(file_exists(dir + "/out.nc"));

@@ -16,33 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct XZ {
-  double x, z;
-};
+using XZ = CanonXZ;
 
 bool have_rs274() {
   return run("command -v rs274").exit_code == 0;
-}
-
-// Motion end points from `rs274 -g` canonical output.
-std::vector<XZ> canon_motions(const std::string& canon) {
-  std::vector<XZ> out;
-  std::istringstream in(canon);
-  std::string line;
-  while (std::getline(in, line)) {
-    double a[6] = {};
-    size_t p;
-    if ((p = line.find("STRAIGHT_TRAVERSE(")) != std::string::npos ||
-        (p = line.find("STRAIGHT_FEED(")) != std::string::npos) {
-      const char* s = line.c_str() + line.find('(', p) + 1;
-      if (std::sscanf(s, "%lf, %lf, %lf", &a[0], &a[1], &a[2]) == 3) out.push_back({a[0], a[2]});
-    } else if ((p = line.find("ARC_FEED(")) != std::string::npos) {
-      // XZ plane: first axis Z, second axis X.
-      const char* s = line.c_str() + p + 9;
-      if (std::sscanf(s, "%lf, %lf", &a[0], &a[1]) == 2) out.push_back({a[1], a[0]});
-    }
-  }
-  return out;
 }
 
 // GOTO / GODLTA points of a CL file, read with the reader alone (not the interpreter).
@@ -89,7 +66,7 @@ TEST(Rs274, SamplesRunAndFollowTheClPoints) {
       ++checked;
       continue;
     }
-    std::vector<XZ> got = canon_motions(r.out);
+    std::vector<XZ> got = rs274_motion_ends(r.out);
     std::vector<XZ> want = cl_points(e.path().string());
     ASSERT_EQ(got.size(), want.size()) << e.path();
     for (size_t i = 0; i < want.size(); ++i) {
@@ -104,7 +81,7 @@ TEST(Rs274, SamplesRunAndFollowTheClPoints) {
 
 TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   // From rs274 -g on "G7 G18 G21 G90 / G0 X20 Z5 / G2 X34 Z-22 I2 K0": radii, Z first on arcs.
-  std::vector<XZ> m = canon_motions(
+  std::vector<XZ> m = rs274_motion_ends(
       "   12 N..... STRAIGHT_TRAVERSE(10.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
       "   33 N..... ARC_FEED(-22.0000, 17.0000, -20.0000, 17.0000, -1, 0.0000, 0.0000, 0.0000, "
       "0.0000)\n");

@@ -64,6 +64,26 @@ RunResult run_rs274(const std::string& dir, const std::string& ngc) {
              quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
 }
 
+std::vector<CanonXZ> rs274_motion_ends(const std::string& canon) {
+  std::vector<CanonXZ> out;
+  std::istringstream in(canon);
+  std::string line;
+  while (std::getline(in, line)) {
+    double a[3] = {};
+    size_t p;
+    if ((p = line.find("STRAIGHT_TRAVERSE(")) != std::string::npos ||
+        (p = line.find("STRAIGHT_FEED(")) != std::string::npos) {
+      const char* s = line.c_str() + line.find('(', p) + 1;
+      if (std::sscanf(s, "%lf, %lf, %lf", &a[0], &a[1], &a[2]) == 3) out.push_back({a[0], a[2]});
+    } else if ((p = line.find("ARC_FEED(")) != std::string::npos) {
+      // XZ plane: first axis Z, second axis X.
+      const char* s = line.c_str() + p + 9;
+      if (std::sscanf(s, "%lf, %lf", &a[0], &a[1]) == 2) out.push_back({a[1], a[0]});
+    }
+  }
+  return out;
+}
+
 std::vector<CanonSegment> rs274_synced_moves(const std::string& canon) {
   std::vector<CanonSegment> out;
   std::istringstream in(canon);

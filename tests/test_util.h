@@ -50,6 +50,12 @@ struct CanonXZ {
 struct CanonSegment {
   CanonXZ from, to;
 };
+// The end point of every motion (traverse, feed, arc) of `rs274 -g` output, in order.
+std::vector<CanonXZ> rs274_motion_ends(const std::string& canon);
+inline std::string realcam_dir() {
+  return std::string(CLPOST_SOURCE_DIR) + "/../shared/realcam";
+}
+
 // The spindle-synchronized feed moves of `rs274 -g` output (STRAIGHT_FEED between
 // START_SPEED_FEED_SYNC and STOP_SPEED_FEED_SYNCH), each from where the previous straight move
 // (traverse or feed) ended.

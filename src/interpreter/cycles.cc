@@ -12,6 +12,7 @@ void cycle_stmt(PostState& s, const Statement& st) {
     return;
   }
   if (!st.args.empty() && st.args[0].is("UNDCUT")) return undercut_stmt(s, st);
+  if (!st.args.empty() && st.args[0].is("LATHTHRD")) return lathe_thread_cycle(s, st);
   s.in_cycle = true;  // its hole positions are not posted as plain moves
   const std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
   error(s, st, st.loc,

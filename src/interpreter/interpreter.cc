@@ -6,6 +6,20 @@
 
 namespace clpost {
 
+namespace {
+
+// The handler of `st` (after SYN/ renamed it).
+void dispatch(PostState& s, const Statement& st) {
+  if (s.thread.kind != ThreadSequence::Kind::kNone && !sequence_accepts(s, st)) return;
+  const StatementEntry* e = find_statement(st.major);
+  if (st.has_problem() || (!st.modifiers.empty() && !is_motion_word(st.major))) [[unlikely]]
+    return odd_statement(s, st, e != nullptr);
+  if (e) return e->handler(s, st);
+  unknown_stmt(s, st);
+}
+
+}  // namespace
+
 Interpreter::Interpreter(const Machine& m, NcProgram& prog, Diagnostics& diags,
                          const PostOptions& opts)
     : state_(std::make_unique<PostState>(m, prog, diags, opts)) {}
@@ -21,14 +35,17 @@ void Interpreter::statement(const Statement& st) {
   }
   // The common case first: a plain GOTO outside a thread sequence.
   if (st.major == "GOTO" && s.thread.kind == ThreadSequence::Kind::kNone && !st.has_problem() &&
-      st.modifiers.empty())
+      st.modifiers.empty() && s.synonyms.empty())
     return goto_stmt(s, st);
-  if (s.thread.kind != ThreadSequence::Kind::kNone && !sequence_accepts(s, st)) return;
-  const StatementEntry* e = find_statement(st.major);
-  if (st.has_problem() || !st.modifiers.empty()) [[unlikely]]
-    return odd_statement(s, st, e != nullptr);
-  if (e) return e->handler(s, st);
-  unknown_stmt(s, st);
+  if (!s.synonyms.empty()) [[unlikely]] {
+    if (const std::string* to = synonym_of(s, st.major)) {
+      if (to->empty()) return;  // SYN/'W','$$…': ignored (noted at SYN/)
+      Statement renamed = st;
+      renamed.major = *to;
+      return dispatch(s, renamed);
+    }
+  }
+  dispatch(s, st);
 }
 
 void Interpreter::end_of_input(uint32_t last_line) {

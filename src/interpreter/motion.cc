@@ -16,9 +16,8 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
     error(s, st, st.loc, "an arc needs a start point: no GOTO or FROM before CIRCLE/");
     return false;
   }
-  const Machine& m = s.m;
-  const LathePoint from = lathe(m, *s.pos), target = lathe(m, p);
-  const LathePoint center = lathe(m, Point3{c.cx, c.cy, c.cz});
+  const LathePoint from = lathe(s, *s.pos), target = lathe(s, p);
+  const LathePoint center = lathe(s, Point3{c.cx, c.cy, c.cz});
   const double r0 = std::hypot(from.r - center.r, from.z - center.z);
   const double r1 = std::hypot(target.r - center.r, target.z - center.z);
   const double tol = std::max(1e-3, 1e-4 * std::max(r0, r1));
@@ -33,30 +32,23 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
   // axial x radial), as ISO G18 defines it.
   const double axis[3] = {c.ax, c.ay, c.az};
   const double normal =
-      axis[static_cast<int>(third_axis(m))] / std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
-  const int e_r = static_cast<int>(m.cl_radial), e_z = static_cast<int>(m.cl_axial);
+      axis[static_cast<int>(third_axis(s))] / std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
+  const int e_r = static_cast<int>(s.radial), e_z = static_cast<int>(s.m.cl_axial);
   // Sign of the permutation (e_z, e_r, third): cross(e_z, e_r) = +third when even.
   const bool even = (e_z + 1) % 3 == e_r;
   s.prog.arc(target, center, (normal > 0) == even);
   return true;
 }
 
-// A point off the lathe plane: the third axis is ignored, with one warning per file.
-void check_plane(PostState& s, const Statement& st, Point3 p) {
-  const ClAxis third = third_axis(s.m);
-  const double off = axis_value(p, third);
-  if (std::abs(off) > 1e-6 && s.y_warnings++ == 0) {
-    warning(s, st, st.loc,
-            fmt::format("{} = {} but a lathe has no such axis: ignored (the first of such points; "
-                        "is this a milling program?)",
-                        "XYZ"[static_cast<int>(third)], off));
-  }
-}
-
 }  // namespace
 
 void move_to(PostState& s, const Statement& st, Point3 p) {
-  check_plane(s, st, p);
+  if (s.dntcut) {  // DNTCUT … CUT: the position is tracked, nothing is written
+    s.pos = p;
+    s.rapid_next = false;
+    s.circle.reset();
+    return;
+  }
   ensure_started(s);
   ++s.stats.motions;
   if (s.circle) {
@@ -69,12 +61,13 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
     }
   }
   if (s.rapid_next) {
-    s.prog.rapid(lathe(s.m, p));
+    s.prog.rapid(lathe(s, p));
   } else {
     if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
-    s.prog.linear(lathe(s.m, p));
+    s.prog.linear(lathe(s, p));
   }
   s.rapid_next = false;
+  if (s.pos) s.last_dir = Point3{p.x - s.pos->x, p.y - s.pos->y, p.z - s.pos->z};
   s.pos = p;
 }
 
@@ -100,6 +93,7 @@ void goto_stmt(PostState& s, const Statement& st) {
     note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
   if (s.in_cycle) return;  // reported at CYCLE/
+  if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);
 }
@@ -108,6 +102,7 @@ void from_stmt(PostState& s, const Statement& st) {
   Point3 p;
   if (!number_arg(s, st, 0, "X", p.x) || !number_arg(s, st, 1, "Y", p.y)) return;
   if (st.args.size() >= 3 && !number_arg(s, st, 2, "Z", p.z)) return;
+  if (!frame_point(s, st, p)) return;
   s.pos = p;
 }
 
@@ -124,6 +119,7 @@ void godlta_stmt(PostState& s, const Statement& st) {
     if (st.args.size() >= 3 && !number_arg(s, st, 2, "dZ", d.z)) return;
   }
   const Point3 p{s.pos->x + d.x, s.pos->y + d.y, s.pos->z + d.z};
+  if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);
 }
@@ -136,17 +132,46 @@ void circle_stmt(PostState& s, const Statement& st) {
       !number_arg(s, st, 6, "the radius", c.radius))
     return;
   c.loc = st.loc;
+  frame_normal(s, st, Point3{c.ax, c.ay, c.az});
   // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
   const double axis[3] = {c.ax, c.ay, c.az};
   const double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
-  if (!(len > 0) || std::abs(std::abs(axis[static_cast<int>(third_axis(s.m))] / len) - 1) > 1e-6) {
+  if (!(len > 0) || std::abs(std::abs(axis[static_cast<int>(third_axis(s))] / len) - 1) > 1e-6) {
     error(s, st, st.loc,
           fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot "
                       "be cut on a lathe",
                       c.ax, c.ay, c.az));
     return;
   }
+  if (!frame_point(s, st, Point3{c.cx, c.cy, c.cz})) return;
   s.circle = c;
+}
+
+// Fusion's APT post: MOVARC/cx,cy,cz,i,j,k,r[,ANGLE,a] (or CENTER,cx,cy,cz,AXIS,i,j,k,RADIUS,r)
+// then the GOTO that ends the arc: CIRCLE/ with the rotation axis (Fusion flips the normal of a
+// clockwise arc). The sweep ANGLE is implied by the GOTO and not read.
+void movarc_stmt(PostState& s, const Statement& st) {
+  Statement circle = st;
+  circle.args.clear();
+  const auto take = [&](size_t from, size_t n) {
+    for (size_t i = from; i < from + n && i < st.args.size(); ++i)
+      circle.args.push_back(st.args[i]);
+  };
+  if (!st.args.empty() && st.args[0].is("CENTER")) {
+    for (size_t i = 0; i < st.args.size(); ++i) {
+      if (st.args[i].is("CENTER")) take(i + 1, 3);
+      if (st.args[i].is("AXIS")) take(i + 1, 3);
+      if (st.args[i].is("RADIUS")) take(i + 1, 1);
+    }
+  } else {
+    take(0, 7);
+  }
+  if (circle.args.size() < 7 && !st.args.empty()) {
+    error(s, st, st.loc,
+          "MOVARC/ takes cx,cy,cz,i,j,k,r[,ANGLE,a] or CENTER,cx,cy,cz,AXIS,i,j,k,RADIUS,r");
+    return;
+  }
+  circle_stmt(s, circle);
 }
 
 void rapid_stmt(PostState& s, const Statement&) {

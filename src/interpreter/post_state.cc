@@ -10,6 +10,10 @@ namespace clpost {
 PostState::PostState(const Machine& machine, NcProgram& program, Diagnostics& d,
                      const PostOptions& o)
     : m(machine), prog(program), diags(d), opts(o) {
+  radial_auto = machine.cl_radial == ClAxis::kAuto;
+  // Undecided: the first of the two axes besides the axial one (all points so far on the axis).
+  radial =
+      radial_auto ? (machine.cl_axial == ClAxis::kX ? ClAxis::kY : ClAxis::kX) : machine.cl_radial;
   units = machine.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
   thread.settings = planner_settings(machine);
   thread.emitter = make_emitter(machine);
@@ -64,21 +68,21 @@ double axis_value(Point3 p, ClAxis a) {
   return a == ClAxis::kX ? p.x : a == ClAxis::kY ? p.y : p.z;
 }
 
-ClAxis third_axis(const Machine& m) {
-  return static_cast<ClAxis>(3 - static_cast<int>(m.cl_radial) - static_cast<int>(m.cl_axial));
+ClAxis third_axis(const PostState& s) {
+  return static_cast<ClAxis>(3 - static_cast<int>(s.radial) - static_cast<int>(s.m.cl_axial));
 }
 
-Vec2 cl2(const Machine& m, Point3 p) {
-  double r = axis_value(p, m.cl_radial);
-  if (m.cl_x_is_diameter) r /= 2;
-  return Vec2{r, axis_value(p, m.cl_axial)};
+Vec2 cl2(const PostState& s, Point3 p) {
+  double r = axis_value(p, s.radial);
+  if (s.m.cl_x_is_diameter) r /= 2;
+  return Vec2{r, axis_value(p, s.m.cl_axial)};
 }
 
-Point3 cl_point(const Machine& m, Vec2 v) {
+Point3 cl_point(const PostState& s, Vec2 v) {
   Point3 p;
   double* axes[3] = {&p.x, &p.y, &p.z};
-  *axes[static_cast<int>(m.cl_radial)] = m.cl_x_is_diameter ? v.x * 2 : v.x;
-  *axes[static_cast<int>(m.cl_axial)] = v.z;
+  *axes[static_cast<int>(s.radial)] = s.m.cl_x_is_diameter ? v.x * 2 : v.x;
+  *axes[static_cast<int>(s.m.cl_axial)] = v.z;
   return p;
 }
 

@@ -59,6 +59,7 @@ struct ToolInfo {
   std::optional<double> nose_radius;  // CL units
   std::optional<int> tip_quadrant;    // tool-tip direction 1..9 (SWITCH/n), for nose-radius
                                       // compensation
+  std::string feed, speed;            // its default feed and speed as written ("0.1 MMPR")
 };
 
 // The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything larger
@@ -89,7 +90,21 @@ struct PostState {
   FeedMode feed_mode = FeedMode::kPerMinute;
   double feed = 0;  // output units
   SpindleState spindle;
-  ToolInfo tool;          // the tool loaded last
+  // The lathe frame: the CL axis of the radius. With cl.radial_axis: auto it is found at the
+  // first point off the spindle axis (frame.cc); until then points lie on the axis and every
+  // choice gives the same output.
+  ClAxis radial = ClAxis::kX;
+  bool radial_auto = false;   // cl.radial_axis: auto
+  uint32_t radial_found = 0;  // the CL line that decided it (auto; 0: not yet)
+  int off_plane_axis = -1;    // the third axis once the frame is settled (-1: not yet)
+  ToolInfo tool;              // the tool loaded last
+  ToolInfo next_tool;  // tool data written before the tool change it describes (TOOLNO, TPRINT)
+  double cutter_diameter = 0;      // CUTTER/
+  bool dntcut = false;             // DNTCUT … CUT: moves set the position, nothing is cut
+  std::optional<Point3> indirv;    // INDIRV/: the direction of the next geometric motion
+  std::optional<Point3> last_dir;  // the direction the last motion ended in
+  // SYN/'word','replacement': major words read as others; an empty replacement: ignored.
+  std::vector<std::pair<std::string, std::string>> synonyms;
   bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
   size_t y_warnings = 0;  // points off the lathe plane (warned once)
   std::vector<std::string> noted;  // keys of notes already given once
@@ -120,15 +135,31 @@ bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view 
 void ensure_started(PostState& s);
 
 // The lathe frame: a CL point as (radius, axial) in CL units, and as NcProgram's point.
-Vec2 cl2(const Machine& m, Point3 p);
-inline LathePoint lathe(const Machine& m, Point3 p) {
-  const Vec2 v = cl2(m, p);
+Vec2 cl2(const PostState& s, Point3 p);
+inline LathePoint lathe(const PostState& s, Point3 p) {
+  const Vec2 v = cl2(s, p);
   return LathePoint{v.x, v.z};
 }
 // The CL point of lathe-frame point `v` (the third axis 0).
-Point3 cl_point(const Machine& m, Vec2 v);
+Point3 cl_point(const PostState& s, Vec2 v);
 // The CL axis that is neither radial nor axial: a lathe has none.
-ClAxis third_axis(const Machine& m);
+ClAxis third_axis(const PostState& s);
 double axis_value(Point3 p, ClAxis a);
+// Every CL point the program moves through comes here first (frame.cc): with cl.radial_axis:
+// auto the first point off the spindle axis decides the radial axis (a note), and a point off
+// the lathe plane after that is an error; with a fixed axis such a point is warned about once
+// and its third coordinate ignored. False: an error was reported.
+// The common case inline (every GOTO comes here): the frame is settled and the point on the plane.
+bool frame_point_checked(PostState& s, const Statement& st, Point3 p);
+inline bool frame_point(PostState& s, const Statement& st, Point3 p) {
+  if (s.off_plane_axis >= 0) {
+    const double v[3] = {p.x, p.y, p.z};
+    if (!(std::abs(v[s.off_plane_axis]) > 1e-6)) return true;
+  }
+  return frame_point_checked(s, st, p);
+}
+// An arc's axis `n` (cl.radial_axis: auto, not yet found): an axis normal to one of the two
+// candidate planes decides the radial axis (a note); anything else leaves it open.
+void frame_normal(PostState& s, const Statement& st, Point3 n);
 
 }  // namespace clpost

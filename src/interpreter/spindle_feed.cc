@@ -16,6 +16,7 @@ struct SpindleWords {
   std::optional<double> value, max_rpm;
   SourceLoc value_loc;
   bool css = false, off = false, on = false;
+  const Arg* surface_word = nullptr;  // SFM or SMM
   std::optional<SpindleDir> dir;
 };
 
@@ -36,10 +37,7 @@ bool read_spindle_words(PostState& s, const Statement& st, SpindleWords& w) {
       w.css = false;
     } else if (a.is("SMM") || a.is("SFM")) {
       w.css = true;
-      // SMM: metres per minute, SFM: feet per minute; converted to the output unit's speed.
-      if (a.is("SMM") && s.units == LengthUnit::kInch)
-        note_once(s, st, "SMM-inch",
-                  "SMM in an inch program: written as metres per minute in the G96 word");
+      w.surface_word = &a;
     } else if (a.is("CLW") || a.is("CCLW")) {
       w.dir = a.is("CLW") ? SpindleDir::kCw : SpindleDir::kCcw;
     } else if (a.is("OFF") || a.is("ON")) {
@@ -62,6 +60,28 @@ bool read_spindle_words(PostState& s, const Statement& st, SpindleWords& w) {
     }
   }
   return true;
+}
+
+// SFM or SMM whose unit is not the file's (SFM in a metric file): CATIA V5 writes SFM for any
+// surface speed in the file's unit (cl.surface_speed: file); NX and ICAM mean feet or metres
+// (`word`: converted). docs/reading-cam-output.md gives the sources.
+void surface_speed_unit(PostState& s, const Statement& st, SpindleWords& w) {
+  if (!w.css || !w.surface_word || !w.value) return;
+  const bool feet = w.surface_word->is("SFM"), inch_file = s.units == LengthUnit::kInch;
+  if (feet == inch_file) return;
+  const std::string_view file_unit = inch_file ? "ft/min" : "m/min";
+  if (!s.m.surface_speed_by_word) {
+    note_once(s, st, "surface-speed-unit",
+              fmt::format("{} in {} file: read as {}, the file's unit (cl.surface_speed: file, as "
+                          "CATIA V5 writes it; `word` converts)",
+                          w.surface_word->text, inch_file ? "an inch" : "a metric", file_unit));
+    return;
+  }
+  const double from = *w.value;
+  w.value = feet ? from * 0.3048 : from / 0.3048;
+  note_once(s, st, "surface-speed-unit",
+            fmt::format("{} {} written as {:.6g} {} (cl.surface_speed: word)", from,
+                        w.surface_word->text, *w.value, file_unit));
 }
 
 // Turns the spindle on at the speed of `w` (the earlier speed for SPINDL/ON).
@@ -157,6 +177,7 @@ void fedrat_stmt(PostState& s, const Statement& st) {
 void spindl_stmt(PostState& s, const Statement& st) {
   SpindleWords w;
   if (!read_spindle_words(s, st, w)) return;
+  surface_speed_unit(s, st, w);
   ensure_started(s);
   if (w.off) {
     s.spindle.on = false;

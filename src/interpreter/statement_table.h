@@ -3,8 +3,9 @@
 // GODLTA, CIRCLE, RAPID), spindle_feed.cc (FEDRAT, SPINDL, DELAY), tool.cc (LOADTL, LOAD/TOOL,
 // TURRET), program_words.cc (UNITS, COOLNT, CUTCOM, STOP, FINI, … and the words skipped),
 // text_words.cc (PARTNO, PPRINT, INSERT, TOOL PATH, unknown words), thread_statements.cc
-// (PITCH, THREAD, OP/THREAD, COUPLE), cycles.cc (CYCLE/). A new CL word is one entry in
-// statement_table.cc and one handler.
+// (PITCH, THREAD, OP/THREAD, COUPLE), cycles.cc (CYCLE/), cam_words.cc (SYN, DNTCUT/CUT, TOOLNO,
+// TPRINT, CUTTER, SWITCH), geometric_motion.cc (INDIRV, PSIS, GOFWD …; its geometry in
+// lathe_geometry.cc). A new CL word is one entry in statement_table.cc and one handler.
 #include <span>
 #include <string_view>
 
@@ -30,6 +31,7 @@ void from_stmt(PostState& s, const Statement& st);
 void godlta_stmt(PostState& s, const Statement& st);
 void circle_stmt(PostState& s, const Statement& st);
 void rapid_stmt(PostState& s, const Statement& st);
+void movarc_stmt(PostState& s, const Statement& st);
 void fedrat_stmt(PostState& s, const Statement& st);
 void spindl_stmt(PostState& s, const Statement& st);
 void delay_stmt(PostState& s, const Statement& st);
@@ -54,7 +56,26 @@ void thread_stmt(PostState& s, const Statement& st);
 void op_stmt(PostState& s, const Statement& st);
 void couple_stmt(PostState& s, const Statement& st);
 void cycle_stmt(PostState& s, const Statement& st);
-void undercut_stmt(PostState& s, const Statement& st);  // CYCLE/UNDCUT (undercut.cc)
+void undercut_stmt(PostState& s, const Statement& st);       // CYCLE/UNDCUT (undercut.cc)
+void lathe_thread_cycle(PostState& s, const Statement& st);  // CYCLE/LATHTHRD (its own file)
+
+// CAM words (cam_words.cc) and APT geometric motion (geometric_motion.cc).
+void syn_stmt(PostState& s, const Statement& st);
+void dntcut_stmt(PostState& s, const Statement& st);
+void cut_stmt(PostState& s, const Statement& st);
+void toolno_stmt(PostState& s, const Statement& st);
+void tprint_stmt(PostState& s, const Statement& st);
+void cutter_stmt(PostState& s, const Statement& st);
+void switch_stmt(PostState& s, const Statement& st);
+void indirv_stmt(PostState& s, const Statement& st);
+void psis_stmt(PostState& s, const Statement& st);
+void go_stmt(PostState& s, const Statement& st);  // GOFWD, GOLFT, GORGT, GOBACK
+// The replacement SYN/ gave major word `major` (empty: ignored), or nullptr.
+const std::string* synonym_of(const PostState& s, std::string_view major);
+// GOFWD, GOLFT, GORGT, GOBACK: the words whose modifiers (TLON, TLLFT, TLRGT) go_stmt reads.
+inline bool is_motion_word(std::string_view w) {
+  return w == "GOFWD" || w == "GOLFT" || w == "GORGT" || w == "GOBACK";
+}
 
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);

@@ -17,6 +17,12 @@ void partno_stmt(PostState& s, const Statement& st) {
 }
 
 void pprint_stmt(PostState& s, const Statement& st) {
+  // ICAM's CATIA tables name the next tool so: `PPRINT TOOL: Thread Tool.1`.
+  if (st.text.starts_with("TOOL:")) {
+    std::string_view name = st.text.substr(5);
+    name.remove_prefix(std::min(name.find_first_not_of(" \t"), name.size()));
+    s.next_tool.text = std::string(name);
+  }
   ensure_started(s);
   s.prog.comment(st.text);
 }

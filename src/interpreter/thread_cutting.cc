@@ -110,7 +110,7 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
   EmitContext ctx{s.diags, lines, s.thread.rpm, s.feed, s.feed_mode};
   s.thread.emitter->emit(plan, s.prog, ctx);
   s.stats.motions += plan.passes.size() * 4;
-  s.pos = cl_point(s.m, plan.end_position);  // where the plan leaves the tool
+  s.pos = cl_point(s, plan.end_position);  // where the plan leaves the tool
   end_thread_spindle(s);
 }
 

@@ -44,7 +44,7 @@ void open_multi(PostState& s, const Statement& st, size_t first) {
     error(s, st, st.loc, "THREAD/ON needs the initial point: no GOTO or FROM before it");
     s.thread.failed = true;
   }
-  in.p0 = s.pos ? cl2(s.m, *s.pos) : Vec2{};
+  in.p0 = s.pos ? cl2(s, *s.pos) : Vec2{};
   in.feed_approach = !s.rapid_next && s.feed_given;
   s.rapid_next = false;
 }
@@ -62,6 +62,24 @@ void close_multi(PostState& s, const Statement& st) {
   cut_multi_thread(s, plan, t.multi.on_lines);
 }
 
+// Decision (CATIA V5, NC_LATHE_THREADING: `THREAD/TURN,%MFG_THREAD_PITCH`): a bare number right
+// after THREAD/TURN|FACE|TAPER is the pitch in CL units, not threads per unit as on PITCH/; the
+// statement is read as if PERREV followed it. Anything else is returned as it is.
+Statement bare_pitch_in_cl_units(const Statement& st, size_t i) {
+  const auto unit = [](const Arg& a) {
+    return a.is("TPI") || a.is("IPR") || a.is("MMPR") || a.is("PERREV");
+  };
+  if (i >= st.args.size() || !st.args[i].is_number() ||
+      (i + 1 < st.args.size() && unit(st.args[i + 1])))
+    return st;
+  Statement copy = st;
+  Arg perrev;
+  perrev.text = "PERREV";
+  perrev.loc = st.args[i].loc;
+  copy.args.insert(copy.args.begin() + static_cast<std::ptrdiff_t>(i + 1), perrev);
+  return copy;
+}
+
 // THREAD/TURN|FACE|TAPER[,pitch couplets]: a single-pass thread, cut at the first statement
 // after its GOTOs.
 void open_single(PostState& s, const Statement& st, size_t first) {
@@ -73,8 +91,9 @@ void open_single(PostState& s, const Statement& st, size_t first) {
   in.word = fmt::format("THREAD/{}", st.args[first].text);
   in.pitch = s.thread.pitch;
   in.units = s.units;
-  in.p0 = s.pos ? cl2(s.m, *s.pos) : Vec2{};
-  s.thread.failed = !parse_pitch_words(st, first + 1, s.units, in.pitch, s.diags);
+  in.p0 = s.pos ? cl2(s, *s.pos) : Vec2{};
+  s.thread.failed = !parse_pitch_words(bare_pitch_in_cl_units(st, first + 1), first + 1, s.units,
+                                       in.pitch, s.diags);
 }
 
 void close_single(PostState& s) {
@@ -112,7 +131,7 @@ void open_couple(PostState& s, const Statement& st) {
     t.failed = true;
     return;
   }
-  in.start = cl2(s.m, *s.pos);
+  in.start = cl2(s, *s.pos);
   t.failed = !t.couple.begin(in, t.settings, s.diags);
 }
 
@@ -238,7 +257,7 @@ void couple_stmt(PostState& s, const Statement& st) {
 
 void thread_goto(PostState& s, const Statement& st, Point3 p) {
   ThreadSequence& t = s.thread;
-  const Vec2 v = cl2(s.m, p);
+  const Vec2 v = cl2(s, p);
   if (t.kind == Kind::kSingle && t.single.gotos.empty() && !t.failed) {
     move_to(s, st, p);  // GOTO/start: an ordinary move
   } else {

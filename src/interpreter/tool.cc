@@ -38,6 +38,9 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
     offset = static_cast<int>(o.number);
   }
   ensure_started(s);
+  // The tool data written before this change (CATIA: TOOLNO, TPRINT, PPRINT TOOL:) describe it.
+  s.tool = std::move(s.next_tool);
+  s.next_tool = ToolInfo{};
   s.tool.number = static_cast<int>(tool);
   s.tool.offset = offset;
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)

@@ -257,7 +257,7 @@ void undercut_contour(PostState& s, const Statement& st, const UndercutWords& u,
           "before it");
     return;
   }
-  const Vec2 here = cl2(s.m, *s.pos);
+  const Vec2 here = cl2(s, *s.pos);
   if (std::fabs(here.z - u.at) < 1e-9) {
     error(s, st, st.loc,
           fmt::format("CYCLE/UNDCUT: the tool is at the undercut's Z {}: it must be on the side "

@@ -31,7 +31,9 @@ enum class ThreadCycle : uint8_t {
   kLinuxcncG76
 };
 enum class ThreadLoop : uint8_t { kG33, kG92 };
-enum class ClAxis : uint8_t { kX, kY, kZ };
+// kAuto (cl.radial_axis only): the radial axis is found from the program (the one of the two
+// non-axial axes that is not constantly 0).
+enum class ClAxis : uint8_t { kX, kY, kZ, kAuto };
 
 struct Machine {
   std::string name;         // machine file stem, e.g. "generic-lathe"
@@ -41,10 +43,13 @@ struct Machine {
 
   // CL frame
   std::string default_units = "mm";  // when the CL file has no UNITS statement: mm | in
-  ClAxis cl_radial = ClAxis::kX;     // CL axis holding the lathe's radial coordinate
+  ClAxis cl_radial = ClAxis::kAuto;  // CL axis holding the lathe's radial coordinate
   ClAxis cl_axial = ClAxis::kZ;      // CL axis holding the spindle axis
   bool cl_x_is_diameter = false;     // CL radial values are diameters already
-  bool diameter_output = true;       // write X as a diameter
+  // SPINDL/…,SFM|SMM: false (`file`): a surface speed in the file's unit per minute whatever
+  // the word (CATIA); true (`word`): SFM is feet, SMM metres per minute, converted (NX, ICAM).
+  bool surface_speed_by_word = false;
+  bool diameter_output = true;  // write X as a diameter
 
   // Limits (0 = none)
   double max_rpm = 0;

@@ -14,13 +14,15 @@ using M = Machine;
 using enum KeyType;
 
 constexpr Choice kUnits[] = {{"mm", "mm"}, {"in", "in"}};
-constexpr Choice kAxes[] = {{"x"}, {"y"}, {"z"}};  // ClAxis order
+constexpr Choice kAxes[] = {{"x"}, {"y"}, {"z"}};                  // ClAxis order
+constexpr Choice kRadialAxes[] = {{"x"}, {"y"}, {"z"}, {"auto"}};  // ClAxis order
 constexpr Choice kLineEndings[] = {{"lf", "\n"}, {"crlf", "\r\n"}};
 constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};  // ThreadStrategy order
 constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};   // ThreadFallback order
 constexpr Choice kCycles[] = {{"none"},     {"cycle99"},        {"fanuc_g76"},
                               {"haas_g76"}, {"heidenhain_g31"}, {"linuxcnc_g76"}};  // ThreadCycle
 constexpr Choice kLoops[] = {{"g33"}, {"g92"}};           // ThreadLoop order
+constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};  // false, true
 constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};  // false, true
 
 constexpr const char* kId = "Identity";
@@ -45,11 +47,20 @@ const KeySpec kKeys[] = {
     {"units", kId, kChoice, &M::default_units, "CL units when the CL file has no UNITS statement",
      0, 0, kUnits},
     {"cl.radial_axis", kCl, kChoice, &M::cl_radial,
-     "the CL axis that holds the lathe's radial coordinate", 0, 0, kAxes},
+     "the CL axis that holds the lathe's radial coordinate; `auto`: the one of the two others than "
+     "the axial axis that is not constantly 0, found at the first point off the axis (a note says "
+     "which; a program that moves in both is an error)",
+     0, 0, kRadialAxes},
     {"cl.axial_axis", kCl, kChoice, &M::cl_axial, "the CL axis that holds the spindle axis", 0, 0,
      kAxes},
     {"cl.radial_is_diameter", kCl, kBool, &M::cl_x_is_diameter,
      "CL radial values are diameters already"},
+    {"cl.surface_speed", kCl, kChoice, &M::surface_speed_by_word,
+     "what SPINDL/…,SFM or SMM means: `file`: a surface speed in the CL file's unit per minute "
+     "(m/min "
+     "in a metric file) whatever the word, as CATIA V5 writes it; `word`: SFM is ft/min and SMM "
+     "m/min, converted to the program's unit (docs/reading-cam-output.md)",
+     0, 0, kSurfaceSpeed},
     {"output.extension", kOut, kString, &M::extension,
      "file extension of the NC program (batch mode names outputs with it)"},
     {"output.line_ending", kOut, kChoice, &M::line_ending, "line ending of the NC program", 0, 0,
