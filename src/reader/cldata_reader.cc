@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "reader/cldata_words.h"
+#include "reader/continuation.h"
 
 namespace clpost {
 
@@ -261,6 +262,16 @@ bool CldataReader::post_word(Statement& out) {
     if (odd)
       diags_.warning(at, {},
                      fmt::format("{} text holds bytes that are not text, read as '?'", major));
+    // A text ending in one '$' would continue onto the next line when read as APT: its APT
+    // text (cl2apt) could not say it, so the '$' is read as '?', like a byte that is not text.
+    const std::string_view end = trim_blanks(text);
+    if (reader::comment_continues(end)) {
+      text[static_cast<size_t>(end.data() - text.data()) + end.size() - 1] = '?';
+      diags_.warning(at, {},
+                     fmt::format("{} text ends in '$', which APT reads as a continuation: read as "
+                                 "'?'",
+                                 major));
+    }
     begin(out, major, Statement::Form::kText, at);
     const std::string_view trimmed = trim_blanks(text);
     // A text that starts with '/' keeps it: the text reader takes one '/' after the major.

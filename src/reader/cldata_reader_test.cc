@@ -237,6 +237,20 @@ TEST(CldataReader, UnknownCodesAreKeptAndUnknownRecordsSkipped) {
             "0 words); skipped\n");
 }
 
+// Found by the fuzz target: a text ending in one '$' would continue the line when its APT text
+// is read back, so the '$' is read as '?' (like a byte that is not text), with a warning.
+TEST(CldataReader, TextEndingInADollarIsNotAContinuation) {
+  Writer w;
+  w.record(cldata::kPostWord, 1045, std::vector<uint64_t>{w.text("SHAFT$")});
+  w.record(cldata::kPostWord, 1045, std::vector<uint64_t>{w.text("A$$")});
+  w.record(cldata::kFini, 0, {});
+  const Read r = read_all(w.bytes());
+  EXPECT_EQ(r.st, (std::vector<std::string>{"2 PARTNO 'SHAFT?'", "2 PARTNO 'A$$'", "1 FINI"}));
+  EXPECT_EQ(r.diags,
+            "t.cl: record 1 (byte 0): warning: PARTNO text ends in '$', which APT reads as a "
+            "continuation: read as '?'\n");
+}
+
 TEST(CldataReader, DamagedInputIsReportedAtItsRecordAndByte) {
   const std::string good =
       records({{{2000, 1009}, {Writer::number(0.2)}},
