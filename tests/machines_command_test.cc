@@ -34,7 +34,7 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
   for (const std::string& l :
        {"output.extension: .ngc                          # " + machine + ":7",
         "output.line_ending: lf                          # " + post + ":9",
-        "threading.cycle: linuxcnc_g76                   # " + post + ":64",
+        "threading.cycle: linuxcnc_g76                   # " + post + ":74",
         std::string("threading.fallback: error                       # --set"),
         std::string("threading.loop: g33                             # default"),
         "limits.max_rpm: 3000                            # " + machine + ":8",
@@ -44,9 +44,9 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
             ":58"})
     EXPECT_TRUE(has_line(lines, l)) << l << "\n" << r.out;
-  // The heading, 47 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
-  // g76_depth g76_angle g76_taper) of 5 keys, 19 codes and 9 templates.
-  EXPECT_EQ(lines.size(), 1u + 47 + 12 * 5 + 19 + 9);
+  // The heading, 49 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
+  // g76_depth g76_angle g76_taper) of 5 keys, 19 codes and 15 templates (9 + 6 hole cycles).
+  EXPECT_EQ(lines.size(), 1u + 49 + 12 * 5 + 19 + 15);
 }
 
 TEST(MachinesShow, WithoutOriginAndAnUnknownMachine) {

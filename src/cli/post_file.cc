@@ -81,7 +81,8 @@ PostOutcome post_file(const PostRequest& req) {
       if (req.verify) plans.push_back(p);
     };
     ClReader reader(input.get(), diags);
-    const PostSummary summary = post(reader, *req.machine, *sink, diags, req.options, on_thread);
+    PostSummary summary = post(reader, *req.machine, *sink, diags, req.options, on_thread);
+    out.holes = std::move(summary.holes);
     out.stats = summary.stats;
     out.units = summary.units;
     out.bytes_in = summary.bytes_in;
@@ -91,8 +92,8 @@ PostOutcome post_file(const PostRequest& req) {
   if (req.verify && !diags.has_errors()) {
     reader::LineSource src{std::string_view(program)};
     const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
-    VerifyOutcome v = verify_program(src, name, plans, display_name(req.input), *req.machine,
-                                     req.verify_tolerance);
+    VerifyOutcome v = verify_program(src, name, plans, &out.holes, display_name(req.input),
+                                     *req.machine, req.verify_tolerance);
     out.verify_report = std::move(v.report);
     verify_diagnostics = std::move(v.diagnostics);
     verify_failed = !v.ok;

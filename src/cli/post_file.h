@@ -40,6 +40,7 @@ struct PostOutcome {
   size_t bytes_in = 0;
   size_t bytes_out = 0;
   std::string verify_report;  // with PostRequest::verify
+  std::vector<Hole> holes;    // the holes written (CYCLE/DRILL …), for verify
 };
 
 PostOutcome post_file(const PostRequest& req);

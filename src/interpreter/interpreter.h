@@ -29,6 +29,8 @@ class Interpreter {
   void on_thread(std::function<void(const ThreadPlan&)> cb) { state_->on_thread = std::move(cb); }
   const PostStats& stats() const { return state_->stats; }
   LengthUnit units() const { return state_->units; }
+  // The holes written (CYCLE/DRILL …), for verify; moved out.
+  std::vector<Hole> take_holes() { return std::move(state_->holes); }
 
  private:
   std::unique_ptr<PostState> state_;

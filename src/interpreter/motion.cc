@@ -99,6 +99,7 @@ void goto_stmt(PostState& s, const Statement& st) {
     }
     note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
+  if (s.hole_cycle) return hole_goto(s, st, p);
   if (s.in_cycle) return;  // reported at CYCLE/
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);

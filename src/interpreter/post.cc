@@ -22,6 +22,7 @@ PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& dia
   summary.stats = interp.stats();
   summary.units = interp.units();
   summary.bytes_in = reader.bytes_read();
+  summary.holes = interp.take_holes();
   return summary;
 }
 

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interpreter/hole_cycle.h"
 #include "interpreter/thread_sequence.h"
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
@@ -91,9 +92,11 @@ struct PostState {
   SpindleState spindle;
   ToolInfo tool;          // the tool loaded last
   bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
-  size_t y_warnings = 0;  // points off the lathe plane (warned once)
-  std::vector<std::string> noted;  // keys of notes already given once
-  ThreadSequence thread;           // the thread sequence being read, if any
+  std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
+  std::vector<Hole> holes;              // every hole written, in order (verify)
+  size_t y_warnings = 0;                // points off the lathe plane (warned once)
+  std::vector<std::string> noted;       // keys of notes already given once
+  ThreadSequence thread;                // the thread sequence being read, if any
 };
 
 // Diagnostics at statement `st` (its own line text is shown).

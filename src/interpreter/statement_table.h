@@ -55,6 +55,11 @@ void op_stmt(PostState& s, const Statement& st);
 void couple_stmt(PostState& s, const Statement& st);
 void cycle_stmt(PostState& s, const Statement& st);
 void undercut_stmt(PostState& s, const Statement& st);  // CYCLE/UNDCUT (undercut.cc)
+// Hole-making cycles (hole_cycles.cc): CYCLE/DRILL, DEEP, … and CYCLE/INIT; the GOTO of a hole
+// while one is in force (hole_goto.cc).
+bool is_hole_cycle(std::string_view word);
+void hole_cycle_stmt(PostState& s, const Statement& st);
+void hole_goto(PostState& s, const Statement& st, Point3 p);
 
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);

@@ -78,6 +78,10 @@ struct Machine {
   double haas_min_cut = 0;           // Haas setting 99, machine units
   double haas_chamfer = 0;           // Haas setting 95, in leads
 
+  // Holes on the spindle axis (CYCLE/DRILL …)
+  bool rigid_tapping = false;   // CYCLE/TAP uses hole_tap_rigid
+  double peck_clearance = 0.5;  // expanded pecks: re-entry clearance, chip-break back-off
+
   // Output
   std::string extension = ".nc";
   std::string line_ending = "\n";

@@ -29,6 +29,7 @@ constexpr const char* kOut = "Output";
 constexpr const char* kLim = "Limits";
 constexpr const char* kThr = "Threading";
 constexpr const char* kFacts = "Control facts";
+constexpr const char* kHoles = "Holes";
 
 // Every key of a post or machine file (sections in docs order).
 const KeySpec kKeys[] = {
@@ -139,6 +140,14 @@ const KeySpec kKeys[] = {
      "Haas setting 99 (minimum cut), machine units", 0, 10},
     {"threading.haas_chamfer", kFacts, kNumber, &M::haas_chamfer,
      "Haas setting 95 (chamfer size), in leads", 0, 99},
+    {"holes.rigid_tapping", kHoles, kBool, &M::rigid_tapping,
+     "the spindle is synchronised for tapping: CYCLE/TAP uses template hole_tap_rigid (Fanuc "
+     "M29, LinuxCNC G33.1)"},
+    {"holes.peck_clearance", kHoles, kNumber, &M::peck_clearance,
+     "where moves written for pecks stop short of the last depth when they go back in, and how "
+     "far a chip-breaking peck backs off, output units (the control's own setting in a cycle: "
+     "Fanuc parameter 5114)",
+     0, 100},
 };
 
 const FormatKeySpec kFormatKeys[] = {
@@ -210,15 +219,18 @@ const NameSpec kFormats[] = {
     {"cycle99_depth", "CYCLE99 APP, ROP, TDEP, FAL, VRT"},
     {"cycle99_angle", "CYCLE99 IANG, NSP"},
     {"cycle99_lead", "CYCLE99 PIT"},
+    {"hole_peck", "peck depth of the hole templates (Fanuc Q: 0.001 mm, decimals 0, scale 1000)"},
 };
 
 const TemplateSpec* const kTemplates[] = {
-    &tmpl::kProgramStart,  &tmpl::kProgramEnd,  &tmpl::kToolChange,
-    &tmpl::kSpindleRpm,    &tmpl::kSpindleCss,  &tmpl::kSpindleStop,
-    &tmpl::kDwell,         &tmpl::kCycle99,     &tmpl::kCycle96,
-    &tmpl::kFanucG76,      &tmpl::kHaasG76,     &tmpl::kG92,
-    &tmpl::kG92Next,       &tmpl::kLinuxcncG76, &tmpl::kLinuxcncG76Taper,
-    &tmpl::kHeidenhainG31,
+    &tmpl::kProgramStart,  &tmpl::kProgramEnd,    &tmpl::kToolChange,
+    &tmpl::kSpindleRpm,    &tmpl::kSpindleCss,    &tmpl::kSpindleStop,
+    &tmpl::kDwell,         &tmpl::kCycle99,       &tmpl::kCycle96,
+    &tmpl::kFanucG76,      &tmpl::kHaasG76,       &tmpl::kG92,
+    &tmpl::kG92Next,       &tmpl::kLinuxcncG76,   &tmpl::kLinuxcncG76Taper,
+    &tmpl::kHeidenhainG31, &tmpl::kHoleDrill,     &tmpl::kHoleDwell,
+    &tmpl::kHolePeck,      &tmpl::kHoleChipBreak, &tmpl::kHoleTap,
+    &tmpl::kHoleTapRigid,  &tmpl::kHoleBore,
 };
 
 template <typename T, typename N>

@@ -76,6 +76,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.lead = lead;
     out.path.moves.push_back(mv);
   }
+  if (hole_open) sim::follow_hole(*this, kind, pos, to);
   pos = to;
   pos_known = true;
 }
@@ -221,6 +222,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
     s.out.units = LengthUnit::kMm;
   if (!c.inch_line.empty() && s.line_text.find(c.inch_line) != std::string_view::npos)
     s.out.units = LengthUnit::kInch;
+  sim::hole_comment(s, b);
   if (b.words.empty() && b.calls.empty()) return;
   if (sim::has_code(b, c.metric)) s.out.units = LengthUnit::kMm;
   if (sim::has_code(b, c.inch)) s.out.units = LengthUnit::kInch;
@@ -234,6 +236,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
                                         w.address, w.text));
   }
   if (sim::has_code(b, c.dwell)) return;  // G4 X/P/F is a time, not a position
+  if (sim::hole_cycle_block(s, b)) return;
   // Cycles.
   if (!b.calls.empty()) {
     if (sim::cycle99_call(s, b)) return;
