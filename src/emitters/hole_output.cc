@@ -108,6 +108,11 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
   if ((h.kind == HoleKind::kDeep || h.kind == HoleKind::kChipBreak) && h.peck > 0 &&
       !uses_field(m, t.name, "peck"))
     return fmt::format("template '{}' has no {{peck}}", t.name);
+  if (h.kind == HoleKind::kTap && h.spindle == SpindleDir::kCcw && m.tap_turns_cw)
+    return fmt::format(
+        "a left-hand tap, spindle counter-clockwise: '{}' turns the spindle "
+        "clockwise, holes.tap_turns_cw",
+        t.name);
   if (h.dwell > 0 && !uses_field(m, t.name, "dwell") && !uses_field(m, t.name, "dwell_ms"))
     return fmt::format("a dwell of {} s at the bottom: template '{}' has no {{dwell}}",
                        num_text(h.dwell), t.name);

@@ -137,6 +137,18 @@ TEST(HoleCycles, ProETapWithTpi) {
             "(HOLE AT CL LINE 6: TAPPING TO Z-1.55)\nG99 G84 X0. Z-1.55 R0.25 F0.05\nG80\n");
 }
 
+// A left-hand tap (spindle CCLW) on the Haas, whose G84 turns the spindle M3 itself: moves.
+TEST(HoleCycles, LeftHandTapOnHaasIsMoves) {
+  std::string cl = kTap;
+  cl.replace(cl.find("CLW"), 3, "CCLW");
+  Posted p = post(cl, load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: TAPPING TO Z-15.)\n(HOLE_TAP NOT USED: A LEFT-HAND TAP, SPINDLE "
+            "COUNTER-CLOCKWISE: 'HOLE_TAP' TURNS THE SPINDLE CLOCKWISE, HOLES.TAP_TURNS_CW. MOVES "
+            "INSTEAD)\nZ3.\nG1 Z-15. G99 F1.5\nG97 S500 M3\nZ3.\nG97 S500 M4\nG0 Z10.\n");
+}
+
 // CATIA's short form: total depth and clearance, the feed in force.
 TEST(HoleCycles, CatiaTapUsesTheFeedInForce) {
   Posted p = post(

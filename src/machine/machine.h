@@ -81,6 +81,7 @@ struct Machine {
   // Holes on the spindle axis (CYCLE/DRILL …)
   bool rigid_tapping = false;   // CYCLE/TAP uses hole_tap_rigid
   double peck_clearance = 0.5;  // expanded pecks: re-entry clearance, chip-break back-off
+  bool tap_turns_cw = false;    // the tap cycle starts the spindle M3 itself (Haas G84)
 
   // Output
   std::string extension = ".nc";

@@ -148,6 +148,9 @@ const KeySpec kKeys[] = {
      "far a chip-breaking peck backs off, output units (the control's own setting in a cycle: "
      "Fanuc parameter 5114)",
      0, 100},
+    {"holes.tap_turns_cw", kHoles, kBool, &M::tap_turns_cw,
+     "the tap cycle turns the spindle clockwise itself (Haas G84): a left-hand tap (SPINDL/…,CCLW) "
+     "is then written as moves"},
 };
 
 const FormatKeySpec kFormatKeys[] = {
