@@ -20,7 +20,7 @@ struct Posted {
 inline Machine load(const std::string& name, std::vector<std::string> sets = {}) {
   Machine m;
   std::string errors;
-  sets.push_back("block_numbers.enabled=false");
+  sets.insert(sets.begin(), "block_numbers.enabled=false");  // the caller's sets win
   EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
   return m;
 }

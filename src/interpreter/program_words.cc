@@ -1,4 +1,4 @@
-// Program words: UNITS, COOLNT, CUTCOM, STOP/OPSTOP, END, FINI, GOHOME, MULTAX, spline motion
+// Program words: UNITS, COOLNT, CUTCOM, STOP/OPSTOP, END, FINI, MULTAX, spline motion
 // (refused) and the records a lathe program skips.
 #include <fmt/format.h>
 
@@ -54,6 +54,11 @@ void coolnt_stmt(PostState& s, const Statement& st) {
                       a.text));
     return;
   }
+  // COOLNT/FLOOD,HIGH, COOLNT/ON,2 …: what follows the coolant is said, not dropped silently.
+  if (st.args.size() > 1)
+    warning(s, st, st.args[1].loc,
+            fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text,
+                        st.source.substr(st.source.find(st.args[1].text))));
   ensure_started(s);
   s.prog.coolant(c);
 }
@@ -100,10 +105,6 @@ void finish_program(PostState& s) {
 
 void fini_stmt(PostState& s, const Statement&) {
   finish_program(s);
-}
-
-void gohome_stmt(PostState& s, const Statement& st) {
-  warning(s, st, st.loc, "GOHOME: this machine has no home position in its machine file; ignored");
 }
 
 void multax_stmt(PostState& s, const Statement& st) {

@@ -41,7 +41,15 @@ void cutcom_stmt(PostState& s, const Statement& st);
 void stop_stmt(PostState& s, const Statement& st);
 void end_stmt(PostState& s, const Statement& st);
 void fini_stmt(PostState& s, const Statement& st);
-void gohome_stmt(PostState& s, const Statement& st);
+void gohome_stmt(PostState& s, const Statement& st);  // positions.cc
+// Before a tool change: the machine's tool_change_position, when it has one (positions.cc).
+void tool_change_position(PostState& s, const Statement& st);
+// Pass-through words (machine_words.cc).
+void auxfun_stmt(PostState& s, const Statement& st);
+void prefun_stmt(PostState& s, const Statement& st);
+void selctl_stmt(PostState& s, const Statement& st);
+void clamp_stmt(PostState& s, const Statement& st);
+void opskip_stmt(PostState& s, const Statement& st);
 void multax_stmt(PostState& s, const Statement& st);
 void spline_stmt(PostState& s, const Statement& st);
 void skipped_stmt(PostState& s, const Statement& st);

@@ -99,6 +99,7 @@ struct Machine {
   bool modal_codes = true;                           // suppress repeated modal G codes
   bool modal_words = true;                           // suppress unchanged X/Z/F/S words
   int program_number = 1;
+  std::string block_delete = "/";  // starts a block the operator may skip (OPSKIP)
 
   std::map<std::string, NumberFormat> formats;  // by address; "default" for the others
   std::map<std::string, std::string> codes;     // rapid, linear, arc_cw, ... -> "G0", ...

@@ -68,6 +68,9 @@ const KeySpec kKeys[] = {
     {"comments.upper_case", kOut, kBool, &M::comment_upper, "upper-case comment text"},
     {"comments.forbidden", kOut, kString, &M::comment_forbidden,
      "characters removed from comment text"},
+    {"output.block_delete", kOut, kString, &M::block_delete,
+     "what starts a block the operator may skip, between OPSKIP/ON and OPSKIP/OFF (`/`); empty: "
+     "OPSKIP is a warning"},
     {"block_numbers.enabled", kOut, kBool, &M::block_numbers, "number the blocks"},
     {"block_numbers.address", kOut, kString, &M::block_address, "the block number's address"},
     {"block_numbers.start", kOut, kInt, &M::block_start, "the first block number", 0, 99999999},
@@ -191,6 +194,8 @@ const NameSpec kCodes[] = {
     {"g31_h_minus", "HEIDENHAIN G31 flank offset H toward -Z (-X on a face); default 1"},
     {"g31_h_plus", "HEIDENHAIN G31 flank offset H toward +Z; default 2"},
     {"g31_h_alternating", "HEIDENHAIN G31 alternating flank offset H; default 3"},
+    {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
+    {"clamp_off", "CLAMP/OFF"},
 };
 
 const NameSpec kFormats[] = {
@@ -226,14 +231,34 @@ const NameSpec kFormats[] = {
 };
 
 const TemplateSpec* const kTemplates[] = {
-    &tmpl::kProgramStart,  &tmpl::kProgramEnd,    &tmpl::kToolChange,
-    &tmpl::kSpindleRpm,    &tmpl::kSpindleCss,    &tmpl::kSpindleStop,
-    &tmpl::kDwell,         &tmpl::kCycle99,       &tmpl::kCycle96,
-    &tmpl::kFanucG76,      &tmpl::kHaasG76,       &tmpl::kG92,
-    &tmpl::kG92Next,       &tmpl::kLinuxcncG76,   &tmpl::kLinuxcncG76Taper,
-    &tmpl::kHeidenhainG31, &tmpl::kHoleDrill,     &tmpl::kHoleDwell,
-    &tmpl::kHolePeck,      &tmpl::kHoleChipBreak, &tmpl::kHoleTap,
-    &tmpl::kHoleTapRigid,  &tmpl::kHoleBore,
+    &tmpl::kProgramStart,
+    &tmpl::kProgramEnd,
+    &tmpl::kToolChange,
+    &tmpl::kSpindleRpm,
+    &tmpl::kSpindleCss,
+    &tmpl::kSpindleStop,
+    &tmpl::kDwell,
+    &tmpl::kCycle99,
+    &tmpl::kCycle96,
+    &tmpl::kFanucG76,
+    &tmpl::kHaasG76,
+    &tmpl::kG92,
+    &tmpl::kG92Next,
+    &tmpl::kLinuxcncG76,
+    &tmpl::kLinuxcncG76Taper,
+    &tmpl::kHeidenhainG31,
+    &tmpl::kHoleDrill,
+    &tmpl::kHoleDwell,
+    &tmpl::kHolePeck,
+    &tmpl::kHoleChipBreak,
+    &tmpl::kHoleTap,
+    &tmpl::kHoleTapRigid,
+    &tmpl::kHoleBore,
+    &tmpl::kHome,
+    &tmpl::kToolChangePosition,
+    &tmpl::kAuxfun,
+    &tmpl::kPrefun,
+    &tmpl::kSelctl,
 };
 
 template <typename T, typename N>

@@ -218,6 +218,9 @@ inline constexpr TemplateField kHoleFields[] = {
     {"lead", kText, "tap lead per revolution, format F"},
     {"rpm", kText, "spindle speed, format S"}};
 
+inline constexpr TemplateField kCodeFields[] = {
+    {"code", kWhole, "the number the CL gave (AUXFUN/8: 8)"}};
+
 using enum Need;
 
 inline constexpr TemplateSpec kProgramStart{"program_start", kProgramStartFields, kAlways,
@@ -322,6 +325,43 @@ inline constexpr TemplateSpec kHoleBore{
     {},
     {},
     "CYCLE/BORE, REAM"};
+
+inline constexpr TemplateSpec kHome{
+    "home",
+    {},
+    kOptional,
+    "the machine's home return, one line per axis in the order it moves them (`G28 U0.`, `G28 "
+    "W0.`); without it GOHOME/x,y,z is a rapid move there, GOHOME alone a warning",
+    {},
+    {},
+    "GOHOME"};
+inline constexpr TemplateSpec kToolChangePosition{
+    "tool_change_position",
+    {},
+    kOptional,
+    "where the turret goes before every tool change (a home return or a safe position); "
+    "without it the tool changes where it is",
+    {},
+    {},
+    "LOADTL"};
+inline constexpr TemplateSpec kAuxfun{
+    "auxfun",  kCodeFields,
+    kOptional, "an M code the CL asks for; without it AUXFUN is a warning and a comment",
+    {},        {},
+    "AUXFUN/n"};
+inline constexpr TemplateSpec kPrefun{
+    "prefun",  kCodeFields,
+    kOptional, "a G code the CL asks for; without it PREFUN is a warning and a comment",
+    {},        {},
+    "PREFUN/n"};
+inline constexpr TemplateSpec kSelctl{
+    "selctl",
+    kCodeFields,
+    kOptional,
+    "SELCTL/n: select control n (a channel or turret); without it a warning and a comment",
+    {},
+    {},
+    "SELCTL/n"};
 
 }  // namespace tmpl
 

@@ -228,6 +228,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::has_code(b, c.inch)) s.out.units = LengthUnit::kInch;
   if (sim::has_code(b, {"DIAMON", {}}) || sim::has_code(b, {"G", 7})) s.diameter = true;
   if (sim::has_code(b, {"DIAMOF", {}}) || sim::has_code(b, {"G", 8})) s.diameter = false;
+  if (sim::machine_position_block(s, b)) return;
   for (const NcWord& w : b.words) {
     if ((w.address == "G" && w.has_value() && std::fabs(w.value - 91) < 1e-9) ||
         ((w.address == "U" || w.address == "W") && m.thread_cycle != ThreadCycle::kHeidenhainG31))

@@ -118,5 +118,8 @@ bool cycle99_call(State& s, const NcBlock& b);
 void hole_comment(State& s, const NcBlock& b);
 bool hole_cycle_block(State& s, const NcBlock& b);
 void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to);
+// A block of the machine's home or tool_change_position template (positions.cc): the tool goes
+// to a position the program does not state.
+bool machine_position_block(State& s, const NcBlock& b);
 
 }  // namespace clpost::sim

@@ -13,6 +13,7 @@ NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_
 void NcWriter::open_block() {
   open_ = true;
   line_.clear();
+  if (!block_delete_.empty()) line_.append(block_delete_);
   if (m_.block_numbers) {
     // "N120 ": the address, the number, a blank.
     line_.append(m_.block_address);

@@ -40,6 +40,8 @@ class NcWriter {
   void comment(std::string_view text);
   // A line written verbatim (INSERT), without block number.
   void raw_line(std::string_view text);
+  // Every block from now on starts with `mark` (block delete, "/"); empty: none.
+  void set_block_delete(std::string_view mark) { block_delete_ = mark; }
 
   const Machine& machine() const { return m_; }
 
@@ -62,8 +64,9 @@ class NcWriter {
   // block, no copy. The block number is put first as the block opens; end_block() takes it out
   // again for a block that gets none (block_skip), which is rare.
   BlockBuffer line_;
-  size_t words_at_ = 0;  // where the words start in line_
-  bool open_ = false;    // a block has words
+  size_t words_at_ = 0;       // where the words start in line_
+  bool open_ = false;         // a block has words
+  std::string block_delete_;  // OPSKIP: the mark every block starts with
   int next_number_;
 };
 
