@@ -83,6 +83,7 @@ PostOutcome post_file(const PostRequest& req) {
     ClReader reader(input.get(), diags);
     PostSummary summary = post(reader, *req.machine, *sink, diags, req.options, on_thread);
     out.holes = std::move(summary.holes);
+    out.cycle_time = std::move(summary.cycle_time);
     out.stats = summary.stats;
     out.units = summary.units;
     out.bytes_in = summary.bytes_in;

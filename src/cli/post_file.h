@@ -41,6 +41,7 @@ struct PostOutcome {
   size_t bytes_out = 0;
   std::string verify_report;  // with PostRequest::verify
   std::vector<Hole> holes;    // the holes written (CYCLE/DRILL …), for verify
+  CycleTime cycle_time;       // the tool list and estimated cycle time
 };
 
 PostOutcome post_file(const PostRequest& req);

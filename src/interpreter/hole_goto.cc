@@ -102,6 +102,7 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   ensure_started(s);
   ++s.stats.motions;
   const TemplateWrite r = write_hole(s.prog, h);
+  time_hole(s, h);
   if (!r) error(s, st, st.loc, template_error(s.m, r));
   if (s.feed_given) s.prog.set_feed(s.feed, s.feed_mode);
   s.pos = cl_point(s.m, Vec2{0, h.retract});

@@ -31,6 +31,7 @@ class Interpreter {
   LengthUnit units() const { return state_->units; }
   // The holes written (CYCLE/DRILL …), for verify; moved out.
   std::vector<Hole> take_holes() { return std::move(state_->holes); }
+  const CycleTime& cycle_time() const { return state_->clock; }
 
  private:
   std::unique_ptr<PostState> state_;

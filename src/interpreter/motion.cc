@@ -37,7 +37,9 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
   const int e_r = static_cast<int>(m.cl_radial), e_z = static_cast<int>(m.cl_axial);
   // Sign of the permutation (e_z, e_r, third): cross(e_z, e_r) = +third when even.
   const bool even = (e_z + 1) % 3 == e_r;
-  s.prog.arc(target, center, (normal > 0) == even);
+  const bool ccw = (normal > 0) == even;
+  s.prog.arc(target, center, ccw);
+  time_arc(s, cl2(m, p), cl2(m, Point3{c.cx, c.cy, c.cz}), ccw);
   return true;
 }
 
@@ -70,9 +72,11 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   }
   if (s.rapid_next) {
     s.prog.rapid(lathe(s.m, p));
+    time_rapid(s, cl2(s.m, p));
   } else {
     if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
     s.prog.linear(lathe(s.m, p));
+    time_feed(s, cl2(s.m, p));
   }
   s.rapid_next = false;
   s.pos = p;
@@ -110,6 +114,7 @@ void from_stmt(PostState& s, const Statement& st) {
   if (!number_arg(s, st, 0, "X", p.x) || !number_arg(s, st, 1, "Y", p.y)) return;
   if (st.args.size() >= 3 && !number_arg(s, st, 2, "Z", p.z)) return;
   s.pos = p;
+  s.clock_at = cl2(s.m, p);  // the cycle time counts from the start position
 }
 
 void godlta_stmt(PostState& s, const Statement& st) {

@@ -18,6 +18,7 @@ bool write_position(PostState& s, const Statement& st, const TemplateSpec& t) {
   }
   // The tool is where the machine's position puts it: the next move writes both axes.
   s.prog.forget_modal();
+  s.clock_at.reset();
   return true;
 }
 

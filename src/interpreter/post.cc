@@ -23,6 +23,7 @@ PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& dia
   summary.units = interp.units();
   summary.bytes_in = reader.bytes_read();
   summary.holes = interp.take_holes();
+  summary.cycle_time = interp.cycle_time();
   return summary;
 }
 

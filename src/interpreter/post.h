@@ -23,6 +23,7 @@ struct PostSummary {
   LengthUnit units = LengthUnit::kMm;  // of the CL file (its last UNITS/, else the machine's)
   size_t bytes_in = 0;
   std::vector<Hole> holes;  // every hole on the spindle axis written, in order (verify)
+  CycleTime cycle_time;     // the tool list and estimated cycle time (cycle_time.h)
 };
 
 // Posts every statement `reader` delivers on machine `m`: the program to `out`, the diagnostics

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interpreter/cycle_time.h"
 #include "interpreter/hole_cycle.h"
 #include "interpreter/thread_sequence.h"
 #include "machine/machine.h"
@@ -94,6 +95,8 @@ struct PostState {
   bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
   std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
   std::vector<Hole> holes;              // every hole written, in order (verify)
+  CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
+  std::optional<Vec2> clock_at;         // where the clock's tool is (lathe frame), if known
   size_t y_warnings = 0;                // points off the lathe plane (warned once)
   std::vector<std::string> noted;       // keys of notes already given once
   ThreadSequence thread;                // the thread sequence being read, if any

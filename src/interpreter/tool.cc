@@ -41,6 +41,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   tool_change_position(s, st);
   s.tool.number = static_cast<int>(tool);
   s.tool.offset = offset;
+  time_tool_change(s);
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
     error(s, st, st.loc, template_error(s.m, r));
 }

@@ -101,6 +101,11 @@ struct Machine {
   int program_number = 1;
   std::string block_delete = "/";  // starts a block the operator may skip (OPSKIP)
 
+  // Cycle time (0: not known)
+  double rapid_x = 0;           // per minute along X (as a radius), output units
+  double rapid_z = 0;           // per minute along Z
+  double tool_change_time = 0;  // seconds
+
   std::map<std::string, NumberFormat> formats;  // by address; "default" for the others
   std::map<std::string, std::string> codes;     // rapid, linear, arc_cw, ... -> "G0", ...
   // Block templates (fmt replacement fields with named arguments), one NC line each.

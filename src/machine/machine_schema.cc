@@ -30,6 +30,7 @@ constexpr const char* kLim = "Limits";
 constexpr const char* kThr = "Threading";
 constexpr const char* kFacts = "Control facts";
 constexpr const char* kHoles = "Holes";
+constexpr const char* kTime = "Cycle time";
 
 // Every key of a post or machine file (sections in docs order).
 const KeySpec kKeys[] = {
@@ -154,6 +155,12 @@ const KeySpec kKeys[] = {
     {"holes.tap_turns_cw", kHoles, kBool, &M::tap_turns_cw,
      "the tap cycle turns the spindle clockwise itself (Haas G84): a left-hand tap (SPINDL/…,CCLW) "
      "is then written as moves"},
+    {"time.rapid_x", kTime, kNumber, &M::rapid_x,
+     "rapid rate along X (as a radius), per minute, output units; 0: rapids are not timed", 0, 1e7},
+    {"time.rapid_z", kTime, kNumber, &M::rapid_z,
+     "rapid rate along Z, per minute, output units; 0: rapids are not timed", 0, 1e7},
+    {"time.tool_change", kTime, kNumber, &M::tool_change_time,
+     "seconds a tool change takes (turret index), added for every LOADTL", 0, 3600},
 };
 
 const FormatKeySpec kFormatKeys[] = {
