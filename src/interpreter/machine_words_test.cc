@@ -99,5 +99,40 @@ TEST(MachineWords, CoolantWordsAfterTheCoolantAreNotDroppedSilently) {
             "               ^\n");
 }
 
+// Sequence numbers only where a tool change begins; long comments wrapped; long blocks refused.
+constexpr const char* kTwoTools =
+    "LOADTL/1\nRAPID\nGOTO/10,0,5\nPPRINT a comment that is rather long\nLOADTL/2\nFINI\n";
+
+TEST(MachineWords, SequenceNumbersAtToolChanges) {
+  Posted p = post(kTwoTools, load("generic-lathe", {"block_numbers.enabled=true",
+                                                    "block_numbers.at_tool_changes=true"}));
+  EXPECT_EQ(p.nc, std::string(kGenericStart) +
+                      "N10 T0101\nG0 X20. Z5.\n(a comment that is rather long)\nN20 T0202\nM30\n"
+                      "%\n");
+}
+
+TEST(MachineWords, LongCommentsAreWrappedAtABlank) {
+  Posted p = post(kTwoTools, load("generic-lathe", {"comments.max_length=12"}));
+  EXPECT_EQ(p.nc, std::string(kGenericStart) +
+                      "T0101\nG0 X20. Z5.\n(a comment)\n(that is)\n(rather long)\nT0202\nM30\n"
+                      "%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl: warning: 1 comments longer than comments.max_length 12 of machine "
+            "'generic-lathe' were wrapped onto more comment blocks\n");
+  // A word longer than the limit is cut.
+  Posted q = post("PPRINT ABCDEFGHIJ\nFINI\n", load("generic-lathe", {"comments.max_length=4"}));
+  EXPECT_EQ(q.nc, std::string(kGenericStart) + "(ABCD)\n(EFGH)\n(IJ)\nM30\n%\n");
+}
+
+TEST(MachineWords, ABlockLongerThanTheMachineTakesIsAnError) {
+  // "G18 G21 G40 G90" (line 3) is the first block longer than 14 characters.
+  Posted p = post(kTwoTools, load("generic-lathe", {"output.max_line_length=14"}));
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_NE(p.diags.find("t.cl: error: 2 blocks are longer than output.max_line_length 14 of "
+                         "machine 'generic-lathe', the first at NC line 3"),
+            std::string::npos)
+      << p.diags;
+}
+
 }  // namespace
 }  // namespace clpost

@@ -100,6 +100,17 @@ void finish_program(PostState& s) {
   ensure_started(s);
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
+  const NcWriter& w = s.prog.writer();
+  if (w.wrapped_comments() > 0)
+    s.diags.warning(SourceLoc{}, {},
+                    fmt::format("{} comments longer than comments.max_length {} of machine '{}' "
+                                "were wrapped onto more comment blocks",
+                                w.wrapped_comments(), s.m.comment_max_length, s.m.name));
+  if (w.long_lines() > 0)
+    s.diags.error(SourceLoc{}, {},
+                  fmt::format("{} blocks are longer than output.max_line_length {} of machine "
+                              "'{}', the first at NC line {}",
+                              w.long_lines(), s.m.max_line_length, s.m.name, w.first_long_line()));
   s.ended = true;
 }
 

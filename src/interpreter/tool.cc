@@ -38,6 +38,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
     offset = static_cast<int>(o.number);
   }
   ensure_started(s);
+  s.prog.writer().number_next();
   tool_change_position(s, st);
   s.tool.number = static_cast<int>(tool);
   s.tool.offset = offset;

@@ -89,8 +89,11 @@ struct Machine {
   std::string comment_open = "(";
   std::string comment_close = ")";
   bool comment_upper = false;            // upper-case comment text
+  int comment_max_length = 0;            // longer comment text is wrapped (0: no limit)
+  int max_line_length = 0;               // a longer block is an error (0: no limit)
   std::string comment_forbidden = "()";  // characters removed from comment text
   bool block_numbers = false;
+  bool numbers_at_tool_changes = false;  // number only the first block of each tool change
   std::string block_address = "N";
   int block_start = 10;
   int block_step = 10;

@@ -69,10 +69,20 @@ const KeySpec kKeys[] = {
     {"comments.upper_case", kOut, kBool, &M::comment_upper, "upper-case comment text"},
     {"comments.forbidden", kOut, kString, &M::comment_forbidden,
      "characters removed from comment text"},
+    {"comments.max_length", kOut, kInt, &M::comment_max_length,
+     "the longest comment text the control takes: longer text is wrapped onto more comment "
+     "blocks, with a warning (0: no limit)",
+     0, 10000},
+    {"output.max_line_length", kOut, kInt, &M::max_line_length,
+     "the longest block the control takes, in characters: a longer one is an error (0: no limit)",
+     0, 100000},
     {"output.block_delete", kOut, kString, &M::block_delete,
      "what starts a block the operator may skip, between OPSKIP/ON and OPSKIP/OFF (`/`); empty: "
      "OPSKIP is a warning"},
     {"block_numbers.enabled", kOut, kBool, &M::block_numbers, "number the blocks"},
+    {"block_numbers.at_tool_changes", kOut, kBool, &M::numbers_at_tool_changes,
+     "with `enabled`, number only the first block of each tool change: the sequence numbers an "
+     "operator restarts a program at"},
     {"block_numbers.address", kOut, kString, &M::block_address, "the block number's address"},
     {"block_numbers.start", kOut, kInt, &M::block_start, "the first block number", 0, 99999999},
     {"block_numbers.step", kOut, kInt, &M::block_step, "the step between block numbers", 1, 1000},
