@@ -187,7 +187,7 @@ std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, 
     if (!tt.text.empty()) line += ", " + tt.text;
     out.push_back(std::move(line));
   }
-  out.push_back(fmt::format("cycle time {} ({} tool changes){}", time_text(t.total()), changes,
+  out.push_back(fmt::format("cycle time {}, {} tool changes{}", time_text(t.total()), changes,
                             t.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : ""));
   return out;
 }

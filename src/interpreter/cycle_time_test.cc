@@ -69,7 +69,7 @@ TEST(CycleTime, EveryKindOfMoveByHand) {
   EXPECT_EQ(cycle_time_lines(t, LengthUnit::kMm, true),
             (std::vector<std::string>{"T1 offset 1: 0:32.8, X0.000 to X40.000, Z-20.000 to "
                                       "Z10.000 mm",
-                                      "cycle time 0:32.8 (1 tool changes)"}));
+                                      "cycle time 0:32.8, 1 tool changes"}));
 }
 
 TEST(CycleTime, PerToolAndUntimedRapids) {
@@ -85,7 +85,23 @@ TEST(CycleTime, PerToolAndUntimedRapids) {
   EXPECT_EQ(t.tools[1].offset, 12);
   EXPECT_TRUE(t.rapids_untimed);
   EXPECT_EQ(cycle_time_lines(t, LengthUnit::kMm, true).back(),
-            "cycle time 0:07.5 (2 tool changes); rapids not timed: no time.rapid_x/rapid_z");
+            "cycle time 0:07.5, 2 tool changes; rapids not timed: no time.rapid_x/rapid_z");
+}
+
+// A machine with a program_header writes the list after its program start (generic-lathe's
+// three lines), the template once per line, as comment text (no parentheses inside).
+TEST(CycleTime, ProgramHeader) {
+  std::vector<std::string> sets = kRates;
+  sets.push_back("templates.program_header=[\"({text})\"]");
+  PostedText r =
+      post_text("FEDRAT/100,MMPM\nLOADTL/1\nFROM/10,0,5\nGOTO/10,0,-10\nPPRINT (done)\nFINI\n",
+                load("generic-lathe", sets), "t.cl");
+  // 15 mm at 100 mm/min: 9 s, and the tool change 2 s.
+  EXPECT_EQ(r.program,
+            "%\nO0001\nG18 G21 G40 G90\n"
+            "(T1 offset 1: 0:11.0, X20.000 to X20.000, Z-10.000 to Z-10.000 mm)\n"
+            "(cycle time 0:11.0, 1 tool changes)\n"
+            "T0101\nG1 X20. Z-10. G94 F100.\n(done)\nM30\n%\n");
 }
 
 TEST(CycleTime, TimeText) {

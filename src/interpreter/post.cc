@@ -1,15 +1,61 @@
 // The library's entry point (post.h).
 #include "interpreter/post.h"
 
+#include <fmt/format.h>
+
 #include "interpreter/interpreter.h"
 #include "writer/nc_program.h"
 
 namespace clpost {
 
+namespace {
+
+// The machine's program_header: the tool list and cycle time, the template once per line.
+std::string header_text(const Machine& m, const PostSummary& summary, Diagnostics& diags) {
+  std::string text;
+  for (const std::string& line :
+       cycle_time_lines(summary.cycle_time, summary.units, m.diameter_output)) {
+    TemplateValues v(tmpl::kProgramHeader);
+    v.set_text(0, NcWriter::comment_text(m, line));
+    for (const std::string& t : m.templates.at(std::string(tmpl::kProgramHeader.name))) {
+      const TemplateValues::Line l = v.format(t);
+      if (!l.ok) {
+        diags.error({}, {},
+                    fmt::format("machine '{}': template 'program_header' cannot be written: {}",
+                                m.name, l.error));
+        return {};
+      }
+      text += l.text + m.line_ending;
+    }
+  }
+  return text;
+}
+
+// `body` with the header after the program start's lines.
+void write_with_header(const Machine& m, const std::string& body, const std::string& header,
+                       Sink& out) {
+  size_t at = 0;
+  const size_t lines = m.templates.at(std::string(tmpl::kProgramStart.name)).size();
+  for (size_t i = 0; i < lines && at != std::string::npos; ++i) {
+    at = body.find('\n', at);
+    if (at != std::string::npos) ++at;
+  }
+  if (at == std::string::npos) at = body.size();
+  out.write(std::string_view(body).substr(0, at));
+  out.write(header);
+  out.write(std::string_view(body).substr(at));
+}
+
+}  // namespace
+
 PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& diags,
                  const PostOptions& opts, const std::function<void(const ThreadPlan&)>& on_thread) {
   PostSummary summary;
-  NcProgram prog(m, out);
+  // A header needs the whole program's times: the program waits in memory for it.
+  auto h = m.templates.find(std::string(tmpl::kProgramHeader.name));
+  const bool header = h != m.templates.end() && !h->second.empty();
+  StringSink body;
+  NcProgram prog(m, header ? static_cast<Sink&>(body) : out);
   Interpreter interp(m, prog, diags, opts);
   if (on_thread) interp.on_thread(on_thread);
   Statement st;
@@ -24,6 +70,7 @@ PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& dia
   summary.bytes_in = reader.bytes_read();
   summary.holes = interp.take_holes();
   summary.cycle_time = interp.cycle_time();
+  if (header) write_with_header(m, body.out, header_text(m, summary, diags), out);
   return summary;
 }
 

@@ -276,6 +276,7 @@ const TemplateSpec* const kTemplates[] = {
     &tmpl::kAuxfun,
     &tmpl::kPrefun,
     &tmpl::kSelctl,
+    &tmpl::kProgramHeader,
 };
 
 template <typename T, typename N>

@@ -218,6 +218,8 @@ inline constexpr TemplateField kHoleFields[] = {
     {"lead", kText, "tap lead per revolution, format F"},
     {"rpm", kText, "spindle speed, format S"}};
 
+inline constexpr TemplateField kHeaderFields[] = {
+    {"text", kText, "one line of the tool list or the cycle time, as comment text"}};
 inline constexpr TemplateField kCodeFields[] = {
     {"code", kWhole, "the number the CL gave (AUXFUN/8: 8)"}};
 
@@ -326,6 +328,15 @@ inline constexpr TemplateSpec kHoleBore{
     {},
     "CYCLE/BORE, REAM"};
 
+inline constexpr TemplateSpec kProgramHeader{
+    "program_header",
+    kHeaderFields,
+    kOptional,
+    "the tool list and the estimated cycle time after the program start, the template once per "
+    "line (`({text})`); the program is then kept in memory until its end",
+    {},
+    {},
+    "any program"};
 inline constexpr TemplateSpec kHome{
     "home",
     {},

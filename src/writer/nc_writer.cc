@@ -65,18 +65,22 @@ void NcWriter::end_block() {
   open_ = false;
 }
 
-void NcWriter::comment(std::string_view text) {
+std::string NcWriter::comment_text(const Machine& m, std::string_view text) {
   std::string clean;
   clean.reserve(text.size());
   for (char c : text) {
-    if (m_.comment_forbidden.find(c) != std::string::npos) continue;
+    if (m.comment_forbidden.find(c) != std::string::npos) continue;
     if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-    clean += m_.comment_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+    clean += m.comment_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
   }
   // Trim: a comment should read as the CL wrote it, without padding.
   size_t b = clean.find_first_not_of(' ');
   size_t e = clean.find_last_not_of(' ');
-  clean = b == std::string::npos ? std::string() : clean.substr(b, e - b + 1);
+  return b == std::string::npos ? std::string() : clean.substr(b, e - b + 1);
+}
+
+void NcWriter::comment(std::string_view text) {
+  std::string clean = comment_text(m_, text);
   const size_t max = static_cast<size_t>(m_.comment_max_length);
   if (max > 0 && clean.size() > max) {
     ++wrapped_comments_;

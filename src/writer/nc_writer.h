@@ -40,6 +40,9 @@ class NcWriter {
   void comment(std::string_view text);
   // A line written verbatim (INSERT), without block number.
   void raw_line(std::string_view text);
+  // `text` as machine `m` writes comment text: forbidden characters removed, control characters
+  // as blanks, upper case when it asks, trimmed.
+  static std::string comment_text(const Machine& m, std::string_view text);
   // Every block from now on starts with `mark` (block delete, "/"); empty: none.
   void set_block_delete(std::string_view mark) { block_delete_ = mark; }
   // With block_numbers.at_tool_changes: the next block gets a number (a tool change begins).
