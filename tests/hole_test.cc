@@ -155,3 +155,44 @@ TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
 
 }  // namespace
 }  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// Verify of the whole path (verify/path_verify.h) on the part's generic-lathe golden: the turning
+// cut to Z-42 (CL line 19) written to Z-41, and the rapid back to Z2 (CL line 22) written as a
+// feed, each fail naming the CL line and the point.
+RunResult verify_generic(const std::string& from, const std::string& to, std::string& path) {
+  std::string text = read_file(source_dir() + "/samples/golden/generic-lathe/part-turned.nc");
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  path = temp_dir() + "/part-turned.nc";
+  write_file(path, text);
+  return run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+             " verify -m generic-lathe " + quote(path) + " --cl " + kPart);
+}
+
+TEST(WholePath, AnEditedCoordinateFails) {
+  std::string p;
+  RunResult r = verify_generic("N110 G1 Z-42.\n", "N110 G1 Z-41.\n", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            p + ":12:1: error: motion at " + kPart +
+                ":19: X24.0000 Z-42.0000 is not reached by the program in order");
+  EXPECT_NE(r.out.find("FAILED: 2 of 17 CL end points not reached as the CL moves"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(WholePath, ARapidWrittenAsAFeedFails) {
+  std::string p;
+  RunResult r = verify_generic("N130 G0 Z2.\n", "N130 G1 Z2.\n", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            p + ":15:1: error: motion at " + kPart +
+                ":22: X32.0000 Z2.0000 is reached by a feed move, the CL rapids there");
+}
+
+}  // namespace
+}  // namespace clpost::test

@@ -16,13 +16,13 @@
 namespace clpost {
 
 VerifyOutcome verify_program(reader::LineSource& src, const std::string& program_name,
-                             const std::vector<ThreadPlan>& plans, const std::vector<Hole>* holes,
+                             const std::vector<ThreadPlan>& plans, const ClExpected* cl,
                              const std::string& plan_name, const Machine& m, double tolerance) {
   VerifyOutcome out;
   Diagnostics diags(program_name);
   Simulation sim;
   SimOptions so;
-  so.keep_moves = false;
+  so.keep_moves = cl != nullptr && !cl->motions.empty();
   if (simulate_nc(src, m, diags, sim, so)) {
     VerifyOptions vo;
     vo.tolerance = tolerance;
@@ -30,10 +30,11 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
     VerifyReport report;
     out.ok = verify_cuts(plans, sim, m, vo, diags, report);
     out.report = verify_report_text(report, plans, program_name, m, vo);
-    if (holes != nullptr) {
-      const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
-      out.ok = out.ok && hr.problems == 0;
-      out.report += hr.text;
+    if (cl != nullptr) {
+      const HoleReport hr = verify_holes(cl->holes, sim.holes, m, vo, diags);
+      const PathReport pr = verify_path(cl->motions, sim.path, m, vo, diags);
+      out.ok = out.ok && hr.problems == 0 && pr.problems == 0;
+      out.report += hr.text + pr.text;
     }
   } else {
     out.report =
@@ -72,13 +73,14 @@ bool plans_from_json(const std::string& path, const Machine& m, std::vector<Thre
 VerifyOutcome verify_files(const std::string& program, const std::string& cl,
                            const std::string& plan_json, const Machine& m, double tolerance) {
   std::vector<ThreadPlan> plans;
-  std::vector<Hole> holes;
+  ClExpected expected;
   if (cl.empty()) {
     VerifyOutcome out;
     if (!plans_from_json(plan_json, m, plans, out)) return out;
   } else {
     PostOutcome posted = plans_of(cl, m, plans);
-    holes = std::move(posted.holes);
+    expected.holes = std::move(posted.holes);
+    expected.motions = std::move(posted.motions);
     if (!posted.ok) {
       VerifyOutcome out;
       out.errors = posted.errors;
@@ -98,7 +100,7 @@ VerifyOutcome verify_files(const std::string& program, const std::string& cl,
   }
   reader::LineSource src(f.get());
   VerifyOutcome out =
-      verify_program(src, display_name(program), plans, cl.empty() ? nullptr : &holes,
+      verify_program(src, display_name(program), plans, cl.empty() ? nullptr : &expected,
                      cl.empty() ? plan_json : display_name(cl), m, tolerance);
   // The CL file's own notes and warnings were shown when it was posted; verify is about the
   // program.

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "emitters/hole_output.h"
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
 #include "reader/line_source.h"
+#include "verify/path_verify.h"
 
 namespace clpost {
 
@@ -20,10 +20,10 @@ struct VerifyOutcome {
 };
 
 // Verifies the program read from `src` (shown as `program_name`) against `plans`.
-// `holes`: the CL's holes on the spindle axis, compared with the program's; nullptr (a plan
-// JSON, which has none): the program's holes are not checked.
+// `cl`: the CL's holes and motion end points, compared with the program's; nullptr (a plan
+// JSON, which has neither): only the threads are checked.
 VerifyOutcome verify_program(reader::LineSource& src, const std::string& program_name,
-                             const std::vector<ThreadPlan>& plans, const std::vector<Hole>* holes,
+                             const std::vector<ThreadPlan>& plans, const ClExpected* cl,
                              const std::string& plan_name, const Machine& m, double tolerance);
 
 // The verify subcommand: the plans from the CL file `cl` (posted on `m`, nothing written) or,

@@ -61,6 +61,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   check_plane(s, st, p);
   ensure_started(s);
   ++s.stats.motions;
+  if (s.opts.keep_motions) s.motions.push_back({st.loc.line, cl2(s.m, p), s.rapid_next});
   if (s.circle) {
     const Circle c = *s.circle;
     s.circle.reset();

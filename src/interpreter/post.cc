@@ -70,6 +70,7 @@ PostSummary post(ClReader& reader, const Machine& m, Sink& out, Diagnostics& dia
   summary.bytes_in = reader.bytes_read();
   summary.holes = interp.take_holes();
   summary.cycle_time = interp.cycle_time();
+  summary.motions = interp.take_motions();
   if (header) write_with_header(m, body.out, header_text(m, summary, diags), out);
   return summary;
 }

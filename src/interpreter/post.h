@@ -22,8 +22,9 @@ struct PostSummary {
   PostStats stats;
   LengthUnit units = LengthUnit::kMm;  // of the CL file (its last UNITS/, else the machine's)
   size_t bytes_in = 0;
-  std::vector<Hole> holes;  // every hole on the spindle axis written, in order (verify)
-  CycleTime cycle_time;     // the tool list and estimated cycle time (cycle_time.h)
+  std::vector<Hole> holes;        // every hole on the spindle axis written, in order (verify)
+  CycleTime cycle_time;           // the tool list and estimated cycle time (cycle_time.h)
+  std::vector<ClMotion> motions;  // with PostOptions::keep_motions (verify)
 };
 
 // Posts every statement `reader` delivers on machine `m`: the program to `out`, the diagnostics

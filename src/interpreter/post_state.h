@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interpreter/cl_motion.h"
 #include "interpreter/cycle_time.h"
 #include "interpreter/hole_cycle.h"
 #include "interpreter/thread_sequence.h"
@@ -21,7 +22,8 @@
 namespace clpost {
 
 struct PostOptions {
-  bool strict = false;  // unknown statements are errors, not warnings
+  bool strict = false;        // unknown statements are errors, not warnings
+  bool keep_motions = false;  // collect every motion's end point (verify of the whole path)
 };
 
 struct PostStats {
@@ -96,6 +98,7 @@ struct PostState {
   std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
   std::vector<Hole> holes;              // every hole written, in order (verify)
   CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
+  std::vector<ClMotion> motions;        // with PostOptions::keep_motions
   std::optional<Vec2> clock_at;         // where the clock's tool is (lathe frame), if known
   size_t y_warnings = 0;                // points off the lathe plane (warned once)
   std::vector<std::string> noted;       // keys of notes already given once

@@ -65,7 +65,15 @@ std::optional<int> State::whole(double v, std::string_view name, int lo, int hi,
 }
 
 void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
-  // The first move starts where the tool happens to be: not drawn, not a cut's start.
+  // The first move starts where the tool happens to be: not drawn, not a cut's start; where it
+  // ends is kept apart (verify of the path).
+  if (opt.keep_moves && !pos_known) {
+    Move mv;
+    mv.kind = kind;
+    mv.from = mv.to = to;
+    mv.line = static_cast<int>(line);
+    out.path.entries.push_back({out.path.moves.size(), mv});
+  }
   if (opt.keep_moves && pos_known) {
     Move mv;
     mv.kind = kind;
