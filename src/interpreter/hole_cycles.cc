@@ -4,6 +4,7 @@
 //                     CYCLE/DEEP,DEPTH,d,STEP|PECK,p,MMPM,f,CLEAR,c   CYCLE/TAP,DEPTH,d,TPI,n,…
 //   SolidWorks CAM    CYCLE/DEEP2,FEDTO,d,1STPECK,p1,SUBPECK,p,MMPM,f,RAPTO,c,RTRCTO,r[,DWELL,t]
 //   CATIA             CYCLE/TAP,d,c   (total depth, clearance; the feed in force)
+//   NX                CYCLE/DRILL[,DEEP|BRKCHP],RAPTO,c,FEDTO,d,MMPM,f[,STEP,p]
 // then a GOTO per hole (its top), until CYCLE/OFF. CYCLE/INIT (SolidWorks) says nothing.
 // A hole must lie on the lathe's centre line: drilling off it needs live tooling.
 #include <fmt/format.h>
@@ -56,6 +57,11 @@ bool read_hole_word(PostState& s, const Statement& st, size_t& i, HoleCycle& c) 
   if (!a.is_word()) {
     error(s, st, a.loc, fmt::format("CYCLE/{}: unexpected '{}'", c.word, a.text));
     return false;
+  }
+  // NX: CYCLE/DRILL,DEEP,… or DRILL,BRKCHP,…: the kind as a word of DRILL.
+  if (const std::optional<HoleKind> k = kind_of(a.text); k && c.kind == HoleKind::kDrill) {
+    c.kind = *k;
+    return true;
   }
   if (!value_after(s, st, i, v)) return false;
   if (a.is("DEPTH") || a.is("FEDTO")) {

@@ -187,6 +187,18 @@ TEST(HoleCycles, ChipBreakingAndDwell) {
             "G80\nG18\n");
 }
 
+// NX names the kind as a word of DRILL: CYCLE/DRILL,DEEP,RAPTO,c,FEDTO,d,MMPM,f,STEP,p.
+TEST(HoleCycles, NxDeepDrill) {
+  Posted p = post(
+      "SPINDL/800,RPM,CLW\nRAPID\nGOTO/0,0,10\n"
+      "CYCLE/DRILL,DEEP,RAPTO,2.0000,FEDTO,20.0000,MMPM,80.0000,STEP,5\nGOTO/0,0,0\nCYCLE/OFF\n"
+      "FINI\n",
+      load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: PECK DRILLING TO Z-20.)\nG98 G83 X0. Z-20. R2. Q5. F80.\nG80\n");
+}
+
 TEST(HoleCycles, BadCycleWords) {
   Posted p = post("CYCLE/DRILL,DEPTH,MMPM,100\nCYCLE/DEEP,FROB,3\nCYCLE/BORE,MMPM,5\nFINI\n",
                   load("generic-lathe"));
