@@ -199,6 +199,18 @@ TEST(HoleCycles, NxDeepDrill) {
             "(HOLE AT CL LINE 5: PECK DRILLING TO Z-20.)\nG98 G83 X0. Z-20. R2. Q5. F80.\nG80\n");
 }
 
+TEST(HoleCycles, AThousandPecksAtMost) {
+  // From the R plane Z2 to Z-20: 22 / 0.01 = 2200 pecks.
+  Posted p = post(
+      "SPINDL/800,RPM,CLW\nRAPID\nGOTO/0,0,10\nCYCLE/DEEP,DEPTH,20,STEP,0.01,MMPM,80,CLEAR,2\n"
+      "GOTO/0,0,0\nCYCLE/OFF\nFINI\n",
+      load("generic-lathe"));
+  EXPECT_NE(p.diags.find("t.cl:5:1: error: CYCLE/DEEP hole at CL line 5: pecks of 0.01 over 22 "
+                         "make 2200 pecks, more than 1000"),
+            std::string::npos)
+      << p.diags;
+}
+
 TEST(HoleCycles, BadCycleWords) {
   Posted p = post("CYCLE/DRILL,DEPTH,MMPM,100\nCYCLE/DEEP,FROB,3\nCYCLE/BORE,MMPM,5\nFINI\n",
                   load("generic-lathe"));

@@ -91,6 +91,14 @@ bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   h.first_peck = c.first_peck;
   h.peck = c.kind == HoleKind::kDeep || c.kind == HoleKind::kChipBreak ? c.peck : 0;
   h.dwell = c.dwell;
+  const double pecks = h.peck > 0 ? std::ceil(std::fabs(h.bottom - h.r) / h.peck) : 1;
+  if (pecks > static_cast<double>(kMaxHolePecks)) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/{} {}: pecks of {} over {} make {} pecks, more than {}", c.word,
+                      h.name, num_text(h.peck), num_text(std::fabs(h.bottom - h.r)),
+                      num_text(pecks), kMaxHolePecks));
+    return false;
+  }
   return hole_feed(s, st, c, h);
 }
 
