@@ -18,13 +18,18 @@ ToolTime& current(PostState& s) {
   CycleTime& c = s.clock;
   if (c.tools.empty()) c.tools.emplace_back();
   ToolTime& t = c.tools.back();
-  if (t.tool == s.tool.number && t.text.empty()) t.text = s.tool.text;
-  if (t.tool == s.tool.number && !t.nose_radius) t.nose_radius = s.tool.nose_radius;
+  // Tool data may come after the tool change (PPRINT TOOL:): taken when it is there. Every move
+  // comes here: the common case (no text) is one test.
+  if (!s.tool.text.empty() && t.text.empty() && t.tool == s.tool.number) t.text = s.tool.text;
+  if (s.tool.nose_radius && !t.nose_radius && t.tool == s.tool.number)
+    t.nose_radius = s.tool.nose_radius;
   return t;
 }
 
-void reach(PostState& s, Vec2 p) {
+// The tool reaches `p` after `seconds` more (one look-up of the tool per move).
+void reach(PostState& s, Vec2 p, double seconds = 0) {
   ToolTime& t = current(s);
+  t.seconds += seconds;
   t.x_min = std::min(t.x_min, p.x);
   t.x_max = std::max(t.x_max, p.x);
   t.z_min = std::min(t.z_min, p.z);
@@ -60,17 +65,20 @@ double feed_minutes(const PostState& s, double length, double r0, double r1, dou
   return piece(0, 1);
 }
 
+// sqrt rather than hypot: every GOTO comes here, and CL values are far from overflow.
 double length(Vec2 a, Vec2 b) {
-  return std::hypot(b.x - a.x, b.z - a.z);
+  const double dx = b.x - a.x, dz = b.z - a.z;
+  return std::sqrt(dx * dx + dz * dz);
 }
 
 // A feed move from where the clock is to `to` at feed `f`.
 void feed_to(PostState& s, Vec2 to, double f, FeedMode mode) {
+  double seconds = 0;
   if (s.clock_at) {
     const Vec2 a = *s.clock_at;
-    add(s, 60 * feed_minutes(s, length(a, to), a.x, to.x, f, mode));
+    seconds = 60 * feed_minutes(s, length(a, to), a.x, to.x, f, mode);
   }
-  reach(s, to);
+  reach(s, to, seconds);
 }
 
 }  // namespace
@@ -86,13 +94,14 @@ void time_tool_change(PostState& s) {
 }
 
 void time_rapid(PostState& s, Vec2 to) {
+  double seconds = 0;
   if (s.clock_at) {
     const double dx = std::fabs(to.x - s.clock_at->x), dz = std::fabs(to.z - s.clock_at->z);
     const double rx = s.m.rapid_x, rz = s.m.rapid_z;
     if ((dx > 0 && rx <= 0) || (dz > 0 && rz <= 0)) s.clock.rapids_untimed = true;
-    add(s, 60 * std::max(rx > 0 ? dx / rx : 0, rz > 0 ? dz / rz : 0));
+    seconds = 60 * std::max(rx > 0 ? dx / rx : 0, rz > 0 ? dz / rz : 0);
   }
-  reach(s, to);
+  reach(s, to, seconds);
 }
 
 void time_feed(PostState& s, Vec2 to) {
@@ -115,8 +124,7 @@ void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
     const double rad = center.x + r * std::sin(u);
     minutes += feed_minutes(s, r * std::fabs(sweep) / kSteps, rad, rad, s.feed, s.feed_mode);
   }
-  add(s, 60 * minutes);
-  reach(s, to);
+  reach(s, to, 60 * minutes);
 }
 
 void time_dwell(PostState& s, double seconds) {
@@ -127,7 +135,7 @@ void time_sync(PostState& s, Vec2 to, double lead, double rpm) {
   if (s.clock_at && lead > 0 && rpm > 0) {
     const double travel =
         std::max(std::fabs(to.x - s.clock_at->x), std::fabs(to.z - s.clock_at->z));
-    add(s, 60 * travel / (lead * rpm));
+    return reach(s, to, 60 * travel / (lead * rpm));
   }
   reach(s, to);
 }

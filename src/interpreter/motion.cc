@@ -71,13 +71,14 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
       return;
     }
   }
+  const Vec2 v = cl2(s.m, p);
   if (s.rapid_next) {
-    s.prog.rapid(lathe(s.m, p));
-    time_rapid(s, cl2(s.m, p));
+    s.prog.rapid(LathePoint{v.x, v.z});
+    time_rapid(s, v);
   } else {
     if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
-    s.prog.linear(lathe(s.m, p));
-    time_feed(s, cl2(s.m, p));
+    s.prog.linear(LathePoint{v.x, v.z});
+    time_feed(s, v);
   }
   s.rapid_next = false;
   s.pos = p;
