@@ -286,7 +286,8 @@ TEST(Batch, ReportJson) {
           "/a-turning.nc\", \"status\": \"warnings\", \"errors\": 0, \"warnings\": 1, "
           "\"statements\": 5, \"motions\": 1, \"threads\": 0, \"passes\": 0, \"bytes_in\": " +
           n(a) + ", \"bytes_out\": " + n(oa) +
-          ", \"seconds\": T, \"diagnostics\": [\n"
+          ", \"seconds\": T, \"cycle_time\": {\"seconds\": T, \"rapids_timed\": true, "
+          "\"tools\": []}, \"diagnostics\": [\n"
           "      {\"severity\": \"warning\", \"line\": 3, \"column\": 1, \"message\": "
           "\"unknown statement 'FROB' written as a comment\"}\n"
           "    ]},\n"
@@ -296,7 +297,7 @@ TEST(Batch, ReportJson) {
           "\"errors\": 1, \"warnings\": 0, \"statements\": 8, \"motions\": 1, \"threads\": 0, "
           "\"passes\": 0, \"bytes_in\": " +
           n(b) +
-          ", \"bytes_out\": 0, \"seconds\": T, "
+          ", \"bytes_out\": 0, \"seconds\": T, \"cycle_time\": null, "
           "\"diagnostics\": [\n"
           "      {\"severity\": \"error\", \"line\": 7, \"column\": 11, \"message\": "
           "\"invalid number '-1.2.3'\"}\n"
@@ -306,7 +307,9 @@ TEST(Batch, ReportJson) {
           "/c-thread.nc\", \"status\": \"ok\", \"errors\": 0, \"warnings\": 0, "
           "\"statements\": 15, \"motions\": 22, \"threads\": 1, \"passes\": 5, \"bytes_in\": " +
           n(c) + ", \"bytes_out\": " + n(oc) +
-          ", \"seconds\": T, \"diagnostics\": []}\n"
+          ", \"seconds\": T, \"cycle_time\": {\"seconds\": T, \"rapids_timed\": true, "
+          "\"tools\": [{\"tool\": 7, \"offset\": 7, \"seconds\": T, \"text\": \"\"}]}, "
+          "\"diagnostics\": []}\n"
           "  ]\n"
           "}\n");
 }

@@ -8,6 +8,24 @@
 
 namespace clpost {
 
+namespace {
+
+// {"seconds": total, "rapids_timed": bool, "tools": [{"tool", "offset", "seconds", "text"}]}
+std::string cycle_time_json(const CycleTime& t) {
+  std::string o = fmt::format("{{\"seconds\": {:.3f}, \"rapids_timed\": {}, \"tools\": [",
+                              t.total(), t.rapids_untimed ? "false" : "true");
+  bool first = true;
+  for (const ToolTime& tt : t.tools) {
+    if (tt.tool < 0 && tt.seconds == 0) continue;
+    o += fmt::format("{}{{\"tool\": {}, \"offset\": {}, \"seconds\": {:.3f}, \"text\": {}}}",
+                     first ? "" : ", ", tt.tool, tt.offset, tt.seconds, json_string(tt.text));
+    first = false;
+  }
+  return o + "]}";
+}
+
+}  // namespace
+
 const char* status_name(FileStatus s) {
   switch (s) {
     case FileStatus::kOk:
@@ -44,12 +62,12 @@ std::string batch_report_json(const BatchReportInfo& info, const BatchSummary& s
                    "{}\n    {{\"input\": {}, \"output\": {}, \"status\": \"{}\", \"errors\": {}, "
                    "\"warnings\": {}, \"statements\": {}, \"motions\": {}, \"threads\": {}, "
                    "\"passes\": {}, \"bytes_in\": {}, \"bytes_out\": {}, \"seconds\": {:.6f}, "
-                   "\"diagnostics\": [",
+                   "\"cycle_time\": {}, \"diagnostics\": [",
                    i ? "," : "", json_string(r.item.input),
                    written ? json_string(r.item.output) : std::string("null"),
                    status_name(r.status), p.errors, p.warnings, p.stats.statements, p.stats.motions,
                    p.stats.threads, p.stats.passes, p.bytes_in, written ? p.bytes_out : 0,
-                   r.seconds);
+                   r.seconds, written ? cycle_time_json(p.cycle_time) : std::string("null"));
     for (size_t k = 0; k < p.kept.size(); ++k) {
       const Diagnostic& d = p.kept[k];
       fmt::format_to(out,

@@ -358,6 +358,9 @@ int run_cli(int argc, char** argv) {
       print_err(fmt::format("{}: {} ({} errors, {} warnings, {} statements, {} threads)\n",
                             display_name(in), r.ok ? "ok" : "failed", r.errors, r.warnings,
                             r.stats.statements, r.stats.threads));
+      if (r.ok)
+        for (const std::string& l : cycle_time_lines(r.cycle_time, r.units, m.diameter_output))
+          print_err("  " + l + "\n");
     }
     return rc;
   }

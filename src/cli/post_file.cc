@@ -81,7 +81,12 @@ PostOutcome post_file(const PostRequest& req) {
       if (req.verify) plans.push_back(p);
     };
     ClReader reader(input.get(), diags);
-    const PostSummary summary = post(reader, *req.machine, *sink, diags, req.options, on_thread);
+    PostOptions options = req.options;
+    options.keep_motions = options.keep_motions || req.verify;
+    PostSummary summary = post(reader, *req.machine, *sink, diags, options, on_thread);
+    out.holes = std::move(summary.holes);
+    out.motions = std::move(summary.motions);
+    out.cycle_time = std::move(summary.cycle_time);
     out.stats = summary.stats;
     out.units = summary.units;
     out.bytes_in = summary.bytes_in;
@@ -91,9 +96,11 @@ PostOutcome post_file(const PostRequest& req) {
   if (req.verify && !diags.has_errors()) {
     reader::LineSource src{std::string_view(program)};
     const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
-    VerifyOutcome v = verify_program(src, name, plans, display_name(req.input), *req.machine,
-                                     req.verify_tolerance);
+    const ClExpected expected{out.holes, out.motions};
+    VerifyOutcome v = verify_program(src, name, plans, &expected, display_name(req.input),
+                                     *req.machine, req.verify_tolerance);
     out.verify_report = std::move(v.report);
+    out.motions = {};  // compared: a batch keeps every outcome
     verify_diagnostics = std::move(v.diagnostics);
     verify_failed = !v.ok;
     out.errors += v.errors;
@@ -128,7 +135,9 @@ PostOutcome post_file(const PostRequest& req) {
 
 PostOutcome plans_of(const std::string& cl, const Machine& m, std::vector<ThreadPlan>& plans,
                      std::string* program) {
-  PostRequest req{cl, "", &m, PostOptions{}, [&](const ThreadPlan& p) { plans.push_back(p); }};
+  PostOptions options;
+  options.keep_motions = true;  // verify compares them
+  PostRequest req{cl, "", &m, options, [&](const ThreadPlan& p) { plans.push_back(p); }};
   req.program = program;
   return post_file(req);
 }

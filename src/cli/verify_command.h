@@ -7,6 +7,7 @@
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
 #include "reader/line_source.h"
+#include "verify/path_verify.h"
 
 namespace clpost {
 
@@ -19,9 +20,11 @@ struct VerifyOutcome {
 };
 
 // Verifies the program read from `src` (shown as `program_name`) against `plans`.
+// `cl`: the CL's holes and motion end points, compared with the program's; nullptr (a plan
+// JSON, which has neither): only the threads are checked.
 VerifyOutcome verify_program(reader::LineSource& src, const std::string& program_name,
-                             const std::vector<ThreadPlan>& plans, const std::string& plan_name,
-                             const Machine& m, double tolerance);
+                             const std::vector<ThreadPlan>& plans, const ClExpected* cl,
+                             const std::string& plan_name, const Machine& m, double tolerance);
 
 // The verify subcommand: the plans from the CL file `cl` (posted on `m`, nothing written) or,
 // when `cl` is empty, from `plan_json` (clpost plan --format json); the program read from the

@@ -1,5 +1,6 @@
-// CYCLE/: thread undercuts (CYCLE/UNDCUT, undercut.cc); other cycles are refused with their
-// holes, so that no hole is posted as a plain move.
+// CYCLE/: thread undercuts (CYCLE/UNDCUT, undercut.cc), holes on the spindle axis (CYCLE/DRILL …,
+// hole_cycles.cc); other cycles are refused with their holes, so that no hole is posted as a
+// plain move.
 #include <fmt/format.h>
 
 #include "interpreter/statement_table.h"
@@ -9,10 +10,13 @@ namespace clpost {
 void cycle_stmt(PostState& s, const Statement& st) {
   if (!st.args.empty() && st.args[0].is("OFF")) {
     s.in_cycle = false;
+    s.hole_cycle.reset();
     return;
   }
   if (!st.args.empty() && st.args[0].is("UNDCUT")) return undercut_stmt(s, st);
   if (!st.args.empty() && st.args[0].is("LATHTHRD")) return lathe_thread_cycle(s, st);
+  if (!st.args.empty() && st.args[0].is_word() && is_hole_cycle(st.args[0].text))
+    return hole_cycle_stmt(s, st);
   s.in_cycle = true;  // its hole positions are not posted as plain moves
   const std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
   error(s, st, st.loc,

@@ -29,6 +29,10 @@ class Interpreter {
   void on_thread(std::function<void(const ThreadPlan&)> cb) { state_->on_thread = std::move(cb); }
   const PostStats& stats() const { return state_->stats; }
   LengthUnit units() const { return state_->units; }
+  // The holes written (CYCLE/DRILL …), for verify; moved out.
+  std::vector<Hole> take_holes() { return std::move(state_->holes); }
+  const CycleTime& cycle_time() const { return state_->clock; }
+  std::vector<ClMotion> take_motions() { return std::move(state_->motions); }
 
  private:
   std::unique_ptr<PostState> state_;

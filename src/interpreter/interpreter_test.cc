@@ -212,12 +212,14 @@ TEST(Interpreter, StatementsAfterFiniAreIgnoredWithANote) {
   EXPECT_EQ(p.diags, "t.cl:2:1: note: statements after FINI are ignored\n  RAPID\n  ^\n");
 }
 
-TEST(Interpreter, DrillingCyclesAreRefusedNotDropped) {
-  Posted p = post("CYCLE/DRILL,5,MMPM,100\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n", generic());
+// Hole cycles on the spindle axis are posted (hole_cycles_test.cc); other cycles are refused
+// with their holes.
+TEST(Interpreter, OtherCyclesAreRefusedNotDropped) {
+  Posted p = post("CYCLE/THREADMILLING,5,MMPM,100\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n", generic());
   EXPECT_EQ(p.errors, 1u);
-  EXPECT_NE(
-      p.diags.find("t.cl:1:1: error: CYCLE/DRILL is not supported on machine 'generic-lathe'"),
-      std::string::npos);
+  EXPECT_NE(p.diags.find(
+                "t.cl:1:1: error: CYCLE/THREADMILLING is not supported on machine 'generic-lathe'"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -36,7 +36,9 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
   const int e_r = static_cast<int>(s.radial), e_z = static_cast<int>(s.m.cl_axial);
   // Sign of the permutation (e_z, e_r, third): cross(e_z, e_r) = +third when even.
   const bool even = (e_z + 1) % 3 == e_r;
-  s.prog.arc(target, center, (normal > 0) == even);
+  const bool ccw = (normal > 0) == even;
+  s.prog.arc(target, center, ccw);
+  time_arc(s, cl2(s, p), cl2(s, Point3{c.cx, c.cy, c.cz}), ccw);
   return true;
 }
 
@@ -51,6 +53,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   }
   ensure_started(s);
   ++s.stats.motions;
+  if (s.opts.keep_motions) s.motions.push_back({st.loc.line, cl2(s, p), s.rapid_next});
   if (s.circle) {
     const Circle c = *s.circle;
     s.circle.reset();
@@ -60,11 +63,14 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
       return;
     }
   }
+  const Vec2 v = cl2(s, p);
   if (s.rapid_next) {
-    s.prog.rapid(lathe(s, p));
+    s.prog.rapid(LathePoint{v.x, v.z});
+    time_rapid(s, v);
   } else {
     if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
-    s.prog.linear(lathe(s, p));
+    s.prog.linear(LathePoint{v.x, v.z});
+    time_feed(s, v);
   }
   s.rapid_next = false;
   if (s.pos) s.last_dir = Point3{p.x - s.pos->x, p.y - s.pos->y, p.z - s.pos->z};
@@ -92,6 +98,7 @@ void goto_stmt(PostState& s, const Statement& st) {
     }
     note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
+  if (s.hole_cycle) return hole_goto(s, st, p);
   if (s.in_cycle) return;  // reported at CYCLE/
   if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
@@ -104,6 +111,7 @@ void from_stmt(PostState& s, const Statement& st) {
   if (st.args.size() >= 3 && !number_arg(s, st, 2, "Z", p.z)) return;
   if (!frame_point(s, st, p)) return;
   s.pos = p;
+  s.clock_at = cl2(s, p);  // the cycle time counts from the start position
 }
 
 void godlta_stmt(PostState& s, const Statement& st) {

@@ -24,12 +24,32 @@ struct PostSummary {
   PostStats stats;
   LengthUnit units = LengthUnit::kMm;  // of the CL file (its last UNITS/, else the machine's)
   size_t bytes_in = 0;
+  std::vector<Hole> holes;        // every hole on the spindle axis written, in order (verify)
+  CycleTime cycle_time;           // the tool list and estimated cycle time (cycle_time.h)
+  std::vector<ClMotion> motions;  // with PostOptions::keep_motions (verify)
 };
 
-// How the input ended, said once: a file without a statement is an error; one that ends without
-// FINI is closed with a warning, unless the reader gave up before its end (post() calls it).
-PostSummary end_post(Interpreter& interp, Diagnostics& diags, bool reader_gave_up,
-                     uint32_t last_line, size_t bytes_in);
+// One post in progress, the part of post() that does not depend on the reader: the program
+// (held in memory when the machine has a program_header, which needs the whole program's times),
+// the interpreter, and how the input ended, said once.
+class PostRun {
+ public:
+  PostRun(const Machine& m, Sink& out, Diagnostics& diags, const PostOptions& opts,
+          const std::function<void(const ThreadPlan&)>& on_thread);
+  void statement(const Statement& st) { interp_.statement(st); }
+  // A file without a statement is an error; one that ends without FINI is closed with a warning,
+  // unless the reader gave up before its end. Then the header, if any, and the program.
+  PostSummary end(bool reader_gave_up, uint32_t last_line, size_t bytes_in);
+
+ private:
+  const Machine& m_;
+  Sink& out_;
+  Diagnostics& diags_;
+  bool header_;
+  StringSink body_;
+  NcProgram prog_;
+  Interpreter interp_;
+};
 
 // Posts every statement `reader` delivers on machine `m`: the program to `out`, the diagnostics
 // to `diags` (the reader's own among them), every thread plan to `on_thread` as it is planned.
@@ -40,12 +60,10 @@ template <class Reader = ClReader>
 PostSummary post(Reader& reader, const Machine& m, Sink& out, Diagnostics& diags,
                  const PostOptions& opts = {},
                  const std::function<void(const ThreadPlan&)>& on_thread = {}) {
-  NcProgram prog(m, out);
-  Interpreter interp(m, prog, diags, opts);
-  if (on_thread) interp.on_thread(on_thread);
+  PostRun run(m, out, diags, opts, on_thread);
   Statement st;
-  while (reader.next(st)) interp.statement(st);
-  return end_post(interp, diags, reader.gave_up(), reader.line(), reader.bytes_read());
+  while (reader.next(st)) run.statement(st);
+  return run.end(reader.gave_up(), reader.line(), reader.bytes_read());
 }
 
 // post() of CL text in memory, collected: the program, the diagnostics and every plan.

@@ -9,6 +9,9 @@
 #include <string_view>
 #include <vector>
 
+#include "interpreter/cl_motion.h"
+#include "interpreter/cycle_time.h"
+#include "interpreter/hole_cycle.h"
 #include "interpreter/thread_sequence.h"
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
@@ -19,7 +22,8 @@
 namespace clpost {
 
 struct PostOptions {
-  bool strict = false;  // unknown statements are errors, not warnings
+  bool strict = false;        // unknown statements are errors, not warnings
+  bool keep_motions = false;  // collect every motion's end point (verify of the whole path)
 };
 
 struct PostStats {
@@ -106,9 +110,14 @@ struct PostState {
   // SYN/'word','replacement': major words read as others; an empty replacement: ignored.
   std::vector<std::pair<std::string, std::string>> synonyms;
   bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
-  size_t y_warnings = 0;  // points off the lathe plane (warned once)
-  std::vector<std::string> noted;  // keys of notes already given once
-  ThreadSequence thread;           // the thread sequence being read, if any
+  std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
+  std::vector<Hole> holes;              // every hole written, in order (verify)
+  CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
+  std::vector<ClMotion> motions;        // with PostOptions::keep_motions
+  std::optional<Vec2> clock_at;         // where the clock's tool is (lathe frame), if known
+  size_t y_warnings = 0;                // points off the lathe plane (warned once)
+  std::vector<std::string> noted;       // keys of notes already given once
+  ThreadSequence thread;                // the thread sequence being read, if any
 };
 
 // Diagnostics at statement `st` (its own line text is shown).

@@ -1,4 +1,4 @@
-// Program words: UNITS, COOLNT, CUTCOM, STOP/OPSTOP, END, FINI, GOHOME, MULTAX, spline motion
+// Program words: UNITS, COOLNT, CUTCOM, STOP/OPSTOP, END, FINI, MULTAX, spline motion
 // (refused) and the records a lathe program skips.
 #include <fmt/format.h>
 
@@ -54,6 +54,11 @@ void coolnt_stmt(PostState& s, const Statement& st) {
                       a.text));
     return;
   }
+  // COOLNT/FLOOD,HIGH, COOLNT/ON,2 …: what follows the coolant is said, not dropped silently.
+  if (st.args.size() > 1)
+    warning(s, st, st.args[1].loc,
+            fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text,
+                        st.source.substr(st.source.find(st.args[1].text))));
   ensure_started(s);
   s.prog.coolant(c);
 }
@@ -95,15 +100,22 @@ void finish_program(PostState& s) {
   ensure_started(s);
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
+  const NcWriter& w = s.prog.writer();
+  if (w.wrapped_comments() > 0)
+    s.diags.warning(SourceLoc{}, {},
+                    fmt::format("{} comments longer than comments.max_length {} of machine '{}' "
+                                "were wrapped onto more comment blocks",
+                                w.wrapped_comments(), s.m.comment_max_length, s.m.name));
+  if (w.long_lines() > 0)
+    s.diags.error(SourceLoc{}, {},
+                  fmt::format("{} blocks are longer than output.max_line_length {} of machine "
+                              "'{}', the first at NC line {}",
+                              w.long_lines(), s.m.max_line_length, s.m.name, w.first_long_line()));
   s.ended = true;
 }
 
 void fini_stmt(PostState& s, const Statement&) {
   finish_program(s);
-}
-
-void gohome_stmt(PostState& s, const Statement& st) {
-  warning(s, st, st.loc, "GOHOME: this machine has no home position in its machine file; ignored");
 }
 
 void multax_stmt(PostState& s, const Statement& st) {

@@ -213,6 +213,7 @@ void delay_stmt(PostState& s, const Statement& st) {
   }
   ensure_started(s);
   const TemplateWrite r = s.prog.dwell(seconds, revolutions);
+  if (r && seconds) time_dwell(s, *seconds);
   if (r) return;
   if (r.status != TemplateWrite::Status::kNoValue)
     return error(s, st, st.loc, template_error(s.m, r));

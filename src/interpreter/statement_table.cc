@@ -49,6 +49,12 @@ constexpr StatementEntry kEntries[] = {
     {"END", end_stmt},
     {"FINI", fini_stmt},
     {"GOHOME", gohome_stmt},
+    // Pass-through words (machine_words.cc)
+    {"AUXFUN", auxfun_stmt},
+    {"PREFUN", prefun_stmt},
+    {"SELCTL", selctl_stmt},
+    {"CLAMP", clamp_stmt},
+    {"OPSKIP", opskip_stmt},
     {"MULTAX", multax_stmt},
     {"NURBS", spline_stmt},
     {"KNOT", spline_stmt},

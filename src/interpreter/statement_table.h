@@ -43,7 +43,15 @@ void cutcom_stmt(PostState& s, const Statement& st);
 void stop_stmt(PostState& s, const Statement& st);
 void end_stmt(PostState& s, const Statement& st);
 void fini_stmt(PostState& s, const Statement& st);
-void gohome_stmt(PostState& s, const Statement& st);
+void gohome_stmt(PostState& s, const Statement& st);  // positions.cc
+// Before a tool change: the machine's tool_change_position, when it has one (positions.cc).
+void tool_change_position(PostState& s, const Statement& st);
+// Pass-through words (machine_words.cc).
+void auxfun_stmt(PostState& s, const Statement& st);
+void prefun_stmt(PostState& s, const Statement& st);
+void selctl_stmt(PostState& s, const Statement& st);
+void clamp_stmt(PostState& s, const Statement& st);
+void opskip_stmt(PostState& s, const Statement& st);
 void multax_stmt(PostState& s, const Statement& st);
 void spline_stmt(PostState& s, const Statement& st);
 void skipped_stmt(PostState& s, const Statement& st);
@@ -76,6 +84,11 @@ const std::string* synonym_of(const PostState& s, std::string_view major);
 inline bool is_motion_word(std::string_view w) {
   return w == "GOFWD" || w == "GOLFT" || w == "GORGT" || w == "GOBACK";
 }
+// Hole-making cycles (hole_cycles.cc): CYCLE/DRILL, DEEP, … and CYCLE/INIT; the GOTO of a hole
+// while one is in force (hole_goto.cc).
+bool is_hole_cycle(std::string_view word);
+void hole_cycle_stmt(PostState& s, const Statement& st);
+void hole_goto(PostState& s, const Statement& st, Point3 p);
 
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);

@@ -109,6 +109,7 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
                              plan.passes.size(), plan.pitch.pitch, plan.depth));
   EmitContext ctx{s.diags, lines, s.thread.rpm, s.feed, s.feed_mode};
   s.thread.emitter->emit(plan, s.prog, ctx);
+  time_thread(s, plan, s.thread.rpm);
   s.stats.motions += plan.passes.size() * 4;
   s.pos = cl_point(s, plan.end_position);  // where the plan leaves the tool
   end_thread_spindle(s);
@@ -134,6 +135,7 @@ bool cut_path_move(PostState& s, const ThreadPlan& plan, const ThreadPass& pass,
   }
   if (!check_thread_feed(s, pass.from, pass.to, lead.lead, at)) return false;
   s.prog.thread(LathePoint{pass.to.x, pass.to.z}, lead);
+  time_sync(s, pass.to, lead.lead, s.thread.rpm);
   ++s.stats.motions;
   ++s.stats.passes;
   return true;

@@ -41,8 +41,11 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   // The tool data written before this change (CATIA: TOOLNO, TPRINT, PPRINT TOOL:) describe it.
   s.tool = std::move(s.next_tool);
   s.next_tool = ToolInfo{};
+  s.prog.writer().number_next();
+  tool_change_position(s, st);
   s.tool.number = static_cast<int>(tool);
   s.tool.offset = offset;
+  time_tool_change(s);
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
     error(s, st, st.loc, template_error(s.m, r));
 }

@@ -5,30 +5,16 @@
 #include <gtest/gtest.h>
 
 #include "interpreter/post.h"
+#include "interpreter/post_test_util.h"
 #include "machine/machine_loader.h"
 #include "reader/cl_reader.h"
 
 namespace clpost {
 namespace {
 
-struct Posted {
-  std::string nc;
-  std::string diags;
-  size_t errors = 0;
-};
-
-Machine load(const std::string& name) {
-  Machine m;
-  std::string errors;
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, {"block_numbers.enabled=false"}, m, errors))
-      << errors;
-  return m;
-}
-
-Posted post(const std::string& cl, const Machine& m) {
-  PostedText r = post_text(cl, m, "t.cl");
-  return Posted{r.program, r.diags.render_all(), r.diags.error_count()};
-}
+using test::load;
+using test::post;
+using test::Posted;
 
 // Tool 3 loaded, feed 0.1 mm/rev, tool at X30 Z5 (diameter), then `line` (line 6).
 std::string cl_with(const std::string& line, const std::string& tool = "LOADTL/3\n") {
@@ -157,7 +143,7 @@ TEST(Undercut, StatementErrors) {
             "  CYCLE/UNDCUT,DIAM,1,AT,-1,FORM,A\n"
             "  ^\n");
   // Other cycles are still refused.
-  EXPECT_EQ(post(cl_with("CYCLE/DRILL,5\nCYCLE/OFF"), m).errors, 1u);
+  EXPECT_EQ(post(cl_with("CYCLE/THREADMILLING,5\nCYCLE/OFF"), m).errors, 1u);
 }
 
 TEST(Undercut, Din76ContourFormA) {

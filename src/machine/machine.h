@@ -83,14 +83,22 @@ struct Machine {
   double haas_min_cut = 0;           // Haas setting 99, machine units
   double haas_chamfer = 0;           // Haas setting 95, in leads
 
+  // Holes on the spindle axis (CYCLE/DRILL …)
+  bool rigid_tapping = false;   // CYCLE/TAP uses hole_tap_rigid
+  double peck_clearance = 0.5;  // expanded pecks: re-entry clearance, chip-break back-off
+  bool tap_turns_cw = false;    // the tap cycle starts the spindle M3 itself (Haas G84)
+
   // Output
   std::string extension = ".nc";
   std::string line_ending = "\n";
   std::string comment_open = "(";
   std::string comment_close = ")";
   bool comment_upper = false;            // upper-case comment text
+  int comment_max_length = 0;            // longer comment text is wrapped (0: no limit)
+  int max_line_length = 0;               // a longer block is an error (0: no limit)
   std::string comment_forbidden = "()";  // characters removed from comment text
   bool block_numbers = false;
+  bool numbers_at_tool_changes = false;  // number only the first block of each tool change
   std::string block_address = "N";
   int block_start = 10;
   int block_step = 10;
@@ -99,6 +107,12 @@ struct Machine {
   bool modal_codes = true;                           // suppress repeated modal G codes
   bool modal_words = true;                           // suppress unchanged X/Z/F/S words
   int program_number = 1;
+  std::string block_delete = "/";  // starts a block the operator may skip (OPSKIP)
+
+  // Cycle time (0: not known)
+  double rapid_x = 0;           // per minute along X (as a radius), output units
+  double rapid_z = 0;           // per minute along Z
+  double tool_change_time = 0;  // seconds
 
   std::map<std::string, NumberFormat> formats;  // by address; "default" for the others
   std::map<std::string, std::string> codes;     // rapid, linear, arc_cw, ... -> "G0", ...

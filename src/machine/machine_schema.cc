@@ -31,6 +31,8 @@ constexpr const char* kOut = "Output";
 constexpr const char* kLim = "Limits";
 constexpr const char* kThr = "Threading";
 constexpr const char* kFacts = "Control facts";
+constexpr const char* kHoles = "Holes";
+constexpr const char* kTime = "Cycle time";
 
 // Every key of a post or machine file (sections in docs order).
 const KeySpec kKeys[] = {
@@ -78,7 +80,20 @@ const KeySpec kKeys[] = {
     {"comments.upper_case", kOut, kBool, &M::comment_upper, "upper-case comment text"},
     {"comments.forbidden", kOut, kString, &M::comment_forbidden,
      "characters removed from comment text"},
+    {"comments.max_length", kOut, kInt, &M::comment_max_length,
+     "the longest comment text the control takes: longer text is wrapped onto more comment "
+     "blocks, with a warning (0: no limit)",
+     0, 10000},
+    {"output.max_line_length", kOut, kInt, &M::max_line_length,
+     "the longest block the control takes, in characters: a longer one is an error (0: no limit)",
+     0, 100000},
+    {"output.block_delete", kOut, kString, &M::block_delete,
+     "what starts a block the operator may skip, between OPSKIP/ON and OPSKIP/OFF (`/`); empty: "
+     "OPSKIP is a warning"},
     {"block_numbers.enabled", kOut, kBool, &M::block_numbers, "number the blocks"},
+    {"block_numbers.at_tool_changes", kOut, kBool, &M::numbers_at_tool_changes,
+     "with `enabled`, number only the first block of each tool change: the sequence numbers an "
+     "operator restarts a program at"},
     {"block_numbers.address", kOut, kString, &M::block_address, "the block number's address"},
     {"block_numbers.start", kOut, kInt, &M::block_start, "the first block number", 0, 99999999},
     {"block_numbers.step", kOut, kInt, &M::block_step, "the step between block numbers", 1, 1000},
@@ -150,6 +165,23 @@ const KeySpec kKeys[] = {
      "Haas setting 99 (minimum cut), machine units", 0, 10},
     {"threading.haas_chamfer", kFacts, kNumber, &M::haas_chamfer,
      "Haas setting 95 (chamfer size), in leads", 0, 99},
+    {"holes.rigid_tapping", kHoles, kBool, &M::rigid_tapping,
+     "the spindle is synchronised for tapping: CYCLE/TAP uses template hole_tap_rigid (Fanuc "
+     "M29, LinuxCNC G33.1)"},
+    {"holes.peck_clearance", kHoles, kNumber, &M::peck_clearance,
+     "where moves written for pecks stop short of the last depth when they go back in, and how "
+     "far a chip-breaking peck backs off, output units (the control's own setting in a cycle: "
+     "Fanuc parameter 5114)",
+     0, 100},
+    {"holes.tap_turns_cw", kHoles, kBool, &M::tap_turns_cw,
+     "the tap cycle turns the spindle clockwise itself (Haas G84): a left-hand tap (SPINDL/…,CCLW) "
+     "is then written as moves"},
+    {"time.rapid_x", kTime, kNumber, &M::rapid_x,
+     "rapid rate along X (as a radius), per minute, output units; 0: rapids are not timed", 0, 1e7},
+    {"time.rapid_z", kTime, kNumber, &M::rapid_z,
+     "rapid rate along Z, per minute, output units; 0: rapids are not timed", 0, 1e7},
+    {"time.tool_change", kTime, kNumber, &M::tool_change_time,
+     "seconds a tool change takes (turret index), added for every LOADTL", 0, 3600},
 };
 
 const FormatKeySpec kFormatKeys[] = {
@@ -190,6 +222,8 @@ const NameSpec kCodes[] = {
     {"g31_h_minus", "HEIDENHAIN G31 flank offset H toward -Z (-X on a face); default 1"},
     {"g31_h_plus", "HEIDENHAIN G31 flank offset H toward +Z; default 2"},
     {"g31_h_alternating", "HEIDENHAIN G31 alternating flank offset H; default 3"},
+    {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
+    {"clamp_off", "CLAMP/OFF"},
 };
 
 const NameSpec kFormats[] = {
@@ -221,14 +255,25 @@ const NameSpec kFormats[] = {
     {"cycle99_depth", "CYCLE99 APP, ROP, TDEP, FAL, VRT"},
     {"cycle99_angle", "CYCLE99 IANG, NSP"},
     {"cycle99_lead", "CYCLE99 PIT"},
+    {"hole_peck", "peck depth of the hole templates (Fanuc Q: 0.001 mm, decimals 0, scale 1000)"},
 };
 
 const TemplateSpec* const kTemplates[] = {
-    &tmpl::kProgramStart,  &tmpl::kProgramEnd,  &tmpl::kToolChange,  &tmpl::kSpindleRpm,
-    &tmpl::kSpindleCss,    &tmpl::kSpindleStop, &tmpl::kDwell,       &tmpl::kCycle99,
-    &tmpl::kCycle98,       &tmpl::kCycle96,     &tmpl::kFanucG76,    &tmpl::kHaasG76,
-    &tmpl::kG92,           &tmpl::kG92Next,     &tmpl::kLinuxcncG76, &tmpl::kLinuxcncG76Taper,
-    &tmpl::kHeidenhainG31,
+    &tmpl::kProgramStart,  &tmpl::kProgramEnd,
+    &tmpl::kToolChange,    &tmpl::kSpindleRpm,
+    &tmpl::kSpindleCss,    &tmpl::kSpindleStop,
+    &tmpl::kDwell,         &tmpl::kCycle99,
+    &tmpl::kCycle98,       &tmpl::kCycle96,
+    &tmpl::kFanucG76,      &tmpl::kHaasG76,
+    &tmpl::kG92,           &tmpl::kG92Next,
+    &tmpl::kLinuxcncG76,   &tmpl::kLinuxcncG76Taper,
+    &tmpl::kHeidenhainG31, &tmpl::kHoleDrill,
+    &tmpl::kHoleDwell,     &tmpl::kHolePeck,
+    &tmpl::kHoleChipBreak, &tmpl::kHoleTap,
+    &tmpl::kHoleTapRigid,  &tmpl::kHoleBore,
+    &tmpl::kHome,          &tmpl::kToolChangePosition,
+    &tmpl::kAuxfun,        &tmpl::kPrefun,
+    &tmpl::kSelctl,        &tmpl::kProgramHeader,
 };
 
 template <typename T, typename N>

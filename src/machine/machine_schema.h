@@ -224,6 +224,28 @@ inline constexpr TemplateField kHeidenhainG31Fields[] = {
     {"x2", kText, "contour end X"},
     {"z2", kText, "contour end Z"}};
 
+inline constexpr TemplateField kHoleFields[] = {
+    {"x", kText, "hole X (0: on the centre line), format X"},
+    {"z", kText, "hole bottom Z, format Z"},
+    {"top", kText, "hole top Z (the CL hole point), format Z"},
+    {"r", kText, "R plane Z (top plus the clearance), format Z"},
+    {"r_inc", kText, "R plane relative to the start Z, format Z"},
+    {"start", kText, "start Z: where the tool is before the cycle and returns to, format Z"},
+    {"safety", kText, "R plane distance from the top (the clearance), format Z"},
+    {"depth", kText, "hole depth below the top, format Z"},
+    {"peck", kText, "peck depth, format hole_peck"},
+    {"dwell", kText, "dwell at the bottom in seconds, format dwell"},
+    {"dwell_ms", kWhole, "dwell at the bottom in milliseconds"},
+    {"feed", kText, "feed, format F (a tap: its lead per revolution)"},
+    {"feed_mode", kText, "codes.feed_per_rev or feed_per_min, as the feed"},
+    {"lead", kText, "tap lead per revolution, format F"},
+    {"rpm", kText, "spindle speed, format S"}};
+
+inline constexpr TemplateField kHeaderFields[] = {
+    {"text", kText, "one line of the tool list or the cycle time, as comment text"}};
+inline constexpr TemplateField kCodeFields[] = {
+    {"code", kWhole, "the number the CL gave (AUXFUN/8: 8)"}};
+
 using enum Need;
 
 inline constexpr TemplateSpec kProgramStart{"program_start", kProgramStartFields, kAlways,
@@ -279,6 +301,109 @@ inline constexpr TemplateSpec kLinuxcncG76Taper{
 inline constexpr TemplateSpec kHeidenhainG31{
     "heidenhain_g31",  kHeidenhainG31Fields, kSetting, "HEIDENHAIN G31 with its contour and G80",
     "threading.cycle", "heidenhain_g31"};
+
+inline constexpr TemplateSpec kHoleDrill{
+    "hole_drill",
+    kHoleFields,
+    kOptional,
+    "drilling to depth, rapid out (G81); without it G0/G1 moves",
+    {},
+    {},
+    "CYCLE/DRILL, REAM without DWELL"};
+inline constexpr TemplateSpec kHoleDwell{
+    "hole_dwell",
+    kHoleFields,
+    kOptional,
+    "drilling with a dwell at the bottom (G82); without it G0/G1/G4 moves",
+    {},
+    {},
+    "CYCLE/DRILL,…,DWELL,t"};
+inline constexpr TemplateSpec kHolePeck{
+    "hole_peck",
+    kHoleFields,
+    kOptional,
+    "peck drilling, full retract after each peck (G83); without it G0/G1 moves",
+    {},
+    {},
+    "CYCLE/DEEP, DEEP2"};
+inline constexpr TemplateSpec kHoleChipBreak{
+    "hole_chip_break",
+    kHoleFields,
+    kOptional,
+    "chip-breaking peck drilling, short retract (G73); without it G0/G1 moves",
+    {},
+    {},
+    "CYCLE/BRKCHP"};
+inline constexpr TemplateSpec kHoleTap{
+    "hole_tap",
+    kHoleFields,
+    kOptional,
+    "tapping with a floating holder (G84); without it G1 moves with the spindle reversed",
+    {},
+    {},
+    "CYCLE/TAP"};
+inline constexpr TemplateSpec kHoleTapRigid{
+    "hole_tap_rigid",
+    kHoleFields,
+    kOptional,
+    "rigid tapping (M29 G84, G33.1), used when holes.rigid_tapping; else hole_tap",
+    {},
+    {},
+    "CYCLE/TAP"};
+inline constexpr TemplateSpec kHoleBore{
+    "hole_bore",
+    kHoleFields,
+    kOptional,
+    "boring or reaming, feed in and feed out (G85); without it G1 moves",
+    {},
+    {},
+    "CYCLE/BORE, REAM"};
+
+inline constexpr TemplateSpec kProgramHeader{
+    "program_header",
+    kHeaderFields,
+    kOptional,
+    "the tool list and the estimated cycle time after the program start, the template once per "
+    "line (`({text})`); the program is then kept in memory until its end",
+    {},
+    {},
+    "any program"};
+inline constexpr TemplateSpec kHome{
+    "home",
+    {},
+    kOptional,
+    "the machine's home return, one line per axis in the order it moves them (`G28 U0.`, `G28 "
+    "W0.`); without it GOHOME/x,y,z is a rapid move there, GOHOME alone a warning",
+    {},
+    {},
+    "GOHOME"};
+inline constexpr TemplateSpec kToolChangePosition{
+    "tool_change_position",
+    {},
+    kOptional,
+    "where the turret goes before every tool change (a home return or a safe position); "
+    "without it the tool changes where it is",
+    {},
+    {},
+    "LOADTL"};
+inline constexpr TemplateSpec kAuxfun{
+    "auxfun",  kCodeFields,
+    kOptional, "an M code the CL asks for; without it AUXFUN is a warning and a comment",
+    {},        {},
+    "AUXFUN/n"};
+inline constexpr TemplateSpec kPrefun{
+    "prefun",  kCodeFields,
+    kOptional, "a G code the CL asks for; without it PREFUN is a warning and a comment",
+    {},        {},
+    "PREFUN/n"};
+inline constexpr TemplateSpec kSelctl{
+    "selctl",
+    kCodeFields,
+    kOptional,
+    "SELCTL/n: select control n (a channel or turret); without it a warning and a comment",
+    {},
+    {},
+    "SELCTL/n"};
 
 }  // namespace tmpl
 

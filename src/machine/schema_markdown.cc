@@ -23,6 +23,13 @@ constexpr Section kSections[] = {
     {"Control facts", "Control facts (`threading.*`)",
      "Facts of the control that a cycle's words do not carry (they live in the control's "
      "parameters or settings, so the machine file states them)."},
+    {"Cycle time", "Cycle time (`time.*`)",
+     "What the estimated cycle time (`clpost check`, the batch `--report`) needs beyond the CL: "
+     "how fast the machine rapids and changes tools."},
+    {"Holes", "Holes on the spindle axis (`holes.*`)",
+     "`CYCLE/DRILL|DEEP|BRKCHP|TAP|BORE|REAM` with the hole's GOTO on the centre line: written "
+     "with the `hole_*` templates when the machine has them and the cycle says what the CL says, "
+     "else as G0/G1/G4 moves with the reason in a comment."},
 };
 
 std::string range(double lo, double hi) {

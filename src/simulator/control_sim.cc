@@ -65,7 +65,15 @@ std::optional<int> State::whole(double v, std::string_view name, int lo, int hi,
 }
 
 void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
-  // The first move starts where the tool happens to be: not drawn, not a cut's start.
+  // The first move starts where the tool happens to be: not drawn, not a cut's start; where it
+  // ends is kept apart (verify of the path).
+  if (opt.keep_moves && !pos_known) {
+    Move mv;
+    mv.kind = kind;
+    mv.from = mv.to = to;
+    mv.line = static_cast<int>(line);
+    out.path.entries.push_back({out.path.moves.size(), mv});
+  }
   if (opt.keep_moves && pos_known) {
     Move mv;
     mv.kind = kind;
@@ -76,6 +84,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.lead = lead;
     out.path.moves.push_back(mv);
   }
+  if (hole_open) sim::follow_hole(*this, kind, pos, to);
   pos = to;
   pos_known = true;
 }
@@ -223,11 +232,13 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
     s.out.units = LengthUnit::kMm;
   if (!c.inch_line.empty() && s.line_text.find(c.inch_line) != std::string_view::npos)
     s.out.units = LengthUnit::kInch;
+  sim::hole_comment(s, b);
   if (b.words.empty() && b.calls.empty()) return;
   if (sim::has_code(b, c.metric)) s.out.units = LengthUnit::kMm;
   if (sim::has_code(b, c.inch)) s.out.units = LengthUnit::kInch;
   if (sim::has_code(b, {"DIAMON", {}}) || sim::has_code(b, {"G", 7})) s.diameter = true;
   if (sim::has_code(b, {"DIAMOF", {}}) || sim::has_code(b, {"G", 8})) s.diameter = false;
+  if (sim::machine_position_block(s, b)) return;
   for (const NcWord& w : b.words) {
     if ((w.address == "G" && w.has_value() && std::fabs(w.value - 91) < 1e-9) ||
         ((w.address == "U" || w.address == "W") && m.thread_cycle != ThreadCycle::kHeidenhainG31))
@@ -236,6 +247,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
                                         w.address, w.text));
   }
   if (sim::has_code(b, c.dwell)) return;  // G4 X/P/F is a time, not a position
+  if (sim::hole_cycle_block(s, b)) return;
   // Cycles.
   if (!b.calls.empty()) {
     if (sim::cycle99_call(s, b) || sim::cycle98_call(s, b)) return;

@@ -33,12 +33,28 @@ struct NcCut {
   bool fixed_end = false;  // G76 with threading.cycle_pass_end: fixed (every pass ends at Z)
 };
 
+// One hole drilled on the spindle axis: a hole cycle's block (its words read back through the
+// machine's hole_* template and expanded with hole_feed_ends, the law the emitter writes by) or
+// the moves after a "hole at CL line N" comment. CL frame, program units.
+struct SimHole {
+  uint32_t cl_line = 0;  // from the program's "hole at CL line N" comment (0: none)
+  uint32_t line = 0;     // NC line of the cycle block or of the first feed into the hole
+  std::string line_text;
+  std::string source;             // "G83", "CYCLE83", "moves"
+  double r = 0;                   // where the first feed into the hole starts
+  double dir = -1;                // the way the feeds go in
+  std::vector<double> feed_ends;  // Z where each feed into the hole ends, each deeper
+  bool left = false;              // the tool came back to the R plane after the last feed
+  std::optional<double> lead;     // a tap's lead, when the cycle says it
+};
+
 struct Simulation {
   LengthUnit units = LengthUnit::kMm;
   Toolpath path;            // every move (only when SimOptions::keep_moves)
   std::vector<NcCut> cuts;  // in cutting order
   size_t blocks = 0;        // NC lines read
   int calls = 0;            // cycle calls expanded
+  std::vector<SimHole> holes;
 };
 
 struct SimOptions {

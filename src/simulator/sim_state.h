@@ -87,6 +87,7 @@ struct State {
   FanucFirstBlock fanuc_first;
   PendingG31 g31;
   G92Modal g92;
+  bool hole_open = false;  // out.holes.back() is followed move by move (a "hole at" comment)
 
   // A word's value as the control reads it: divided by the format's scale (machine formats).
   double value(const NcWord& w, std::string_view format) const;
@@ -113,5 +114,13 @@ bool linuxcnc_g76(State& s, const NcBlock& b);
 bool heidenhain_g31(State& s, const NcBlock& b);  // G31, its contour, G80
 bool cycle99_call(State& s, const NcBlock& b);
 bool cycle98_call(State& s, const NcBlock& b);
+// Holes (hole_cycles.cc): a "hole at CL line N" comment opens a hole followed move by move;
+// a block of one of the machine's hole_* templates is that hole's cycle, expanded.
+void hole_comment(State& s, const NcBlock& b);
+bool hole_cycle_block(State& s, const NcBlock& b);
+void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to);
+// A block of the machine's home or tool_change_position template (positions.cc): the tool goes
+// to a position the program does not state.
+bool machine_position_block(State& s, const NcBlock& b);
 
 }  // namespace clpost::sim

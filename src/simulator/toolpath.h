@@ -31,6 +31,13 @@ struct Move {
 struct Toolpath {
   LengthUnit units = LengthUnit::kMm;
   std::vector<Move> moves;
+  // Moves from where the tool happened to be (the first, or after a machine position such as
+  // G28): not drawn; each comes before moves[before].
+  struct Entry {
+    size_t before;
+    Move move;
+  };
+  std::vector<Entry> entries;
 };
 
 // One thread's passes seen in its cross-section: where the tool's V sits at each pass.

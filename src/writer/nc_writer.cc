@@ -13,7 +13,10 @@ NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_
 void NcWriter::open_block() {
   open_ = true;
   line_.clear();
-  if (m_.block_numbers) {
+  if (!block_delete_.empty()) line_.append(block_delete_);
+  numbered_ = m_.block_numbers && (!m_.numbers_at_tool_changes || number_next_);
+  number_next_ = false;
+  if (numbered_) {
     // "N120 ": the address, the number, a blank.
     line_.append(m_.block_address);
     char* p = line_.room(16);
@@ -41,7 +44,7 @@ NcWriter& NcWriter::text(std::string_view raw) {
 
 void NcWriter::end_block() {
   if (!open_) return;
-  if (m_.block_numbers) {
+  if (numbered_) {
     bool unnumbered = false;
     const std::string_view w = words();
     for (const std::string& prefix : m_.block_skip)
@@ -53,28 +56,50 @@ void NcWriter::end_block() {
       if (next_number_ > m_.block_max) next_number_ = m_.block_start;
     }
   }
+  ++lines_;
+  if (m_.max_line_length > 0 && line_.size() > static_cast<size_t>(m_.max_line_length) &&
+      long_lines_++ == 0)
+    first_long_line_ = lines_;
   line_.append(m_.line_ending);
   out_.write(line_.view());
   open_ = false;
 }
 
-void NcWriter::comment(std::string_view text) {
+std::string NcWriter::comment_text(const Machine& m, std::string_view text) {
   std::string clean;
   clean.reserve(text.size());
   for (char c : text) {
-    if (m_.comment_forbidden.find(c) != std::string::npos) continue;
+    if (m.comment_forbidden.find(c) != std::string::npos) continue;
     if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-    clean += m_.comment_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+    clean += m.comment_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
   }
   // Trim: a comment should read as the CL wrote it, without padding.
   size_t b = clean.find_first_not_of(' ');
   size_t e = clean.find_last_not_of(' ');
-  clean = b == std::string::npos ? std::string() : clean.substr(b, e - b + 1);
+  return b == std::string::npos ? std::string() : clean.substr(b, e - b + 1);
+}
+
+void NcWriter::comment(std::string_view text) {
+  std::string clean = comment_text(m_, text);
+  const size_t max = static_cast<size_t>(m_.comment_max_length);
+  if (max > 0 && clean.size() > max) {
+    ++wrapped_comments_;
+    // At the last blank that fits, else cut at the limit.
+    while (clean.size() > max) {
+      size_t cut = clean.rfind(' ', max);
+      if (cut == std::string::npos || cut == 0) cut = max;
+      code(m_.comment_open + clean.substr(0, cut) + m_.comment_close);
+      end_block();
+      const size_t next = clean.find_first_not_of(' ', cut);
+      clean = next == std::string::npos ? std::string() : clean.substr(next);
+    }
+  }
   code(m_.comment_open + clean + m_.comment_close);
   end_block();
 }
 
 void NcWriter::raw_line(std::string_view text) {
+  ++lines_;
   out_.write(text);
   out_.write(m_.line_ending);
 }

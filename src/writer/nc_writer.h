@@ -40,6 +40,18 @@ class NcWriter {
   void comment(std::string_view text);
   // A line written verbatim (INSERT), without block number.
   void raw_line(std::string_view text);
+  // `text` as machine `m` writes comment text: forbidden characters removed, control characters
+  // as blanks, upper case when it asks, trimmed.
+  static std::string comment_text(const Machine& m, std::string_view text);
+  // Every block from now on starts with `mark` (block delete, "/"); empty: none.
+  void set_block_delete(std::string_view mark) { block_delete_ = mark; }
+  // With block_numbers.at_tool_changes: the next block gets a number (a tool change begins).
+  void number_next() { number_next_ = true; }
+  // Comments wrapped at comments.max_length; blocks longer than output.max_line_length and the
+  // first of them (1-based line of the program).
+  size_t wrapped_comments() const { return wrapped_comments_; }
+  size_t long_lines() const { return long_lines_; }
+  size_t first_long_line() const { return first_long_line_; }
 
   const Machine& machine() const { return m_; }
 
@@ -62,8 +74,13 @@ class NcWriter {
   // block, no copy. The block number is put first as the block opens; end_block() takes it out
   // again for a block that gets none (block_skip), which is rare.
   BlockBuffer line_;
-  size_t words_at_ = 0;  // where the words start in line_
-  bool open_ = false;    // a block has words
+  size_t words_at_ = 0;       // where the words start in line_
+  bool open_ = false;         // a block has words
+  std::string block_delete_;  // OPSKIP: the mark every block starts with
+  bool number_next_ = false;  // at_tool_changes: this block is numbered
+  bool numbered_ = false;     // the open block has a number
+  size_t lines_ = 0;          // lines written
+  size_t wrapped_comments_ = 0, long_lines_ = 0, first_long_line_ = 0;
   int next_number_;
 };
 

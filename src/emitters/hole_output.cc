@@ -1,0 +1,189 @@
+// Holes on the spindle axis: a control's canned cycle through its `hole_*` template, or moves.
+//
+// What each template's cycle does is the integrator's claim in the post file (posts/*.yaml name
+// the control's manual); clpost checks only what a template cannot say: a cycle has one peck
+// word, so a first peck that differs from the others is written as moves, and so is a dwell the
+// template has no field for. The moves are the cycle's own definition: rapid to the R plane,
+// feed to each peck depth, measured from the R plane as the controls' G83 does (a full retract to
+// the R plane between pecks, or a back-off of holes.peck_clearance for chip breaking; going back in
+// stops holes.peck_clearance short of the depth reached), dwell, rapid out (bore and ream: feed
+// out; tap: feed out with the spindle reversed).
+#include "emitters/hole_output.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "planner/number_text.h"
+
+namespace clpost {
+
+namespace {
+
+bool uses_field(const Machine& m, std::string_view name, std::string_view field) {
+  auto it = m.templates.find(std::string(name));
+  if (it == m.templates.end()) return false;
+  for (const std::string& line : it->second)
+    for (const FieldUse& u : field_uses(line))
+      if (u.name == field) return true;
+  return false;
+}
+
+double depth_of(const Hole& h) {
+  return std::fabs(h.bottom - h.top);
+}
+
+// The index of hole field `f`: every hole template has the same fields (tmpl::kHoleFields).
+consteval size_t field(std::string_view f, FieldKind kind = FieldKind::kText) {
+  return tmpl::kHoleDrill.field(f, kind);
+}
+
+TemplateWrite write_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t) {
+  const Machine& m = prog.machine();
+  TemplateValues v(t);
+  v.set_text(field("x"), prog.num("X", 0));
+  v.set_text(field("z"), prog.num("Z", h.bottom));
+  v.set_text(field("top"), prog.num("Z", h.top));
+  v.set_text(field("r"), prog.num("Z", h.r));
+  v.set_text(field("r_inc"), prog.num("Z", h.r - h.start));
+  v.set_text(field("start"), prog.num("Z", h.start));
+  v.set_text(field("safety"), prog.num("Z", std::fabs(h.r - h.top)));
+  v.set_text(field("depth"), prog.num("Z", depth_of(h)));
+  v.set_text(field("peck"), prog.num("hole_peck", h.peck > 0 ? h.peck : std::fabs(h.bottom - h.r)));
+  v.set_text(field("dwell"), prog.num("dwell", h.dwell));
+  v.set_whole(field("dwell_ms", FieldKind::kWhole), std::llround(h.dwell * 1000));
+  v.set_text(field("feed"), prog.num("F", h.feed));
+  v.set_text(field("feed_mode"),
+             m.code(h.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+  v.set_text(field("lead"), prog.num("F", h.lead));
+  v.set_text(field("rpm"), prog.num("S", h.rpm));
+  return prog.write_template(v);
+}
+
+}  // namespace
+
+std::string_view hole_kind_name(HoleKind k) {
+  switch (k) {
+    case HoleKind::kDrill:
+      return "drilling";
+    case HoleKind::kDeep:
+      return "peck drilling";
+    case HoleKind::kChipBreak:
+      return "chip-breaking drilling";
+    case HoleKind::kTap:
+      return "tapping";
+    case HoleKind::kBore:
+      return "boring";
+    case HoleKind::kReam:
+      return "reaming";
+  }
+  return "?";
+}
+
+const TemplateSpec& hole_template(const Machine& m, const Hole& h) {
+  switch (h.kind) {
+    case HoleKind::kDrill:
+      return h.dwell > 0 ? tmpl::kHoleDwell : tmpl::kHoleDrill;
+    case HoleKind::kDeep:
+      return tmpl::kHolePeck;
+    case HoleKind::kChipBreak:
+      return tmpl::kHoleChipBreak;
+    case HoleKind::kTap:
+      return m.rigid_tapping ? tmpl::kHoleTapRigid : tmpl::kHoleTap;
+    case HoleKind::kBore:
+    case HoleKind::kReam:
+      break;
+  }
+  return tmpl::kHoleBore;
+}
+
+std::string hole_misfit(const Machine& m, const Hole& h) {
+  const TemplateSpec& t = hole_template(m, h);
+  if (m.templates.count(std::string(t.name)) == 0)
+    return fmt::format("machine '{}' has no template '{}'", m.name, t.name);
+  if (h.first_peck > 0 && std::fabs(h.first_peck - h.peck) > 1e-9)
+    return fmt::format("first peck {} differs from the next pecks {}: '{}' has one peck word",
+                       num_text(h.first_peck), num_text(h.peck), t.name);
+  if ((h.kind == HoleKind::kDeep || h.kind == HoleKind::kChipBreak) && h.peck > 0 &&
+      !uses_field(m, t.name, "peck"))
+    return fmt::format("template '{}' has no {{peck}}", t.name);
+  if (h.kind == HoleKind::kTap && h.spindle == SpindleDir::kCcw && m.tap_turns_cw)
+    return fmt::format(
+        "a left-hand tap, spindle counter-clockwise: '{}' turns the spindle "
+        "clockwise, holes.tap_turns_cw",
+        t.name);
+  if (h.dwell > 0 && !uses_field(m, t.name, "dwell") && !uses_field(m, t.name, "dwell_ms"))
+    return fmt::format("a dwell of {} s at the bottom: template '{}' has no {{dwell}}",
+                       num_text(h.dwell), t.name);
+  return {};
+}
+
+std::vector<double> hole_feed_ends(const Hole& h) {
+  std::vector<double> ends;
+  const double total = std::fabs(h.bottom - h.r);
+  const bool pecks = (h.kind == HoleKind::kDeep || h.kind == HoleKind::kChipBreak) && h.peck > 0;
+  double reached = 0;
+  double step = pecks ? (h.first_peck > 0 ? h.first_peck : h.peck) : total;
+  while (ends.size() < kMaxHolePecks) {
+    reached = std::min(total, reached + step);
+    ends.push_back(reached);
+    if (reached >= total - 1e-9) break;
+    step = h.peck;
+  }
+  for (double& e : ends) e = h.r + h.dir * e;
+  if (!ends.empty()) ends.back() = h.bottom;
+  return ends;
+}
+
+TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
+  const double clr = prog.machine().peck_clearance;
+  if (prog.position() && std::fabs(prog.position()->r) > 1e-12) prog.rapid({0, prog.position()->z});
+  prog.rapid({0, h.r});
+  prog.set_feed(h.feed, h.feed_mode);
+  const std::vector<double> ends = hole_feed_ends(h);
+  for (size_t i = 0; i < ends.size(); ++i) {
+    prog.linear({0, ends[i]});
+    if (i + 1 == ends.size()) break;
+    // Out to the R plane (peck) or back a little (chip breaking), then back in to just short
+    // of the depth reached, never above the R plane.
+    if (h.kind == HoleKind::kDeep) prog.rapid({0, h.r});
+    const double back = std::max(0.0, std::fabs(ends[i] - h.r) - clr);
+    prog.rapid({0, h.r + h.dir * back});
+  }
+  TemplateWrite dwell;
+  if (h.dwell > 0)
+    dwell =
+        prog.dwell(h.dwell, h.rpm > 0 ? std::optional<double>(h.dwell * h.rpm / 60) : std::nullopt);
+  if (h.kind == HoleKind::kTap) {
+    const SpindleDir back = h.spindle == SpindleDir::kCw ? SpindleDir::kCcw : SpindleDir::kCw;
+    if (TemplateWrite r = prog.spindle_rpm(h.rpm, back); !r) return r;
+    prog.linear({0, h.r});
+    if (TemplateWrite r = prog.spindle_rpm(h.rpm, h.spindle); !r) return r;
+  } else if (h.kind == HoleKind::kBore || h.kind == HoleKind::kReam) {
+    prog.linear({0, h.r});
+  }
+  prog.rapid({0, h.retract});
+  return dwell;
+}
+
+TemplateWrite write_hole(NcProgram& prog, const Hole& h) {
+  const Machine& m = prog.machine();
+  const TemplateSpec& t = hole_template(m, h);
+  prog.comment(
+      fmt::format("{}: {} to Z{}", h.name, hole_kind_name(h.kind), prog.num("Z", h.bottom)));
+  if (const std::string why = hole_misfit(m, h); !why.empty()) {
+    if (m.templates.count(std::string(t.name)) > 0)
+      prog.comment(fmt::format("{} not used: {}. moves instead", t.name, why));
+    return expand_hole(prog, h);
+  }
+  if (!prog.position() || std::fabs(prog.position()->r) > 1e-12 ||
+      std::fabs(prog.position()->z - h.start) > 1e-12)
+    prog.rapid({0, h.start});
+  if (TemplateWrite r = write_cycle(prog, h, t); !r) return r;
+  prog.cycle_ended_at({0, h.start});
+  if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid({0, h.retract});
+  return {};
+}
+
+}  // namespace clpost

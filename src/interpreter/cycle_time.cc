@@ -1,0 +1,203 @@
+// The cycle-time clock (cycle_time.h): every hook moves the clock's tool from where it is.
+#include "interpreter/cycle_time.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter/post_state.h"
+
+namespace clpost {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+ToolTime& current(PostState& s) {
+  CycleTime& c = s.clock;
+  if (c.tools.empty()) c.tools.emplace_back();
+  ToolTime& t = c.tools.back();
+  // Tool data may come after the tool change (PPRINT TOOL:): taken when it is there. Every move
+  // comes here: the common case (no text) is one test.
+  if (!s.tool.text.empty() && t.text.empty() && t.tool == s.tool.number) t.text = s.tool.text;
+  if (s.tool.nose_radius && !t.nose_radius && t.tool == s.tool.number)
+    t.nose_radius = s.tool.nose_radius;
+  return t;
+}
+
+// The tool reaches `p` after `seconds` more (one look-up of the tool per move).
+void reach(PostState& s, Vec2 p, double seconds = 0) {
+  ToolTime& t = current(s);
+  t.seconds += seconds;
+  t.x_min = std::min(t.x_min, p.x);
+  t.x_max = std::max(t.x_max, p.x);
+  t.z_min = std::min(t.z_min, p.z);
+  t.z_max = std::max(t.z_max, p.z);
+  s.clock_at = p;
+}
+
+void add(PostState& s, double seconds) {
+  current(s).seconds += seconds;
+}
+
+// Minutes to feed `length` along radii r0 .. r1 (linearly) at feed `f` in `mode`.
+double feed_minutes(const PostState& s, double length, double r0, double r1, double f,
+                    FeedMode mode) {
+  if (!(f > 0) || length <= 0) return 0;
+  if (mode == FeedMode::kPerMinute) return length / f;
+  const SpindleState& sp = s.spindle;
+  if (!sp.css) return sp.value > 0 ? length / (f * sp.value) : 0;
+  // rpm(r) = K / (2 pi r), clamped at the limit below the radius rc.
+  const double k = sp.value * (s.units == LengthUnit::kInch ? 12 : 1000);
+  const double max = sp.css_max_rpm > 0 ? sp.css_max_rpm : s.m.max_rpm;
+  const double rc = max > 0 ? k / (2 * kPi * max) : 0;
+  r0 = std::fabs(r0), r1 = std::fabs(r1);
+  auto piece = [&](double ua, double ub) {  // [ua, ub] on one side of rc
+    const double r = r0 + (r1 - r0) * (ua + ub) / 2;
+    const double ds = length * (ub - ua);
+    return r >= rc ? 2 * kPi * r * ds / (f * k) : ds / (f * max);
+  };
+  if ((r0 - rc) * (r1 - rc) < 0) {
+    const double uc = (rc - r0) / (r1 - r0);
+    return piece(0, uc) + piece(uc, 1);
+  }
+  return piece(0, 1);
+}
+
+// sqrt rather than hypot: every GOTO comes here, and CL values are far from overflow.
+double length(Vec2 a, Vec2 b) {
+  const double dx = b.x - a.x, dz = b.z - a.z;
+  return std::sqrt(dx * dx + dz * dz);
+}
+
+// A feed move from where the clock is to `to` at feed `f`.
+void feed_to(PostState& s, Vec2 to, double f, FeedMode mode) {
+  double seconds = 0;
+  if (s.clock_at) {
+    const Vec2 a = *s.clock_at;
+    seconds = 60 * feed_minutes(s, length(a, to), a.x, to.x, f, mode);
+  }
+  reach(s, to, seconds);
+}
+
+}  // namespace
+
+void time_tool_change(PostState& s) {
+  ToolTime t;
+  t.tool = s.tool.number;
+  t.offset = s.tool.offset;
+  t.text = s.tool.text;
+  t.nose_radius = s.tool.nose_radius;
+  t.seconds = s.m.tool_change_time;
+  s.clock.tools.push_back(std::move(t));
+}
+
+void time_rapid(PostState& s, Vec2 to) {
+  double seconds = 0;
+  if (s.clock_at) {
+    const double dx = std::fabs(to.x - s.clock_at->x), dz = std::fabs(to.z - s.clock_at->z);
+    const double rx = s.m.rapid_x, rz = s.m.rapid_z;
+    if ((dx > 0 && rx <= 0) || (dz > 0 && rz <= 0)) s.clock.rapids_untimed = true;
+    seconds = 60 * std::max(rx > 0 ? dx / rx : 0, rz > 0 ? dz / rz : 0);
+  }
+  reach(s, to, seconds);
+}
+
+void time_feed(PostState& s, Vec2 to) {
+  feed_to(s, to, s.feed, s.feed_mode);
+}
+
+void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
+  if (!s.clock_at) return reach(s, to);
+  const Vec2 a = *s.clock_at;
+  const double r = length(center, a);
+  const double t0 = std::atan2(a.x - center.x, a.z - center.z);
+  double sweep = std::atan2(to.x - center.x, to.z - center.z) - t0;
+  // Positive rotation turns Z toward X (G3 in G18 with the lathe frame as drawn).
+  if (ccw && sweep <= 0) sweep += 2 * kPi;
+  if (!ccw && sweep >= 0) sweep -= 2 * kPi;
+  constexpr int kSteps = 64;
+  double minutes = 0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double u = t0 + sweep * (i + 0.5) / kSteps;
+    const double rad = center.x + r * std::sin(u);
+    minutes += feed_minutes(s, r * std::fabs(sweep) / kSteps, rad, rad, s.feed, s.feed_mode);
+  }
+  reach(s, to, 60 * minutes);
+}
+
+void time_dwell(PostState& s, double seconds) {
+  add(s, seconds);
+}
+
+void time_sync(PostState& s, Vec2 to, double lead, double rpm) {
+  if (s.clock_at && lead > 0 && rpm > 0) {
+    const double travel =
+        std::max(std::fabs(to.x - s.clock_at->x), std::fabs(to.z - s.clock_at->z));
+    return reach(s, to, 60 * travel / (lead * rpm));
+  }
+  reach(s, to);
+}
+
+void time_thread(PostState& s, const ThreadPlan& plan, double rpm) {
+  for (const ThreadPass& p : plan.passes) {
+    time_rapid(s, p.approach);
+    time_rapid(s, p.from);
+    time_sync(s, p.to, plan.lead, rpm);
+    if (plan.pullout) time_sync(s, p.pullout_end, plan.lead, rpm);
+    time_rapid(s, p.clear);
+  }
+  time_rapid(s, plan.end_position);
+}
+
+void time_hole(PostState& s, const Hole& h) {
+  if (s.clock_at && std::fabs(s.clock_at->x) > 0) time_rapid(s, {0, s.clock_at->z});
+  time_rapid(s, {0, h.r});
+  const std::vector<double> ends = hole_feed_ends(h);
+  const double clr = s.m.peck_clearance;
+  for (size_t i = 0; i < ends.size(); ++i) {
+    feed_to(s, {0, ends[i]}, h.feed, h.feed_mode);
+    if (i + 1 == ends.size()) break;
+    if (h.kind == HoleKind::kDeep) time_rapid(s, {0, h.r});
+    time_rapid(s, {0, h.r + h.dir * std::max(0.0, std::fabs(ends[i] - h.r) - clr)});
+  }
+  time_dwell(s, h.dwell);
+  if (h.kind == HoleKind::kTap || h.kind == HoleKind::kBore || h.kind == HoleKind::kReam)
+    feed_to(s, {0, h.r}, h.feed, h.feed_mode);
+  time_rapid(s, {0, h.retract});
+}
+
+std::string time_text(double seconds) {
+  const double tenths = std::round(seconds * 10);
+  const long long whole = static_cast<long long>(tenths) / 10;
+  const int frac = static_cast<int>(static_cast<long long>(tenths) % 10);
+  const long long h = whole / 3600, m = whole / 60 % 60, sec = whole % 60;
+  if (h > 0) return fmt::format("{}:{:02}:{:02}.{}", h, m, sec, frac);
+  return fmt::format("{}:{:02}.{}", m, sec, frac);
+}
+
+std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter) {
+  std::vector<std::string> out;
+  const char* u = units == LengthUnit::kInch ? "in" : "mm";
+  const double xs = diameter ? 2 : 1;
+  size_t changes = 0;
+  for (const ToolTime& tt : t.tools) {
+    if (tt.tool < 0 && tt.seconds == 0 && tt.x_min > tt.x_max) continue;
+    changes += tt.tool >= 0;
+    std::string line = tt.tool < 0 ? std::string("before the first tool")
+                                   : fmt::format("T{} offset {}", tt.tool, tt.offset);
+    line += fmt::format(": {}", time_text(tt.seconds));
+    if (tt.x_min <= tt.x_max)
+      line += fmt::format(", X{:.3f} to X{:.3f}, Z{:.3f} to Z{:.3f} {}", tt.x_min * xs,
+                          tt.x_max * xs, tt.z_min, tt.z_max, u);
+    if (tt.nose_radius) line += fmt::format(", nose radius {:g}", *tt.nose_radius);
+    if (!tt.text.empty()) line += ", " + tt.text;
+    out.push_back(std::move(line));
+  }
+  out.push_back(fmt::format("cycle time {}, {} tool changes{}", time_text(t.total()), changes,
+                            t.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : ""));
+  return out;
+}
+
+}  // namespace clpost

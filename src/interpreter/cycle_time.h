@@ -1,0 +1,67 @@
+#pragma once
+// The estimated cycle time of a program, per tool and in total, with the tool list: what each
+// tool is (number, offset, text, nose radius) and the extremes of X and Z it reaches. Worked out
+// from what the CL asks the machine to do, as it is posted:
+//   feed moves       length / feed (per minute), or length / (feed x rpm) per revolution; under
+//                    constant surface speed the rpm is S/(2 pi r) at each radius r of the move
+//                    (S in mm/min: m/min x 1000, or in/min: ft/min x 12), clamped at the limit;
+//   rapid moves      each axis at its rate (time.rapid_x as a radius, time.rapid_z), the slower
+//                    axis deciding (both move at once);
+//   threads          every pass of the plan: rapid to its approach and start, the cut and a
+//                    synchronized pull-out at lead x rpm (along the longer axis), rapid clear;
+//   holes            the hole's own moves (pecks, dwell, retract) whatever NC writes them;
+//   dwells, and time.tool_change seconds for every tool change.
+// A rapid rate of 0 (not given) times rapids as 0 s and says so.
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "emitters/hole_output.h"
+#include "planner/thread_plan.h"
+
+namespace clpost {
+
+struct ToolTime {
+  int tool = -1;  // -1: before the first tool change
+  int offset = -1;
+  std::string text;
+  std::optional<double> nose_radius;
+  double seconds = 0;
+  // The extremes of X (as a radius) and Z the tool reaches (min > max: it never moves).
+  double x_min = std::numeric_limits<double>::infinity();
+  double x_max = -std::numeric_limits<double>::infinity();
+  double z_min = std::numeric_limits<double>::infinity();
+  double z_max = -std::numeric_limits<double>::infinity();
+};
+
+struct CycleTime {
+  std::vector<ToolTime> tools;  // in the order they are used
+  bool rapids_untimed = false;  // a rapid was met with a rapid rate of 0
+  double total() const {
+    double t = 0;
+    for (const ToolTime& tt : tools) t += tt.seconds;
+    return t;
+  }
+};
+
+// "0:42.5" (minutes:seconds to 0.1 s), "1:02:03.0" past an hour.
+std::string time_text(double seconds);
+// The tool list and times as text lines ("T1 D1 ...", then "total ..."), for clpost check and
+// the NC header; each line without a line ending, in `units`.
+std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter);
+
+struct PostState;  // post_state.h
+struct Point3;
+
+// The clock's hooks (in the lathe frame, CL units; positions from where the tool is).
+void time_tool_change(PostState& s);
+void time_rapid(PostState& s, Vec2 to);
+void time_feed(PostState& s, Vec2 to);
+void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw);
+void time_dwell(PostState& s, double seconds);
+void time_thread(PostState& s, const ThreadPlan& plan, double rpm);
+void time_sync(PostState& s, Vec2 to, double lead, double rpm);
+void time_hole(PostState& s, const Hole& h);
+
+}  // namespace clpost

@@ -1,0 +1,229 @@
+// Holes on the spindle axis: CYCLE/DRILL … in the forms CAM systems write, per control.
+#include <gtest/gtest.h>
+
+#include "interpreter/post_test_util.h"
+
+namespace clpost {
+namespace {
+
+using test::load;
+using test::post;
+using test::Posted;
+
+// The body of a program: what lies between the start template's lines and the end's.
+std::string body(const std::string& nc, const std::string& first, const std::string& last) {
+  const size_t a = nc.find(first);
+  const size_t b = nc.rfind(last);
+  if (a == std::string::npos || b == std::string::npos || b < a) return "<no body>\n" + nc;
+  return nc.substr(a, b - a);
+}
+
+// SolidWorks CAM's drilling form: depth 12 below the top at Z0, R plane 2 above it, back to
+// the retract plane Z20 (RTRCTO 20 above the top).
+constexpr const char* kSolidWorksDrill =
+    "SPINDL/1000,RPM,CLW\nRAPID\nGOTO/0,0,20\n"
+    "CYCLE/INIT\nCYCLE/DRILL,FEDTO,12.,MMPM,100.,RAPTO,2.,RTRCTO,20.,DWELL,0\n"
+    "GOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+
+TEST(HoleCycles, DrillOnAMachineWithoutCyclesIsMoves) {
+  Posted p = post(kSolidWorksDrill, load("generic-lathe"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "G97", "M30"),
+            "G97 S1000 M3\nG0 X0. Z20.\n(hole at CL line 6: drilling to Z-12.)\nZ2.\n"
+            "G1 Z-12. G94 F100.\nG0 Z20.\n");
+}
+
+TEST(HoleCycles, DrillOnHaasIsG81WithTheRPlaneAbsolute) {
+  Posted p = post(kSolidWorksDrill, load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "G97 S", "M30"),
+            "G97 S1000 M3\nG0 X0. Z20.\n(HOLE AT CL LINE 6: DRILLING TO Z-12.)\n"
+            "G98 G81 X0. Z-12. R2. F100.\nG80\n");
+}
+
+// SolidWorks' DEEP2 with a first peck of 5 and then pecks of 2 to Z-8.6: a cycle's peck word is
+// one number, so the moves are written. Pecks count from the R plane Z3 (11.6 to the bottom):
+// 5 -> Z-2, out to R, back in to 4.5 (0.5 clearance, generic) -> Z-1.5; 7 -> Z-4, back to -3.5;
+// 9 -> Z-6, back to -5.5; 11 -> Z-8, back to -7.5; 11.6 -> Z-8.6; out to Z20.
+constexpr const char* kDeep2 =
+    "SPINDL/1000,RPM,CLW\nRAPID\nGOTO/0,0,20\n"
+    "CYCLE/DEEP2,FEDTO,8.6,1STPECK,5.,SUBPECK,2.,MMPM,100.,RAPTO,3.,RTRCTO,20.\n"
+    "GOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+
+TEST(HoleCycles, PecksAreExpandedWhenTheCycleCannotSayThem) {
+  const std::string moves =
+      "Z3.\nG1 Z-2. G94 F100.\nG0 Z3.\nZ-1.5\nG1 Z-4.\nG0 Z3.\nZ-3.5\nG1 Z-6.\nG0 Z3.\n"
+      "Z-5.5\nG1 Z-8.\nG0 Z3.\nZ-7.5\nG1 Z-8.6\nG0 Z20.\n";
+  Posted g = post(kDeep2, load("generic-lathe"));
+  EXPECT_EQ(g.diags, "");
+  EXPECT_EQ(body(g.nc, "(hole", "M30"), "(hole at CL line 5: peck drilling to Z-8.6)\n" + moves);
+  Posted f = post(kDeep2, load("fanuc-0i-t"));
+  EXPECT_EQ(body(f.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: PECK DRILLING TO Z-8.6)\n(HOLE_PECK NOT USED: FIRST PECK 5 "
+            "DIFFERS FROM THE NEXT PECKS 2: 'HOLE_PECK' HAS ONE PECK WORD. MOVES INSTEAD)\n"
+            "Z3.\nG1 Z-2. G98 F100.\nG0 Z3.\nZ-1.5\nG1 Z-4.\nG0 Z3.\nZ-3.5\nG1 Z-6.\nG0 Z3.\n"
+            "Z-5.5\nG1 Z-8.\nG0 Z3.\nZ-7.5\nG1 Z-8.6\nG0 Z20.\n");
+}
+
+// Creo's DEEP form with constant pecks on the Fanuc 0i-T: G83 with R from the initial level
+// (Z10) to the R point (Z2): -8, Q 5 mm in micrometres.
+constexpr const char* kCreoDeep =
+    "SPINDL/800,RPM,CLW\nFEDRAT/0.1,MMPR\nRAPID\nGOTO/0,0,10\n"
+    "CYCLE / DEEP, DEPTH, 20.0, STEP, 5.0, MMPR, 0.1, CLEAR,$\n 2.0\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+
+TEST(HoleCycles, FanucPeckDrillingIsG83) {
+  Posted p = post(kCreoDeep, load("fanuc-0i-t"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(
+      body(p.nc, "(HOLE", "M30"),
+      "(HOLE AT CL LINE 7: PECK DRILLING TO Z-20.)\nG99 G83 X0. Z-20. R-8. Q5000 F0.1\nG80\n");
+}
+
+TEST(HoleCycles, SiemensPeckDrillingIsCycle83InG17) {
+  Posted p = post(kCreoDeep, load("sinumerik-840d"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "; hole", "M30"),
+            "; hole at CL line 7: peck drilling to Z-20\nG17 G95 F0.1\n"
+            "CYCLE83(10, 2, 0, -20, , , 5, 5, 0, 0, 1, 1)\nG18\n");
+}
+
+// Tapping M10x1.5 at 500 rpm: the feed is the lead per revolution.
+constexpr const char* kTap =
+    "SPINDL/500,RPM,CLW\nRAPID\nGOTO/0,0,10\nCYCLE/TAP,DEPTH,15,PITCH,1.5,MMPM,750,CLEAR,3\n"
+    "GOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+
+TEST(HoleCycles, RigidTappingPerControl) {
+  Posted l = post(kTap, load("linuxcnc-lathe"));
+  EXPECT_EQ(l.diags, "");
+  EXPECT_EQ(body(l.nc, "(hole", "M2"),
+            "(hole at CL line 5: tapping to Z-15.)\nG0 X0. Z3.\nG33.1 Z-15. K1.5\nG0 Z10.\n");
+  Posted f = post(kTap, load("fanuc-0i-t"));
+  EXPECT_EQ(body(f.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: TAPPING TO Z-15.)\nM29 S500\nG99 G84 X0. Z-15. R-7. F1.5\nG80\n");
+  // Without rigid tapping the Fanuc writes G84 for a floating holder.
+  Posted ff = post(kTap, load("fanuc-0i-t", {"holes.rigid_tapping=false"}));
+  EXPECT_EQ(body(ff.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: TAPPING TO Z-15.)\nG99 G84 X0. Z-15. R-7. F1.5\nG80\n");
+}
+
+TEST(HoleCycles, TappingAsMovesReversesTheSpindle) {
+  Posted p = post(kTap, load("generic-lathe"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(hole", "M30"),
+            "(hole at CL line 5: tapping to Z-15.)\nZ3.\nG1 Z-15. G95 F1.5\nG97 S500 M4\n"
+            "Z3.\nG97 S500 M3\nG0 Z10.\n");
+}
+
+TEST(HoleCycles, ATapFeedThatIsNotLeadTimesRpmIsAnError) {
+  std::string cl = kTap;
+  cl.replace(cl.find("750"), 3, "700");
+  Posted p = post(cl, load("generic-lathe"));
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_NE(p.diags.find("t.cl:5:1: error: CYCLE/TAP of line 4: feed 700 per minute is not the "
+                         "tap's lead 1.5 x 500 rpm = 750: the tap would strip the thread"),
+            std::string::npos)
+      << p.diags;
+}
+
+// Pro/E's tap: 20 threads per inch in an inch program, 600 rpm: lead 0.05 in, F0.05 per rev.
+TEST(HoleCycles, ProETapWithTpi) {
+  Posted p = post(
+      "UNITS/INCHES\nSPINDL/600,RPM,CLW\nRAPID\nGOTO/0,0,1\n"
+      "CYCLE / TAP, DEPTH, 1.550000, TPI, 20.000000, CLEAR, 0.250000\nGOTO/0,0,0\nCYCLE / OFF\n"
+      "FINI\n",
+      load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 6: TAPPING TO Z-1.55)\nG99 G84 X0. Z-1.55 R0.25 F0.05\nG80\n");
+}
+
+// A left-hand tap (spindle CCLW) on the Haas, whose G84 turns the spindle M3 itself: moves.
+TEST(HoleCycles, LeftHandTapOnHaasIsMoves) {
+  std::string cl = kTap;
+  cl.replace(cl.find("CLW"), 3, "CCLW");
+  Posted p = post(cl, load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: TAPPING TO Z-15.)\n(HOLE_TAP NOT USED: A LEFT-HAND TAP, SPINDLE "
+            "COUNTER-CLOCKWISE: 'HOLE_TAP' TURNS THE SPINDLE CLOCKWISE, HOLES.TAP_TURNS_CW. MOVES "
+            "INSTEAD)\nZ3.\nG1 Z-15. G99 F1.5\nG97 S500 M3\nZ3.\nG97 S500 M4\nG0 Z10.\n");
+}
+
+// CATIA's short form: total depth and clearance, the feed in force.
+TEST(HoleCycles, CatiaTapUsesTheFeedInForce) {
+  Posted p = post(
+      "SPINDL/400,RPM,CLW\nFEDRAT/1.5,MMPR\nRAPID\nGOTO/0,0,1\nCYCLE/TAP,   20.000000,    "
+      "1.000000\nGOTO  /    0.00000,    0.00000,    0.00000\nCYCLE/OFF\nFINI\n",
+      load("fanuc-0i-t"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 6: TAPPING TO Z-20.)\nM29 S400\nG99 G84 X0. Z-20. R0. F1.5\nG80\n");
+}
+
+TEST(HoleCycles, AHoleOffTheCentreLineNeedsLiveTooling) {
+  Posted p = post(
+      "SPINDL/1000,RPM,CLW\nRAPID\nGOTO/17.5,0,20\n"
+      "CYCLE/DRILL,FEDTO,5.,MMPM,125.,RAPTO,3.,RTRCTO,100.\nGOTO/17.5,0,0\nCYCLE/OFF\nFINI\n",
+      load("generic-lathe"));
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_NE(p.diags.find("t.cl:5:1: error: CYCLE/DRILL hole at CL line 5 is 17.5 off the "
+                         "spindle's centre line (GOTO/17.5,0,0): a hole off the centre line "
+                         "needs live tooling, which a lathe post does not write"),
+            std::string::npos)
+      << p.diags;
+}
+
+TEST(HoleCycles, ChipBreakingAndDwell) {
+  // BRKCHP on LinuxCNC: G73 with Q; a DRILL with a dwell of 0.5 s: G82 P0.5.
+  Posted p = post(
+      "SPINDL/1000,RPM,CLW\nRAPID\nGOTO/0,0,10\nCYCLE/BRKCHP,DEPTH,10,STEP,2,MMPR,0.05,CLEAR,1\n"
+      "GOTO/0,0,0\nCYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,1,DWELL,0.5\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n",
+      load("linuxcnc-lathe"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(hole", "M2"),
+            "(hole at CL line 5: chip-breaking drilling to Z-10.)\nG17\n"
+            "G98 G95 G73 X0. Y0 Z-10. R1. Q2. F0.05\nG80\nG18\n"
+            "(hole at CL line 7: drilling to Z-3.)\nG17\nG98 G95 G82 X0. Y0 Z-3. R1. P0.5 F0.05\n"
+            "G80\nG18\n");
+}
+
+// NX names the kind as a word of DRILL: CYCLE/DRILL,DEEP,RAPTO,c,FEDTO,d,MMPM,f,STEP,p.
+TEST(HoleCycles, NxDeepDrill) {
+  Posted p = post(
+      "SPINDL/800,RPM,CLW\nRAPID\nGOTO/0,0,10\n"
+      "CYCLE/DRILL,DEEP,RAPTO,2.0000,FEDTO,20.0000,MMPM,80.0000,STEP,5\nGOTO/0,0,0\nCYCLE/OFF\n"
+      "FINI\n",
+      load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(HOLE", "M30"),
+            "(HOLE AT CL LINE 5: PECK DRILLING TO Z-20.)\nG98 G83 X0. Z-20. R2. Q5. F80.\nG80\n");
+}
+
+TEST(HoleCycles, AThousandPecksAtMost) {
+  // From the R plane Z2 to Z-20: 22 / 0.01 = 2200 pecks.
+  Posted p = post(
+      "SPINDL/800,RPM,CLW\nRAPID\nGOTO/0,0,10\nCYCLE/DEEP,DEPTH,20,STEP,0.01,MMPM,80,CLEAR,2\n"
+      "GOTO/0,0,0\nCYCLE/OFF\nFINI\n",
+      load("generic-lathe"));
+  EXPECT_NE(p.diags.find("t.cl:5:1: error: CYCLE/DEEP hole at CL line 5: pecks of 0.01 over 22 "
+                         "make 2200 pecks, more than 1000"),
+            std::string::npos)
+      << p.diags;
+}
+
+TEST(HoleCycles, BadCycleWords) {
+  Posted p = post("CYCLE/DRILL,DEPTH,MMPM,100\nCYCLE/DEEP,FROB,3\nCYCLE/BORE,MMPM,5\nFINI\n",
+                  load("generic-lathe"));
+  EXPECT_EQ(p.errors, 3u);
+  EXPECT_NE(p.diags.find("t.cl:1:13: error: CYCLE/DRILL: DEPTH needs a number after it"),
+            std::string::npos)
+      << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:2:12: error: CYCLE/DEEP: unknown word 'FROB'"), std::string::npos)
+      << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:3:1: error: CYCLE/BORE needs a depth greater than 0"),
+            std::string::npos)
+      << p.diags;
+}
+
+}  // namespace
+}  // namespace clpost

@@ -1,0 +1,33 @@
+#pragma once
+// Posting CL text in the interpreter's tests: a shipped machine without block numbers (plus any
+// --set overrides) and the program, rendered diagnostics and error count of a post.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "interpreter/post.h"
+#include "machine/machine_loader.h"
+
+namespace clpost::test {
+
+struct Posted {
+  std::string nc;
+  std::string diags;
+  size_t errors = 0;
+};
+
+inline Machine load(const std::string& name, std::vector<std::string> sets = {}) {
+  Machine m;
+  std::string errors;
+  sets.insert(sets.begin(), "block_numbers.enabled=false");  // the caller's sets win
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  return m;
+}
+
+inline Posted post(const std::string& cl, const Machine& m) {
+  PostedText r = post_text(cl, m, "t.cl");
+  return Posted{r.program, r.diags.render_all(), r.diags.error_count()};
+}
+
+}  // namespace clpost::test

@@ -1,0 +1,250 @@
+// Holes on the spindle axis as the control drills them. A block is a hole cycle when it is the
+// line of one of the machine's hole_* templates that holds {z}: the template's cycle code (the
+// last code before its first field word, or its call's name) is in the block, and the block has
+// exactly the template's addresses (Fanuc's G83 drills without Q and pecks with it). Its words are
+// read back by field and the hole expanded with hole_feed_ends, the definition the emitter
+// writes moves by (emitters/hole_output.h): the machine file is the only source, as for threads.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "emitters/hole_output.h"
+#include "reader/number.h"
+#include "simulator/sim_state.h"
+
+namespace clpost::sim {
+
+namespace {
+
+// A hole template's cycle line, taken apart.
+struct HoleLine {
+  HoleKind kind = HoleKind::kDrill;
+  std::string call;                            // a call's name ("CYCLE83"), else empty
+  Code code;                                   // the cycle code of a word line
+  std::map<std::string, std::string> by_addr;  // word lines: address -> field
+  std::set<std::string> addresses;             // word lines: every non-G/M address
+  std::map<std::string, size_t> by_arg;        // calls: field -> argument index
+};
+
+constexpr std::pair<const TemplateSpec*, HoleKind> kHoleTemplates[] = {
+    {&tmpl::kHoleDrill, HoleKind::kDrill}, {&tmpl::kHoleDwell, HoleKind::kDrill},
+    {&tmpl::kHolePeck, HoleKind::kDeep},   {&tmpl::kHoleChipBreak, HoleKind::kChipBreak},
+    {&tmpl::kHoleTap, HoleKind::kTap},     {&tmpl::kHoleTapRigid, HoleKind::kTap},
+    {&tmpl::kHoleBore, HoleKind::kBore}};
+
+// The field named in `token` ("{peck}" or "{dwell_ms:04}"), or "".
+std::string field_in(std::string_view token) {
+  const size_t b = token.find('{');
+  if (b == std::string_view::npos) return {};
+  const size_t e = token.find_first_of(":}", b);
+  return e == std::string_view::npos ? std::string() : std::string(token.substr(b + 1, e - b - 1));
+}
+
+bool parse_call_line(std::string_view line, HoleLine& h) {
+  const size_t open = line.find('(');
+  h.call = std::string(line.substr(0, open));
+  size_t index = 0, arg = open + 1;
+  for (size_t i = open + 1; i < line.size(); ++i) {
+    if (line[i] != ',' && line[i] != ')') continue;
+    if (std::string f = field_in(line.substr(arg, i - arg)); !f.empty()) h.by_arg[f] = index;
+    ++index, arg = i + 1;
+  }
+  return h.by_arg.count("z") > 0;
+}
+
+bool parse_word_line(std::string_view line, HoleLine& h) {
+  bool fields_begun = false;
+  size_t i = 0;
+  while (i < line.size()) {
+    const size_t end = std::min(line.find(' ', i), line.size());
+    const std::string_view token = line.substr(i, end - i);
+    i = end + 1;
+    if (token.empty() || token[0] == '{') continue;
+    size_t a = 0;
+    while (a < token.size() && std::isalpha(static_cast<unsigned char>(token[a]))) ++a;
+    const std::string addr(token.substr(0, a));
+    const std::string f = field_in(token);
+    if (!f.empty()) {
+      fields_begun = true;
+      h.by_addr[addr] = f;
+      h.addresses.insert(addr);
+    } else if (addr == "G" || addr == "M") {
+      if (!fields_begun) h.code = parse_code(token);
+    } else {
+      h.addresses.insert(addr);  // a constant word ("Y0")
+    }
+  }
+  return !h.code.empty();
+}
+
+// The cycle line of hole template `t` on machine `m`.
+std::optional<HoleLine> hole_line(const Machine& m, const TemplateSpec& t, HoleKind kind) {
+  auto it = m.templates.find(std::string(t.name));
+  if (it == m.templates.end()) return std::nullopt;
+  for (const std::string& line : it->second) {
+    if (line.find("{z") == std::string::npos) continue;
+    HoleLine h;
+    h.kind = kind;
+    const size_t open = line.find('(');
+    const bool call = open != std::string::npos && open > 0 &&
+                      std::all_of(line.begin(), line.begin() + static_cast<long>(open), [](char c) {
+                        return std::isalnum(static_cast<unsigned char>(c));
+                      });
+    if (call ? parse_call_line(line, h) : parse_word_line(line, h)) return h;
+  }
+  return std::nullopt;
+}
+
+bool matches(const HoleLine& h, const NcBlock& b) {
+  if (!h.call.empty())
+    return std::any_of(b.calls.begin(), b.calls.end(),
+                       [&](const NcCall& c) { return c.name == h.call; });
+  if (!has_code(b, h.code)) return false;
+  std::set<std::string> addrs;
+  for (const NcWord& w : b.words)
+    if (w.address != "G" && w.address != "M") addrs.insert(w.address);
+  return addrs == h.addresses;
+}
+
+std::string_view format_of(const std::string& field) {
+  if (field == "x") return "X";
+  if (field == "peck") return "hole_peck";
+  if (field == "dwell") return "dwell";
+  if (field == "feed" || field == "lead") return "F";
+  if (field == "rpm") return "S";
+  return "Z";
+}
+
+// The block's value of every field of `h` (X as a radius); false (reported) on a bad number.
+bool read_fields(State& s, const HoleLine& h, const NcBlock& b, std::map<std::string, double>& v) {
+  if (h.call.empty()) {
+    for (const NcWord& w : b.words) {
+      auto it = h.by_addr.find(w.address);
+      if (it == h.by_addr.end()) continue;
+      v[it->second] = it->second == "x" ? s.radius(w) : s.value(w, format_of(it->second));
+    }
+    return true;
+  }
+  const NcCall* call = nullptr;
+  for (const NcCall& c : b.calls)
+    if (c.name == h.call) call = &c;
+  for (const auto& [field, index] : h.by_arg) {
+    if (index >= call->args.size() || call->args[index].empty()) continue;
+    double x = 0;
+    if (reader::parse_number(call->args[index], x) != reader::NumberStatus::kOk) {
+      s.error(call->cols[index], fmt::format("{} argument {} ({}): invalid number '{}'", h.call,
+                                             index + 1, field, call->args[index]));
+      return false;
+    }
+    const double scale = s.m.format_for(format_of(field)).scale;
+    v[field] = scale != 0 ? x / scale : x;
+  }
+  return true;
+}
+
+// The hole the fields describe, from where the tool is (`at`).
+Hole hole_of(const HoleLine& h, const std::map<std::string, double>& v, double at) {
+  auto has = [&](const char* f) { return v.count(f) > 0; };
+  Hole hole;
+  hole.kind = h.kind;
+  hole.start = has("start") ? v.at("start") : at;
+  hole.bottom = v.at("z");
+  hole.dir = hole.bottom < hole.start ? -1 : 1;
+  hole.r = has("r")                      ? v.at("r")
+           : has("r_inc")                ? hole.start + v.at("r_inc")
+           : has("top") && has("safety") ? v.at("top") - hole.dir * v.at("safety")
+                                         : at;
+  hole.top = has("top") ? v.at("top") : hole.r;
+  hole.peck = has("peck") ? v.at("peck") : 0;
+  hole.dwell = has("dwell") ? v.at("dwell") : has("dwell_ms") ? v.at("dwell_ms") / 1000 : 0;
+  hole.retract = hole.start;
+  if (has("lead")) {
+    hole.lead = v.at("lead");
+  } else if (h.kind == HoleKind::kTap && has("feed")) {
+    hole.lead = v.at("feed");
+  }
+  return hole;
+}
+
+}  // namespace
+
+void hole_comment(State& s, const NcBlock& b) {
+  static constexpr std::string_view kMarker = "hole at cl line ";
+  for (const std::string& c : b.comments) {
+    std::string lower(c);
+    for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    const size_t at = lower.find(kMarker);
+    if (at == std::string::npos) continue;
+    uint32_t n = 0;
+    for (size_t i = at + kMarker.size();
+         i < lower.size() && std::isdigit(static_cast<unsigned char>(lower[i])) && n < 100000000;
+         ++i)
+      n = n * 10 + static_cast<uint32_t>(lower[i] - '0');
+    SimHole h;
+    h.cl_line = n;
+    h.line = s.line;
+    h.line_text = std::string(s.line_text.substr(0, kKeptLineText));
+    h.source = "moves";
+    s.out.holes.push_back(std::move(h));
+    s.hole_open = true;
+  }
+}
+
+bool hole_cycle_block(State& s, const NcBlock& b) {
+  for (const auto& [spec, kind] : kHoleTemplates) {
+    const std::optional<HoleLine> h = hole_line(s.m, *spec, kind);
+    if (!h || !matches(*h, b)) continue;
+    std::map<std::string, double> v;
+    if (!read_fields(s, *h, b, v)) return true;
+    if (v.count("z") == 0) continue;
+    const Hole hole = hole_of(*h, v, s.pos.z);
+    const bool marked = s.hole_open && s.out.holes.back().feed_ends.empty();
+    if (!marked) s.out.holes.emplace_back();
+    s.hole_open = false;
+    SimHole& sh = s.out.holes.back();
+    sh.line = s.line;
+    sh.line_text = std::string(s.line_text.substr(0, kKeptLineText));
+    sh.source = h->call.empty() ? h->code.address + fmt::format("{:g}", h->code.number.value_or(0))
+                                : h->call;
+    sh.r = hole.r;
+    sh.dir = hole.dir;
+    sh.feed_ends = hole_feed_ends(hole);
+    sh.left = true;
+    if (hole.lead > 0) sh.lead = hole.lead;
+    const double x = v.count("x") ? v.at("x") : s.pos.x;
+    s.move(MoveKind::kRapid, {x, hole.r});
+    for (double z : sh.feed_ends) s.move(MoveKind::kFeed, {x, z});
+    s.move(MoveKind::kRapid, {x, hole.retract});
+    ++s.out.calls;
+    return true;
+  }
+  return false;
+}
+
+void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to) {
+  SimHole& h = s.out.holes.back();
+  if (std::fabs(to.x) > 1e-6 || (kind != MoveKind::kRapid && kind != MoveKind::kFeed)) {
+    s.hole_open = false;
+    return;
+  }
+  if (kind == MoveKind::kFeed && std::fabs(to.z - from.z) > 1e-9) {
+    if (h.feed_ends.empty()) {
+      h.dir = to.z < from.z ? -1 : 1;
+      h.r = from.z;
+      h.line = s.line;
+      h.line_text = std::string(s.line_text.substr(0, kKeptLineText));
+    }
+    if (h.feed_ends.empty() || (to.z - h.feed_ends.back()) * h.dir > 1e-9) {
+      if (h.feed_ends.size() < kMaxHolePecks) h.feed_ends.push_back(to.z);
+      h.left = false;
+      return;
+    }
+  }
+  if (!h.feed_ends.empty() && (to.z - h.r) * h.dir <= 1e-9) h.left = true;
+}
+
+}  // namespace clpost::sim

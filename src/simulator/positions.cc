@@ -1,0 +1,26 @@
+// The machine's own positions (templates home and tool_change_position, written without fields):
+// a block that starts with one of their lines' first code moves the tool to a machine position
+// the program does not state (G28 U0., G53 …), so the tool's position is unknown after it.
+#include <string>
+
+#include "machine/machine_schema.h"
+#include "simulator/sim_state.h"
+
+namespace clpost::sim {
+
+bool machine_position_block(State& s, const NcBlock& b) {
+  if (b.words.empty()) return false;
+  for (const TemplateSpec* t : {&tmpl::kHome, &tmpl::kToolChangePosition}) {
+    auto it = s.m.templates.find(std::string(t->name));
+    if (it == s.m.templates.end()) continue;
+    for (size_t i = 0; i < it->second.size(); ++i) {
+      const Code c = template_code(s.m, std::string(t->name), i);
+      if (c.empty() || c.address != "G" || !has_code(b, c)) continue;
+      s.pos_known = false;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace clpost::sim

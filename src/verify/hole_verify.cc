@@ -1,0 +1,87 @@
+#include "verify/hole_verify.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "emitters/cut_pass.h"
+
+namespace clpost {
+
+namespace {
+
+std::string z_text(double z) {
+  return fmt::format("Z{:.4f}", z);
+}
+
+// The first difference between CL hole `h` and the program's `p`, or "".
+std::string hole_difference(const Hole& h, const SimHole& p, double tol) {
+  const std::vector<double> want = hole_feed_ends(h);
+  if (p.feed_ends.empty()) return "the program does not feed into it";
+  if (std::fabs(p.feed_ends.back() - h.bottom) > tol)
+    return fmt::format("bottom {}, CL {}", z_text(p.feed_ends.back()), z_text(h.bottom));
+  if (std::fabs(p.r - h.r) > tol)
+    return fmt::format("feeds in from {}, CL R plane {}", z_text(p.r), z_text(h.r));
+  if (p.feed_ends.size() != want.size())
+    return fmt::format("{} feeds into the hole, CL {}", p.feed_ends.size(), want.size());
+  for (size_t i = 0; i < want.size(); ++i)
+    if (std::fabs(p.feed_ends[i] - want[i]) > tol)
+      return fmt::format("peck {} ends at {}, CL {}", i + 1, z_text(p.feed_ends[i]),
+                         z_text(want[i]));
+  if (!p.left) return fmt::format("the tool does not come back out to {}", z_text(h.r));
+  if (h.kind == HoleKind::kTap && p.lead && std::fabs(*p.lead - h.lead) > 1e-6)
+    return fmt::format("lead {:g}, CL {:g}", *p.lead, h.lead);
+  return {};
+}
+
+void problem(Diagnostics& d, const SimHole* p, std::string msg) {
+  if (p != nullptr) {
+    d.error(SourceLoc{p->line, 1}, p->line_text, std::move(msg));
+  } else {
+    d.error({}, {}, std::move(msg));
+  }
+}
+
+}  // namespace
+
+HoleReport verify_holes(const std::vector<Hole>& cl, const std::vector<SimHole>& nc,
+                        const Machine& m, const VerifyOptions& options, Diagnostics& nc_diags) {
+  HoleReport r;
+  if (cl.empty() && nc.empty()) return r;
+  const double shown = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
+  const double tol = shown + 1e-9;
+  std::vector<bool> used(nc.size(), false);
+  const std::string& from = options.plan_name;
+  for (const Hole& h : cl) {
+    const SimHole* p = nullptr;
+    for (size_t i = 0; i < nc.size() && p == nullptr; ++i)
+      if (!used[i] && nc[i].cl_line == h.cl_line) used[i] = true, p = &nc[i];
+    const std::string what =
+        fmt::format("{}:{}  {} to {}", from, h.cl_line, hole_kind_name(h.kind), z_text(h.bottom));
+    const std::string why = p == nullptr ? "not in the program" : hole_difference(h, *p, tol);
+    if (why.empty()) {
+      r.text += fmt::format("  {}  ok  {}, NC line {}\n", what, p->source, p->line);
+      continue;
+    }
+    ++r.problems;
+    r.text += fmt::format("  {}  DIFFERS: {}\n", what, why);
+    problem(nc_diags, p, fmt::format("hole at {}:{}: {}", from, h.cl_line, why));
+  }
+  for (size_t i = 0; i < nc.size(); ++i) {
+    if (used[i]) continue;
+    ++r.problems;
+    r.text += fmt::format("  hole at NC line {}  DIFFERS: the CL has no such hole\n", nc[i].line);
+    problem(nc_diags, &nc[i],
+            nc[i].cl_line > 0
+                ? fmt::format("a hole for {}:{}, where the CL has none", from, nc[i].cl_line)
+                : std::string("a hole the CL does not have"));
+  }
+  r.text = fmt::format(
+      "holes on the centre line: {} in the CL, {} in the program\n{}{}\n", cl.size(), nc.size(),
+      r.text,
+      r.problems == 0 ? fmt::format("ok: every hole is drilled as planned, within {:g}", shown)
+                      : fmt::format("FAILED: {} of the holes not drilled as planned", r.problems));
+  return r;
+}
+
+}  // namespace clpost

@@ -1,0 +1,198 @@
+// Holes on the spindle axis in whole programs: samples/part-turned.apt (centre drill with a
+// dwell, peck drill, tap) on every machine verifies, and a drilling word edited or dropped fails
+// verify naming the hole; LinuxCNC's own interpreter drills each hole to its planned depths.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <sstream>
+
+#include "test_util.h"
+
+namespace clpost::test {
+namespace {
+
+const std::string kPart = "samples/part-turned.apt";
+
+struct Golden {
+  std::string machine, file;
+};
+const Golden kGoldens[] = {
+    {"generic-lathe", "part-turned.nc"},    {"fanuc-0i-t", "part-turned.nc"},
+    {"haas-st", "part-turned.nc"},          {"sinumerik-840d", "part-turned.mpf"},
+    {"heidenhain-pilot", "part-turned.nc"}, {"linuxcnc-lathe", "part-turned.ngc"},
+    {"nct-2000t", "part-turned.nc"}};
+
+// The golden with the first line holding `needle` changed by `edit`, verified against the part.
+RunResult verify_edited(const Golden& g, const std::string& needle,
+                        std::string (*edit)(const std::string&), std::string& path) {
+  std::istringstream in(read_file(source_dir() + "/samples/golden/" + g.machine + "/" + g.file));
+  std::string text, line;
+  bool done = false;
+  while (std::getline(in, line)) {
+    const bool comment =
+        line.find("hole at") != std::string::npos || line.find("HOLE AT") != std::string::npos;
+    if (!done && !comment && line.find(needle) != std::string::npos) {
+      line = edit(line);
+      done = true;
+    }
+    text += line + "\n";
+  }
+  EXPECT_TRUE(done) << needle << " not in " << g.machine;
+  path = temp_dir() + "/" + g.machine + "-" + g.file;
+  write_file(path, text);
+  return run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " +
+             g.machine + " " + quote(path) + " --cl " + kPart);
+}
+
+std::string first_error(const RunResult& r) {
+  return r.err.substr(0, r.err.find('\n'));
+}
+
+TEST(Holes, EveryGoldenDrillsItsHoles) {
+  for (const Golden& g : kGoldens) {
+    RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " +
+                      g.machine + " samples/golden/" + g.machine + "/" + g.file + " --cl " + kPart);
+    EXPECT_EQ(r.exit_code, 0) << g.machine << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("holes on the centre line: 3 in the CL, 3 in the program\n"),
+              std::string::npos)
+        << g.machine << "\n"
+        << r.out;
+    EXPECT_NE(r.out.find("ok: every hole is drilled as planned"), std::string::npos) << r.out;
+  }
+}
+
+// The peck hole (CL line 37) ends at Z-22: written one deeper, Z-21, on every machine — in the
+// cycle's Z word (G83 Z-22., CYCLE83(…, -22, …), G74 Z-22.) or in the last feed of the moves.
+TEST(Holes, AnEditedDepthWordFailsNamingTheHole) {
+  for (const Golden& g : kGoldens) {
+    std::string p;
+    RunResult r = verify_edited(
+        g, "-22",
+        [](const std::string& l) {
+          std::string s = l;
+          s.replace(s.find("-22"), 3, "-21");
+          return s;
+        },
+        p);
+    EXPECT_EQ(r.exit_code, 1) << g.machine;
+    EXPECT_NE(
+        first_error(r).find(": error: hole at " + kPart + ":37: bottom Z-21.0000, CL Z-22.0000"),
+        std::string::npos)
+        << g.machine << ": " << r.err;
+    EXPECT_NE(r.out.find("FAILED: 1 of the holes not drilled as planned"), std::string::npos)
+        << r.out;
+  }
+}
+
+// The tap (CL line 45, to Z-16) dropped: its cycle block, or the feed into the hole.
+TEST(Holes, ADroppedTapFailsNamingTheHole) {
+  for (const Golden& g : kGoldens) {
+    std::string p;
+    RunResult r = verify_edited(
+        g, "-16", [](const std::string&) { return std::string(); }, p);
+    EXPECT_EQ(r.exit_code, 1) << g.machine;
+    EXPECT_NE(first_error(r).find("error: hole at " + kPart +
+                                  ":45: the program does not feed "
+                                  "into it"),
+              std::string::npos)
+        << g.machine << ": " << r.err;
+  }
+}
+
+// Fanuc's G83 peck Q5000 (5 mm in micrometres) edited to Q4000: from the R point Z2 the pecks
+// end at -2, -6, -10, -14, -18, -22: six feeds where the CL's pecks of 5 make five (-3, -8, -13,
+// -18, -22).
+TEST(Holes, AnEditedPeckWordFails) {
+  std::string p;
+  RunResult r = verify_edited(
+      kGoldens[1], "Q5000",
+      [](const std::string& l) {
+        std::string s = l;
+        s.replace(s.find("Q5000"), 5, "Q4000");
+        return s;
+      },
+      p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(first_error(r),
+            p + ":26:1: error: hole at " + kPart + ":37: 6 feeds into the hole, CL 5");
+}
+
+// LinuxCNC's interpreter on the part: the feeds along the centre line end where the plan's do.
+// Centre drill: R2 -> Z-3 (depth 3 below the face Z0), dwell 0.5 s. Peck drill, R plane Z2,
+// pecks of 5 counted from it: -3, -8, -13, -18 and the bottom -22 (22 deep). Tap: RIGID_TAP to
+// Z-16 at 1.5 per revolution.
+TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
+  if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
+  const std::string dir = temp_dir();
+  const std::string ngc = dir + "/part.ngc";
+  RunResult post = run(quote(clpost_bin()) + " -m linuxcnc-lathe -o " + quote(ngc) + " " +
+                       quote(source_dir() + "/" + kPart));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run_rs274(dir, ngc);
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  std::vector<double> feeds;  // Z of every STRAIGHT_FEED at X0
+  std::vector<std::string> events;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) {
+    double x = 0, y = 0, z = 0;
+    size_t at;
+    if ((at = line.find("STRAIGHT_FEED(")) != std::string::npos &&
+        std::sscanf(line.c_str() + at + 14, "%lf, %lf, %lf", &x, &y, &z) == 3 && x == 0) {
+      feeds.push_back(z);
+    } else if ((at = line.find("DWELL(")) != std::string::npos) {
+      events.push_back(line.substr(at));
+    } else if ((at = line.find("RIGID_TAP(")) != std::string::npos) {
+      events.push_back(line.substr(at));
+    } else if ((at = line.find("START_SPEED_FEED_SYNC(1.5")) != std::string::npos) {
+      events.push_back(line.substr(at));
+    }
+  }
+  // The facing cut ends at X0 Z0 first.
+  EXPECT_EQ(feeds, (std::vector<double>{0, -3, -3, -8, -13, -18, -22}));
+  EXPECT_EQ(events, (std::vector<std::string>{"DWELL(0.5000)", "START_SPEED_FEED_SYNC(1.500000,0)",
+                                              "RIGID_TAP(0.0000, 0.0000, -16.0000)"}));
+}
+
+}  // namespace
+}  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// Verify of the whole path (verify/path_verify.h) on the part's generic-lathe golden: the turning
+// cut to Z-42 (CL line 19) written to Z-41, and the rapid back to Z2 (CL line 22) written as a
+// feed, each fail naming the CL line and the point.
+RunResult verify_generic(const std::string& from, const std::string& to, std::string& path) {
+  std::string text = read_file(source_dir() + "/samples/golden/generic-lathe/part-turned.nc");
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  path = temp_dir() + "/part-turned.nc";
+  write_file(path, text);
+  return run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+             " verify -m generic-lathe " + quote(path) + " --cl " + kPart);
+}
+
+TEST(WholePath, AnEditedCoordinateFails) {
+  std::string p;
+  RunResult r = verify_generic("N110 G1 Z-42.\n", "N110 G1 Z-41.\n", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            p + ":12:1: error: motion at " + kPart +
+                ":19: X24.0000 Z-42.0000 is not reached by the program in order");
+  EXPECT_NE(r.out.find("FAILED: 2 of 17 CL end points not reached as the CL moves"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(WholePath, ARapidWrittenAsAFeedFails) {
+  std::string p;
+  RunResult r = verify_generic("N130 G0 Z2.\n", "N130 G1 Z2.\n", p);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            p + ":15:1: error: motion at " + kPart +
+                ":22: X32.0000 Z2.0000 is reached by a feed move, the CL rapids there");
+}
+
+}  // namespace
+}  // namespace clpost::test
