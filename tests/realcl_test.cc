@@ -131,8 +131,26 @@ void expect_reached_in_order(const std::vector<CanonXZ>& want, const std::vector
 }
 
 // The CATIA lathe programs of ../shared/realcam post on both machines, and LinuxCNC's rs274
-// reaches every CL end point, the arcs of geometric motion included. (DEMO2 drills with
-// CYCLE/TAP, which the drilling cycles will post.)
+// reaches every CL end point, the arcs of geometric motion included. (DEMO2: the next test.)
+// CATIA's DEMO2 taps with CYCLE/TAP,depth,clearance (its "thread without tap head" form): the
+// CL holds neither a feed nor the tap's pitch (SPINDL/0.398,RPM and no FEDRAT), so the lead is
+// unknown and any program would be a guess. clpost stops at the hole, says why, writes nothing.
+TEST(RealCam, TapWithoutFeedOrPitchStopsAtTheHole) {
+  if (realcl_files().empty()) GTEST_SKIP() << "../shared/realcam not found: skipped";
+  const std::string f = realcam_dir() + "/catia_karlo/DEMO2.txt";
+  const std::string dir = temp_dir();
+  for (const char* machine : {"generic-lathe", "linuxcnc-lathe"}) {
+    RunResult r = run(quote(clpost_bin()) + " -m " + machine + " -o " + quote(dir + "/out.nc") +
+                      " " + quote(f));
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find(f + ":33:1: error: CYCLE/TAP of line 32 has no feed: give one in the "
+                             "cycle (MMPM, IPM, MMPR, IPR) or a FEDRAT/ before it\n"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(file_exists(dir + "/out.nc"));
+  }
+}
+
 TEST(RealCam, LatheProgramsPostAndRs274ReachesEveryClPoint) {
   if (realcl_files().empty()) GTEST_SKIP() << "../shared/realcam not found: skipped";
   const std::string dir = temp_dir();
