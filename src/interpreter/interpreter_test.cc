@@ -724,3 +724,20 @@ TEST(InterpreterThreads, ChainOfTwentyTwoGotosIsAnErrorAtTheLast) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// CATIA writes its tools' defaults as SPINDL/0.398,RPM: S0 would be a spindle that does not turn.
+TEST(Interpreter, SpindleSpeedThatRoundsToZeroIsAnError) {
+  Posted p = post("SPINDL/0.398,RPM,CLW\nFINI\n", generic());
+  EXPECT_EQ(p.diags,
+            "t.cl:1:8: error: spindle speed 0.398 would be written as S0 (formats.S: 0 "
+            "decimals): the spindle would not turn\n"
+            "  SPINDL/0.398,RPM,CLW\n"
+            "         ^\n");
+  EXPECT_EQ(post("SPINDL/0.5,RPM,CLW\nFINI\n", generic()).errors, 0u);  // rounds to S1
+}
+
+}  // namespace
+}  // namespace clpost

@@ -1,6 +1,7 @@
 // Feed, spindle and dwell: FEDRAT/, SPINDL/, DELAY/.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 
 #include "interpreter/statement_table.h"
@@ -99,6 +100,16 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
     return;
   }
   if (w.dir) sp.dir = *w.dir;
+  // A speed the S format rounds to nothing would be written as S0: a turning spindle that
+  // stands still on the machine (CATIA writes its tools' SPINDL/0.398,RPM defaults).
+  const NumberFormat& f = s.m.format_for("S");
+  if (std::llround(*w.value * f.scale * std::pow(10.0, f.decimals)) == 0) {
+    error(s, st, w.value_loc,
+          fmt::format("spindle speed {} would be written as S{} (formats.S: {} decimals): the "
+                      "spindle would not turn",
+                      *w.value, s.prog.num("S", *w.value), f.decimals));
+    return;
+  }
   if (!w.css && s.m.max_rpm > 0 && *w.value > s.m.max_rpm) {
     error(s, st, w.value_loc,
           fmt::format("spindle speed {} rpm exceeds the machine's maximum {} rpm", *w.value,
