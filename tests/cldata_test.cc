@@ -73,6 +73,25 @@ TEST(Cldata, BinaryPostsLikeItsAptText) {
   }
 }
 
+// Found by CI's fuzz smoke run: a binary statement had no `source` (its text as written), so
+// the words after COOLNT's were looked up in an empty string (an exception), and a statement
+// written as a comment (GOHOME without a home) would have been an empty comment. Both say the
+// record's APT text now, as the text file's post does.
+TEST(Cldata, BinaryStatementsAreWrittenAsTheirAptText) {
+  const std::string apt = "COOLNT/FLOOD,2\nGOHOME\nFINI\n";
+  const std::string dir = temp_dir();
+  write_file(dir + "/part.apt", apt);
+  write_file(dir + "/part.cl", encode(apt));
+  const RunResult text = post("generic-lathe", dir + "/part.apt");
+  const RunResult bin = post("generic-lathe", dir + "/part.cl");
+  EXPECT_EQ(bin.exit_code, 0) << bin.err;
+  EXPECT_EQ(bin.out, text.out);
+  EXPECT_NE(bin.err.find("warning: COOLNT/FLOOD: the words after it are not written ('2')"),
+            std::string::npos)
+      << bin.err;
+  EXPECT_NE(bin.out.find("(GOHOME)"), std::string::npos) << bin.out;
+}
+
 // The points of cl.tap, checked against window.apt by hand: a 0.2 cutter (radius 0.1) from
 // SPT=(4,0,0) down 0.2 (GODLTA), then inside C2 (centre 22,-3, radius 21.5: the tool centre at
 // 21.4), around the fillet C4 (radius 0.25: 0.15), C1 (centre 0,0, radius 2, the tool outside

@@ -55,10 +55,13 @@ void coolnt_stmt(PostState& s, const Statement& st) {
     return;
   }
   // COOLNT/FLOOD,HIGH, COOLNT/ON,2 …: what follows the coolant is said, not dropped silently.
-  if (st.args.size() > 1)
+  if (st.args.size() > 1) {
+    std::string rest;
+    for (size_t i = 1; i < st.args.size(); ++i)
+      rest += (i > 1 ? "," : "") + std::string(st.args[i].text);
     warning(s, st, st.args[1].loc,
-            fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text,
-                        st.source.substr(st.source.find(st.args[1].text))));
+            fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text, rest));
+  }
   ensure_started(s);
   s.prog.coolant(c);
 }

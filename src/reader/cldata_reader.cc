@@ -384,6 +384,10 @@ void CldataReader::begin(Statement& out, std::string_view major, Statement::Form
   out.loc = loc;
   out.text = {};
   out.args.clear();
+  // What the text reader fills that binary records never have.
+  out.modifiers.clear();
+  out.nested.clear();
+  out.problem = LexProblem{};
 }
 
 void CldataReader::add_number(Statement& out, double v, SourceLoc loc) {
@@ -416,6 +420,7 @@ void CldataReader::finish(Statement& out) {
   }
   out.first_line = ordinal_;
   out.lines.assign(1, line);
+  out.source = line;  // the statement as written: its APT text
 }
 
 void CldataReader::comment_of_record() {
