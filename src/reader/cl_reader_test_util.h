@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -162,6 +164,30 @@ inline Result read(const std::string& text) {
   EXPECT_EQ(m.bytes, f.bytes);
   EXPECT_EQ(m.line, f.line);
   return m;
+}
+
+// Reads the whole file `path` with ClReader (text or binary), handing every statement to
+// `each`; checks that every byte was read. The reader's error count and rendered diagnostics
+// go to `errors` and `diags` (the real-CAM-file tests).
+inline size_t read_whole_file(const std::filesystem::path& path,
+                              const std::function<void(const Statement&)>& each, size_t& errors,
+                              std::string& diags_text) {
+  size_t statements = 0;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  EXPECT_NE(f, nullptr) << path;
+  if (f == nullptr) return 0;
+  Diagnostics diags(path.string());
+  ClReader reader(f, diags);
+  Statement s;
+  while (reader.next(s)) {
+    ++statements;
+    each(s);
+  }
+  EXPECT_EQ(reader.bytes_read(), std::filesystem::file_size(path)) << path;
+  errors = diags.error_count();
+  diags_text = diags.render_all();
+  std::fclose(f);
+  return statements;
 }
 
 }  // namespace clpost::reader_test

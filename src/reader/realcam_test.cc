@@ -10,6 +10,7 @@
 #include <string>
 
 #include "reader/cl_reader.h"
+#include "reader/cl_reader_test_util.h"
 
 namespace clpost {
 namespace {
@@ -27,23 +28,14 @@ struct FileResult {
 
 FileResult read_file(const fs::path& path) {
   FileResult r;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  EXPECT_NE(f, nullptr) << path;
-  if (f == nullptr) return r;
-  Diagnostics diags(path.string());
-  ClReader reader(f, diags);
-  Statement s;
-  while (reader.next(s)) {
-    ++r.statements;
-    if (s.has_problem()) {
-      ++r.problems[std::string(s.major) + " " + std::to_string(s.problem.loc.line) + ":" +
-                   std::to_string(s.problem.loc.col) + " " + s.problem.message];
-    }
-  }
-  EXPECT_EQ(reader.bytes_read(), fs::file_size(path)) << path;
-  r.errors = diags.error_count();
-  r.diags = diags.render_all();
-  std::fclose(f);
+  r.statements = reader_test::read_whole_file(
+      path,
+      [&r](const Statement& s) {
+        if (!s.has_problem()) return;
+        ++r.problems[std::string(s.major) + " " + std::to_string(s.problem.loc.line) + ":" +
+                     std::to_string(s.problem.loc.col) + " " + s.problem.message];
+      },
+      r.errors, r.diags);
   return r;
 }
 

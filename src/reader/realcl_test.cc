@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "reader/cl_reader.h"
+#include "reader/cl_reader_test_util.h"
 
 namespace clpost {
 namespace {
@@ -26,20 +27,12 @@ struct FileResult {
 
 FileResult read_file(const fs::path& path) {
   FileResult r;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  EXPECT_NE(f, nullptr) << path;
-  if (f == nullptr) return r;
-  Diagnostics diags(path.string());
-  ClReader reader(f, diags);
-  Statement s;
-  while (reader.next(s)) {
-    ++r.statements;
-    if (s.major == "OP") r.op_args.push_back(s.args.size());
-  }
-  EXPECT_EQ(reader.bytes_read(), fs::file_size(path)) << path;
-  r.errors = diags.error_count();
-  r.diags = diags.render_all();
-  std::fclose(f);
+  r.statements = reader_test::read_whole_file(
+      path,
+      [&r](const Statement& s) {
+        if (s.major == "OP") r.op_args.push_back(s.args.size());
+      },
+      r.errors, r.diags);
   return r;
 }
 
