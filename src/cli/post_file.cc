@@ -85,7 +85,7 @@ PostOutcome post_file(const PostRequest& req) {
     options.keep_motions = options.keep_motions || req.verify;
     PostSummary summary = post(reader, *req.machine, *sink, diags, options, on_thread);
     out.holes = std::move(summary.holes);
-    out.motions = std::move(summary.motions);
+    out.path = std::move(summary.path);
     out.cycle_time = std::move(summary.cycle_time);
     out.stats = summary.stats;
     out.units = summary.units;
@@ -96,11 +96,11 @@ PostOutcome post_file(const PostRequest& req) {
   if (req.verify && !diags.has_errors()) {
     reader::LineSource src{std::string_view(program)};
     const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
-    const ClExpected expected{out.holes, out.motions};
+    const ClExpected expected{out.holes, out.path};
     VerifyOutcome v = verify_program(src, name, plans, &expected, display_name(req.input),
                                      *req.machine, req.verify_tolerance);
     out.verify_report = std::move(v.report);
-    out.motions = {};  // compared: a batch keeps every outcome
+    out.path = {};  // compared: a batch keeps every outcome
     verify_diagnostics = std::move(v.diagnostics);
     verify_failed = !v.ok;
     out.errors += v.errors;

@@ -22,7 +22,7 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
   Diagnostics diags(program_name);
   Simulation sim;
   SimOptions so;
-  so.keep_moves = cl != nullptr && !cl->motions.empty();
+  so.keep_moves = cl != nullptr && !cl->path.motions.empty();
   if (simulate_nc(src, m, diags, sim, so)) {
     VerifyOptions vo;
     vo.tolerance = tolerance;
@@ -32,7 +32,7 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
     out.report = verify_report_text(report, plans, program_name, m, vo);
     if (cl != nullptr) {
       const HoleReport hr = verify_holes(cl->holes, sim.holes, m, vo, diags);
-      const PathReport pr = verify_path(cl->motions, sim.path, m, vo, diags);
+      const PathReport pr = verify_path(cl->path, sim.path, m, vo, diags);
       out.ok = out.ok && hr.problems == 0 && pr.problems == 0;
       out.report += hr.text + pr.text;
     }
@@ -80,7 +80,7 @@ VerifyOutcome verify_files(const std::string& program, const std::string& cl,
   } else {
     PostOutcome posted = plans_of(cl, m, plans);
     expected.holes = std::move(posted.holes);
-    expected.motions = std::move(posted.motions);
+    expected.path = std::move(posted.path);
     if (!posted.ok) {
       VerifyOutcome out;
       out.errors = posted.errors;

@@ -32,7 +32,7 @@ class Interpreter {
   // The holes written (CYCLE/DRILL …), for verify; moved out.
   std::vector<Hole> take_holes() { return std::move(state_->holes); }
   const CycleTime& cycle_time() const { return state_->clock; }
-  std::vector<ClMotion> take_motions() { return std::move(state_->motions); }
+  ClPath take_path() { return std::move(state_->cl_path); }
 
  private:
   std::unique_ptr<PostState> state_;

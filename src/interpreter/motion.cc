@@ -38,11 +38,49 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
   const bool even = (e_z + 1) % 3 == e_r;
   const bool ccw = (normal > 0) == even;
   s.prog.arc(target, center, ccw);
-  time_arc(s, cl2(s, p), cl2(s, Point3{c.cx, c.cy, c.cz}), ccw);
+  const Vec2 c2 = cl2(s, Point3{c.cx, c.cy, c.cz});
+  time_arc(s, cl2(s, p), c2, ccw);
+  if (s.opts.keep_motions) {
+    ClMotion& mo = s.cl_path.motions.back();
+    mo.rapid = false;
+    mo.arc = ccw ? ArcSense::kCcw : ArcSense::kCw;
+    mo.center = c2;
+  }
   return true;
 }
 
+// The modal state the next motion is made with, as the program will say it.
+CutState cut_state(const PostState& s) {
+  CutState c;
+  if (s.feed_given) {
+    c.feed = s.feed;
+    c.per_rev = s.feed_mode == FeedMode::kPerRev ? 1 : 0;
+  }
+  if (s.spindle.on) {
+    c.spindle = s.spindle.dir == SpindleDir::kCw ? SpindleRun::kCw : SpindleRun::kCcw;
+    c.css = s.spindle.css;
+    c.speed = s.spindle.value;
+    c.max_rpm = s.spindle.css ? s.spindle.css_max_rpm : 0;
+  }
+  c.tool = s.tool.number;
+  c.offset = s.tool.offset;
+  return c;
+}
+
 }  // namespace
+
+void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid) {
+  ClPath& path = s.cl_path;
+  const CutState c = cut_state(s);
+  if (path.states.empty() || !(path.states.back().state == c))
+    path.states.push_back({c, st.loc.line});
+  ClMotion mo;
+  mo.line = st.loc.line;
+  mo.to = to;
+  mo.rapid = rapid;
+  mo.state = static_cast<uint32_t>(path.states.size() - 1);
+  path.motions.push_back(mo);
+}
 
 void move_to(PostState& s, const Statement& st, Point3 p) {
   if (s.dntcut) {  // DNTCUT … CUT: the position is tracked, nothing is written
@@ -53,7 +91,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   }
   ensure_started(s);
   ++s.stats.motions;
-  if (s.opts.keep_motions) s.motions.push_back({st.loc.line, cl2(s, p), s.rapid_next});
+  if (s.opts.keep_motions) record_motion(s, st, cl2(s, p), s.rapid_next);
   if (s.circle) {
     const Circle c = *s.circle;
     s.circle.reset();

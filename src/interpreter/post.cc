@@ -78,7 +78,7 @@ PostSummary PostRun::end(bool reader_gave_up, uint32_t last_line, size_t bytes_i
   summary.bytes_in = bytes_in;
   summary.holes = interp_.take_holes();
   summary.cycle_time = interp_.cycle_time();
-  summary.motions = interp_.take_motions();
+  summary.path = interp_.take_path();
   if (header_) write_with_header(m_, body_.out, header_text(m_, summary, diags_), out_);
   return summary;
 }

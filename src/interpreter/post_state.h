@@ -113,7 +113,7 @@ struct PostState {
   std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
   std::vector<Hole> holes;              // every hole written, in order (verify)
   CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
-  std::vector<ClMotion> motions;        // with PostOptions::keep_motions
+  ClPath cl_path;                       // with PostOptions::keep_motions
   std::optional<Vec2> clock_at;         // where the clock's tool is (lathe frame), if known
   size_t y_warnings = 0;                // points off the lathe plane (warned once)
   std::vector<std::string> noted;       // keys of notes already given once

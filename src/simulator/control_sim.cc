@@ -65,6 +65,12 @@ std::optional<int> State::whole(double v, std::string_view name, int lo, int hi,
 }
 
 void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
+  // The state it is made with: a new entry when it changed.
+  cut.feed = f_register;
+  std::vector<CutStateAt>& states = out.path.states;
+  if (opt.keep_moves && (states.empty() || !(states.back().state == cut)))
+    states.push_back({cut, line});
+  const uint32_t state = states.empty() ? 0 : static_cast<uint32_t>(states.size() - 1);
   // The first move starts where the tool happens to be: not drawn, not a cut's start; where it
   // ends is kept apart (verify of the path).
   if (opt.keep_moves && !pos_known) {
@@ -72,6 +78,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.kind = kind;
     mv.from = mv.to = to;
     mv.line = static_cast<int>(line);
+    mv.state = state;
     out.path.entries.push_back({out.path.moves.size(), mv});
   }
   if (opt.keep_moves && pos_known) {
@@ -82,6 +89,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.center = center;
     mv.line = static_cast<int>(line);
     mv.lead = lead;
+    mv.state = state;
     out.path.moves.push_back(mv);
   }
   if (hole_open) sim::follow_hole(*this, kind, pos, to);
@@ -139,6 +147,7 @@ using sim::State;
 struct Codes {
   Code rapid, linear, cw, ccw, thread, thread_inc, thread_dec, metric, inch, dwell;
   std::string metric_line, inch_line;  // codes written as comments: "[METRIC]"
+  sim::ModalWords modal;
 };
 
 Codes codes_of(const Machine& m) {
@@ -153,6 +162,7 @@ Codes codes_of(const Machine& m) {
   c.metric = sim::parse_code(m.code("metric"));
   c.inch = sim::parse_code(m.code("inch"));
   c.dwell = sim::template_code(m, "dwell");
+  c.modal = sim::modal_words(m);
   const std::string& open = m.comment_open;
   if (!open.empty() && m.code("metric").rfind(open, 0) == 0) c.metric_line = m.code("metric");
   if (!open.empty() && m.code("inch").rfind(open, 0) == 0) c.inch_line = m.code("inch");
@@ -221,58 +231,55 @@ void thread_move(State& s, const NcBlock& b, Vec2 to, const Code& code) {
   s.pullout_open = true;
 }
 
-void run_block(State& s, const NcBlock& b, const Codes& c) {
-  const Machine& m = s.m;
-  // Heidenhain: G31's contour blocks and G80 belong to the cycle.
-  if (s.g31.set) {
-    sim::heidenhain_g31(s, b);
-    return;
-  }
-  if (!c.metric_line.empty() && s.line_text.find(c.metric_line) != std::string_view::npos)
-    s.out.units = LengthUnit::kMm;
-  if (!c.inch_line.empty() && s.line_text.find(c.inch_line) != std::string_view::npos)
-    s.out.units = LengthUnit::kInch;
-  sim::hole_comment(s, b);
-  if (b.words.empty() && b.calls.empty()) return;
+// Units, diameter mode and the blocks that are not moves of the path's own: machine positions,
+// dwells. True when the block is done with; refuses incremental positions.
+bool settings_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::has_code(b, c.metric)) s.out.units = LengthUnit::kMm;
   if (sim::has_code(b, c.inch)) s.out.units = LengthUnit::kInch;
   if (sim::has_code(b, {"DIAMON", {}}) || sim::has_code(b, {"G", 7})) s.diameter = true;
   if (sim::has_code(b, {"DIAMOF", {}}) || sim::has_code(b, {"G", 8})) s.diameter = false;
-  if (sim::machine_position_block(s, b)) return;
+  if (sim::machine_position_block(s, b)) return true;
   for (const NcWord& w : b.words) {
     if ((w.address == "G" && w.has_value() && std::fabs(w.value - 91) < 1e-9) ||
-        ((w.address == "U" || w.address == "W") && m.thread_cycle != ThreadCycle::kHeidenhainG31))
-      return s.error(w.col, fmt::format("'{}{}': incremental positions are not supported by "
-                                        "verify (absolute G90 only)",
-                                        w.address, w.text));
+        ((w.address == "U" || w.address == "W") &&
+         s.m.thread_cycle != ThreadCycle::kHeidenhainG31)) {
+      s.error(w.col, fmt::format("'{}{}': incremental positions are not supported by verify "
+                                 "(absolute G90 only)",
+                                 w.address, w.text));
+      return true;
+    }
   }
-  if (sim::has_code(b, c.dwell)) return;  // G4 X/P/F is a time, not a position
-  if (sim::hole_cycle_block(s, b)) return;
-  // Cycles.
+  return sim::has_code(b, c.dwell);  // G4 X/P/F is a time, not a position
+}
+
+// A canned cycle (holes, threads); true when the block was one.
+bool cycle_block(State& s, const NcBlock& b) {
+  if (sim::hole_cycle_block(s, b)) return true;
   if (!b.calls.empty()) {
-    if (sim::cycle99_call(s, b) || sim::cycle98_call(s, b)) return;
-    return;  // other calls (CYCLE96 undercuts) are not simulated
+    if (!sim::cycle99_call(s, b)) sim::cycle98_call(s, b);
+    return true;  // other calls (CYCLE96 undercuts) are not simulated
   }
-  switch (m.thread_cycle) {
+  switch (s.m.thread_cycle) {
     case ThreadCycle::kFanucG76:
-      if (sim::fanuc_g76(s, b)) return;
+      if (sim::fanuc_g76(s, b)) return true;
       break;
     case ThreadCycle::kHaasG76:
-      if (sim::haas_g76(s, b)) return;
+      if (sim::haas_g76(s, b)) return true;
       break;
     case ThreadCycle::kLinuxcncG76:
-      if (sim::linuxcnc_g76(s, b)) return;
+      if (sim::linuxcnc_g76(s, b)) return true;
       break;
     case ThreadCycle::kHeidenhainG31:
-      if (sim::heidenhain_g31(s, b)) return;
+      if (sim::heidenhain_g31(s, b)) return true;
       break;
     default:
       break;
   }
-  if (m.thread_loop == ThreadLoop::kG92 && sim::g92_cycle(s, b)) return;
+  return s.m.thread_loop == ThreadLoop::kG92 && sim::g92_cycle(s, b);
+}
 
-  // Modal motion.
-  const Code* motion_code = nullptr;
+// The block's modal motion code, if it has one (s.motion set).
+const Code* motion_of(State& s, const NcBlock& b, const Codes& c) {
   struct Entry {
     const Code* code;
     Motion motion;
@@ -284,42 +291,37 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
                            {&c.thread, Motion::kThread},
                            {&c.thread_inc, Motion::kThreadInc},
                            {&c.thread_dec, Motion::kThreadDec}};
+  const Code* found = nullptr;
   for (const Entry& e : entries)
     if (sim::has_code(b, *e.code)) {
       s.motion = e.motion;
-      motion_code = e.code;
+      found = e.code;
     }
-  if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);
+  return found;
+}
 
-  const NcWord* x = b.find("X");
-  const NcWord* z = b.find("Z");
-  if (x == nullptr && z == nullptr) return;
-  Vec2 to = s.pos;
-  if (x) to.x = s.radius(*x);
-  if (z) to.z = s.value(*z);
+// A move to `to` in the modal motion (x, z: the block's position words, one may be null).
+void modal_move(State& s, const NcBlock& b, const Codes& c, const Code* motion_code, Vec2 to,
+                const NcWord* at) {
   const bool was_thread = s.last_was_thread;
   const bool pullout_open = s.pullout_open;
   s.last_was_thread = false;
   s.pullout_open = false;
   switch (s.motion) {
     case Motion::kNone:
-      return s.error((x ? x : z)->col, "a position with no motion mode (G0, G1, ...) in force");
+      return s.error(at->col, "a position with no motion mode (G0, G1, ...) in force");
     case Motion::kRapid:
-      s.move(MoveKind::kRapid, to);
-      return;
+      return s.move(MoveKind::kRapid, to);
     case Motion::kLinear:
       if (pullout_open && !s.out.cuts.empty()) s.out.cuts.back().linear_pullout = to;
-      s.move(MoveKind::kFeed, to);
-      return;
+      return s.move(MoveKind::kFeed, to);
     case Motion::kArcCw:
     case Motion::kArcCcw: {
       const NcWord* i = b.find("I");
       const NcWord* k = b.find("K");
-      if (i == nullptr && k == nullptr)
-        return s.error((x ? x : z)->col, "arc without a centre (I/K)");
+      if (i == nullptr && k == nullptr) return s.error(at->col, "arc without a centre (I/K)");
       const Vec2 center{s.pos.x + (i ? s.value(*i) : 0), s.pos.z + (k ? s.value(*k) : 0)};
-      s.move(s.motion == Motion::kArcCw ? MoveKind::kArcCw : MoveKind::kArcCcw, to, center);
-      return;
+      return s.move(s.motion == Motion::kArcCw ? MoveKind::kArcCw : MoveKind::kArcCcw, to, center);
     }
     case Motion::kThread:
     case Motion::kThreadInc:
@@ -329,12 +331,36 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
                          : s.motion == Motion::kThread    ? c.thread
                          : s.motion == Motion::kThreadInc ? c.thread_inc
                                                           : c.thread_dec;
-      thread_move(s, b, to, code);
-      return;
+      return thread_move(s, b, to, code);
     }
     case Motion::kG92:
       return;
   }
+}
+
+void run_block(State& s, const NcBlock& b, const Codes& c) {
+  // Heidenhain: G31's contour blocks and G80 belong to the cycle.
+  if (s.g31.set) {
+    sim::heidenhain_g31(s, b);
+    return;
+  }
+  if (!c.metric_line.empty() && s.line_text.find(c.metric_line) != std::string_view::npos)
+    s.out.units = LengthUnit::kMm;
+  if (!c.inch_line.empty() && s.line_text.find(c.inch_line) != std::string_view::npos)
+    s.out.units = LengthUnit::kInch;
+  sim::hole_comment(s, b);
+  if (b.words.empty() && b.calls.empty()) return;
+  sim::read_modal_words(s, b, c.modal);
+  if (settings_block(s, b, c) || cycle_block(s, b)) return;
+  const Code* motion_code = motion_of(s, b, c);
+  if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);
+  const NcWord* x = b.find("X");
+  const NcWord* z = b.find("Z");
+  if (x == nullptr && z == nullptr) return;
+  Vec2 to = s.pos;
+  if (x) to.x = s.radius(*x);
+  if (z) to.z = s.value(*z);
+  modal_move(s, b, c, motion_code, to, x ? x : z);
 }
 
 }  // namespace
@@ -391,6 +417,7 @@ bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, 
     s.ok = false;
   }
   out.path.units = out.units;
+  out.path.readback = codes.modal.readback;
   return s.ok;
 }
 

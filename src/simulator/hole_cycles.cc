@@ -202,6 +202,7 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
     if (!read_fields(s, *h, b, v)) return true;
     if (v.count("z") == 0) continue;
     const Hole hole = hole_of(*h, v, s.pos.z);
+    if (const NcWord* f = b.find("F")) s.f_register = s.value(*f, "F");  // F is modal
     const bool marked = s.hole_open && s.out.holes.back().feed_ends.empty();
     if (!marked) s.out.holes.emplace_back();
     s.hole_open = false;

@@ -31,6 +31,28 @@ bool has_code(const NcBlock& b, const Code& c);
 // The first word of a template's line `index` ("G76" of "G76 X{x} ..."); empty when absent.
 Code template_code(const Machine& m, const std::string& name, size_t index = 0);
 
+// A field of a template word: "{offset:02}" is {"offset", 2} (width 0: any).
+struct TemplateField {
+  std::string name;
+  int width = 0;
+};
+
+// How the machine's program states the modal state verify compares (modal_words.cc): the
+// feed-mode and spindle codes and the words of its tool and spindle templates.
+struct ModalWords {
+  Code per_min, per_rev, cw, ccw, stop;
+  Code rpm_mode, css_mode;                 // the first codes of the speed lines (G97, G96)
+  std::string rpm_address, css_address;    // the words of {rpm} and {speed} ("S")
+  Code limit_code;                         // a CSS limit block's code (G50), if it needs one
+  std::string limit_address;               // the word of {max_rpm} ("S", "D", "LIMS=")
+  std::string tool_address;                // the word of {tool} ("T")
+  std::vector<TemplateField> tool_fields;  // that word's fields, in order
+  std::string offset_address;              // {offset} in a word of its own ("D"), else empty
+  std::vector<Code> tool_codes;            // the tool line's codes, each needed (M6 of T1 M6)
+  StateReadback readback;
+};
+ModalWords modal_words(const Machine& m);
+
 enum class Motion {
   kNone,
   kRapid,
@@ -88,6 +110,7 @@ struct State {
   PendingG31 g31;
   G92Modal g92;
   bool hole_open = false;  // out.holes.back() is followed move by move (a "hole at" comment)
+  CutState cut;            // feed mode, spindle and tool as the program last stated them
 
   // A word's value as the control reads it: divided by the format's scale (machine formats).
   double value(const NcWord& w, std::string_view format) const;
@@ -117,6 +140,8 @@ bool cycle98_call(State& s, const NcBlock& b);
 // Holes (hole_cycles.cc): a "hole at CL line N" comment opens a hole followed move by move;
 // a block of one of the machine's hole_* templates is that hole's cycle, expanded.
 void hole_comment(State& s, const NcBlock& b);
+// The feed mode, spindle and tool words of `b` into s.cut (modal_words.cc).
+void read_modal_words(State& s, const NcBlock& b, const ModalWords& w);
 bool hole_cycle_block(State& s, const NcBlock& b);
 void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to);
 // A block of the machine's home or tool_change_position template (positions.cc): the tool goes

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/cl_motion.h"
 #include "planner/thread_plan.h"
 
 namespace clpost {
@@ -22,9 +23,22 @@ struct Move {
   MoveKind kind = MoveKind::kRapid;
   Vec2 from;
   Vec2 to;
-  Vec2 center;      // arcs only
-  int line = 0;     // NC (or CL) line the move comes from, 1-based; cycle moves: the call's line
-  double lead = 0;  // kThread: lead per revolution along the dominant axis, program units
+  Vec2 center;         // arcs only
+  int line = 0;        // NC (or CL) line the move comes from, 1-based; cycle moves: the call's line
+  double lead = 0;     // kThread: lead per revolution along the dominant axis, program units
+  uint32_t state = 0;  // the modal state it is made with: index into Toolpath::states
+};
+
+// Which parts of CutState the program states in words the simulation reads back (the machine's
+// codes and its templates tool_change, spindle_rpm, spindle_css, spindle_stop): what verify can
+// compare. A part the machine file writes in a form that cannot be read back stays false.
+struct StateReadback {
+  bool feed_mode = false;  // codes feed_per_min and feed_per_rev
+  bool spindle = false;    // spindle_cw, spindle_ccw, the speed word of spindle_rpm
+  bool css = false;        // spindle_css's speed line has a code of its own (G96)
+  bool max_rpm = false;    // spindle_css's {max_rpm} word
+  bool tool = false;       // tool_change's {tool} word
+  bool offset = false;     // tool_change's {offset}
 };
 
 // A program's whole motion, in order.
@@ -38,6 +52,8 @@ struct Toolpath {
     Move move;
   };
   std::vector<Entry> entries;
+  std::vector<CutStateAt> states;  // the moves' modal states, a new entry at each change
+  StateReadback readback;
 };
 
 // One thread's passes seen in its cross-section: where the tool's V sits at each pass.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "emitters/cut_pass.h"
+#include "emitters/written_value.h"
 
 namespace clpost {
 
@@ -28,15 +29,8 @@ size_t find_move(const std::vector<Move>& moves, size_t from, const ClMotion& c,
   return moves.size();
 }
 
-}  // namespace
-
-PathReport verify_path(const std::vector<ClMotion>& cl, const Toolpath& path, const Machine& m,
-                       const VerifyOptions& options, Diagnostics& nc_diags) {
-  PathReport r;
-  if (cl.empty()) return r;
-  const double shown = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
-  const double tol = shown + 1e-9;
-  // Every move in order, the entries from an unknown position among them.
+// Every move in order, the entries from an unknown position among them.
+std::vector<Move> all_moves(const Toolpath& path) {
   std::vector<Move> moves;
   moves.reserve(path.moves.size() + path.entries.size());
   size_t e = 0;
@@ -45,36 +39,200 @@ PathReport verify_path(const std::vector<ClMotion>& cl, const Toolpath& path, co
       moves.push_back(path.entries[e].move);
     if (i < path.moves.size()) moves.push_back(path.moves[i]);
   }
-  const double xs = m.diameter_output ? 2 : 1;
+  return moves;
+}
+
+// What the comparison needs and what it found.
+struct PathCheck {
+  PathCheck(const ClPath& c, const Toolpath& p, const Machine& machine, const VerifyOptions& o,
+            Diagnostics& d, double tolerance)
+      : cl(c),
+        path(p),
+        m(machine),
+        options(o),
+        diags(d),
+        tol(tolerance),
+        xs(machine.diameter_output ? 2 : 1) {}
+  const ClPath& cl;
+  const Toolpath& path;
+  const Machine& m;
+  const VerifyOptions& options;
+  Diagnostics& diags;
+  double tol;
+  double xs;  // X as the program writes it (2: diameters)
+  size_t problems = 0;
+  size_t arcs = 0;
   std::string first;
-  size_t next = 0;
-  for (const ClMotion& c : cl) {
-    const size_t j = find_move(moves, next, c, tol, true);
-    if (j < moves.size()) {
-      next = j + 1;
+  // Each kind of state difference (tool, feed, spindle) as last reported, CL and program: a
+  // difference is reported once, where it begins.
+  std::pair<std::string, std::string> reported[3];
+
+  std::string at(const ClMotion& c) const {
+    return fmt::format("{}:{}", options.plan_name, c.line);
+  }
+  std::string point(Vec2 p) const { return fmt::format("X{:.4f} Z{:.4f}", p.x * xs, p.z); }
+  void problem(const Move* mv, const std::string& why) {
+    if (problems++ == 0) first = why;
+    diags.error(SourceLoc{mv ? static_cast<uint32_t>(mv->line) : 0, 1}, {}, why);
+  }
+};
+
+std::string arc_name(const Machine& m, MoveKind k) {
+  if (k == MoveKind::kArcCw) return fmt::format("a clockwise arc ({})", m.code("arc_cw"));
+  if (k == MoveKind::kArcCcw) return fmt::format("a counter-clockwise arc ({})", m.code("arc_ccw"));
+  return fmt::format("a straight line ({})", m.code("linear"));
+}
+
+// The arc (or straight feed) of CL motion `c` against the program's move `mv`.
+void check_arc(PathCheck& k, const ClMotion& c, const Move& mv) {
+  if (c.rapid) return;
+  const MoveKind want = c.arc == ArcSense::kCw    ? MoveKind::kArcCw
+                        : c.arc == ArcSense::kCcw ? MoveKind::kArcCcw
+                                                  : MoveKind::kFeed;
+  if (want != MoveKind::kFeed) ++k.arcs;
+  if (mv.kind != want)
+    return k.problem(&mv, fmt::format("motion at {}: the CL cuts {} to {}, the program {}", k.at(c),
+                                      arc_name(k.m, want), k.point(c.to), arc_name(k.m, mv.kind)));
+  if (want != MoveKind::kFeed && !near(mv.center, c.center, k.tol))
+    k.problem(&mv, fmt::format("arc at {}: the CL turns around {}, the program around {}", k.at(c),
+                               k.point(c.center), k.point(mv.center)));
+}
+
+bool same_as_written(const Machine& m, std::string_view format, double cl, double program) {
+  return std::fabs(as_read(m, format, cl) - program) <= least_increment(m, format) / 2 + 1e-9;
+}
+
+std::string tool_text(const CutState& s, const StateReadback& r) {
+  if (s.tool < 0) return "no tool";
+  return s.offset < 0 || !r.offset ? fmt::format("tool {}", s.tool)
+                                   : fmt::format("tool {} offset {}", s.tool, s.offset);
+}
+
+std::string feed_text(const CutState& s, LengthUnit u) {
+  const char* unit = u == LengthUnit::kInch ? "in" : "mm";
+  if (s.feed <= 0) return "no feed";
+  if (s.per_rev < 0) return fmt::format("{:g} with no feed mode", s.feed);
+  return fmt::format("{:g} {}/{}", s.feed, unit, s.per_rev ? "rev" : "min");
+}
+
+std::string spindle_text(const CutState& s, LengthUnit u) {
+  if (s.spindle == SpindleRun::kOff) return "stopped";
+  const char* dir = s.spindle == SpindleRun::kCw ? "CW" : "CCW";
+  if (!s.css) return fmt::format("{} at {:g} rpm", dir, s.speed);
+  const std::string limit = s.max_rpm > 0 ? fmt::format(", limit {:g} rpm", s.max_rpm) : "";
+  return fmt::format("{} at {:g} {}/min (CSS{})", dir, s.speed, u == LengthUnit::kInch ? "ft" : "m",
+                     limit);
+}
+
+bool same_tool(const StateReadback& r, const CutState& a, const CutState& b) {
+  if (!r.tool || a.tool < 0) return true;
+  return a.tool == b.tool && (!r.offset || a.offset < 0 || a.offset == b.offset);
+}
+
+bool same_feed(const Machine& m, const StateReadback& r, const CutState& a, const CutState& b) {
+  if (a.feed <= 0) return true;
+  return same_as_written(m, "F", a.feed, b.feed) &&
+         (!r.feed_mode || a.per_rev < 0 || a.per_rev == b.per_rev);
+}
+
+bool same_spindle(const Machine& m, const StateReadback& r, const CutState& a, const CutState& b) {
+  if (!r.spindle) return true;
+  if (a.spindle != b.spindle) return false;
+  if (a.spindle == SpindleRun::kOff) return true;
+  if (r.css && a.css != b.css) return false;
+  if (!same_as_written(m, "S", a.speed, b.speed)) return false;
+  return !a.css || !r.max_rpm || a.max_rpm <= 0 || same_as_written(m, "S", a.max_rpm, b.max_rpm);
+}
+
+// Feed, spindle and tool of CL motion `c` against the program's state at `mv`.
+void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
+  if (c.state >= k.cl.states.size() || mv.state >= k.path.states.size()) return;
+  const CutState& a = k.cl.states[c.state].state;
+  const CutState& b = k.path.states[mv.state].state;
+  const StateReadback& r = k.path.readback;
+  const LengthUnit u = k.path.units;
+  const bool differs[3] = {!same_tool(r, a, b), !same_feed(k.m, r, a, b),
+                           !same_spindle(k.m, r, a, b)};
+  static constexpr const char* kWhat[3] = {"tool", "feed", "spindle"};
+  const bool compared[3] = {true, !c.rapid, !c.rapid};  // feed and spindle: where it cuts
+  for (int i = 0; i < 3; ++i) {
+    if (!compared[i]) continue;
+    if (!differs[i]) {
+      k.reported[i] = {};
       continue;
     }
-    const size_t k = find_move(moves, next, c, tol, false);
-    const std::string where = fmt::format("X{:.4f} Z{:.4f}", c.to.x * xs, c.to.z);
-    std::string why =
-        k < moves.size()
-            ? fmt::format("{}:{}: {} is reached by a {} move, the CL {} there", options.plan_name,
-                          c.line, where, moves[k].kind == MoveKind::kRapid ? "rapid" : "feed",
-                          c.rapid ? "rapids" : "cuts")
-            : fmt::format("{}:{}: {} is not reached by the program in order", options.plan_name,
-                          c.line, where);
-    if (r.problems++ == 0) first = why;
-    const Move* at = k < moves.size() ? &moves[k] : next > 0 ? &moves[next - 1] : nullptr;
-    nc_diags.error(SourceLoc{at ? static_cast<uint32_t>(at->line) : 0, 1}, {}, "motion at " + why);
-    if (k < moves.size()) next = k + 1;
+    std::pair<std::string, std::string> texts =
+        i == 0   ? std::pair{tool_text(a, r), tool_text(b, r)}
+        : i == 1 ? std::pair{feed_text(a, u), feed_text(b, u)}
+                 : std::pair{spindle_text(a, u), spindle_text(b, u)};
+    if (k.reported[i] == texts) continue;
+    k.problem(&mv, fmt::format("{} at {}: CL {} (since CL line {}), program {}", kWhat[i], k.at(c),
+                               texts.first, k.cl.states[c.state].line, texts.second));
+    k.reported[i] = std::move(texts);
   }
-  r.text = r.problems == 0
-               ? fmt::format("motions: {} CL end points, every one reached in order, within {:g}\n",
-                             cl.size(), shown)
-               : fmt::format(
-                     "FAILED: {} of {} CL end points not reached as the CL moves; the "
-                     "first: {}\n",
-                     r.problems, cl.size(), first);
+}
+
+// The end point of CL motion `c` from move `next` on: the matching move's index, or
+// moves.size() (reported).
+size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next,
+                       const ClMotion& c) {
+  const size_t j = find_move(moves, next, c, k.tol, true);
+  if (j < moves.size()) return j;
+  const size_t other = find_move(moves, next, c, k.tol, false);
+  const Move* mv = other < moves.size() ? &moves[other] : next > 0 ? &moves[next - 1] : nullptr;
+  if (other < moves.size()) {
+    k.problem(mv,
+              fmt::format("motion at {}: {} is reached by a {} move, the CL {} there", k.at(c),
+                          k.point(c.to), moves[other].kind == MoveKind::kRapid ? "rapid" : "feed",
+                          c.rapid ? "rapids" : "cuts"));
+  } else {
+    k.problem(mv, fmt::format("motion at {}: {} is not reached by the program in order", k.at(c),
+                              k.point(c.to)));
+  }
+  return other;
+}
+
+// What the program's words do not let verify compare, said in the report.
+std::string not_compared(const StateReadback& r) {
+  std::string out;
+  const auto add = [&out](bool readable, std::string_view what) {
+    if (!readable) out += fmt::format("{}{}", out.empty() ? "; not compared: " : ", ", what);
+  };
+  add(r.tool, "the tool (template tool_change has no {tool} word to read)");
+  add(!r.tool || r.offset, "the offset (template tool_change has no {offset})");
+  add(r.feed_mode, "the feed mode (codes feed_per_min, feed_per_rev)");
+  add(r.spindle, "the spindle (codes spindle_cw/ccw, templates spindle_rpm, spindle_stop)");
+  add(!r.spindle || r.css, "RPM or CSS (template spindle_css's speed line has no code)");
+  add(!r.css || r.max_rpm, "the CSS limit");
+  return out;
+}
+
+}  // namespace
+
+PathReport verify_path(const ClPath& cl, const Toolpath& path, const Machine& m,
+                       const VerifyOptions& options, Diagnostics& nc_diags) {
+  PathReport r;
+  if (cl.motions.empty()) return r;
+  const double shown = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
+  PathCheck k(cl, path, m, options, nc_diags, shown + 1e-9);
+  const std::vector<Move> moves = all_moves(path);
+  size_t next = 0;
+  for (const ClMotion& c : cl.motions) {
+    const size_t j = check_end_point(k, moves, next, c);
+    if (j >= moves.size()) continue;
+    next = j + 1;
+    if (same_kind(c, moves[j])) check_arc(k, c, moves[j]);
+    check_state(k, c, moves[j]);
+  }
+  r.problems = k.problems;
+  r.text = k.problems == 0
+               ? fmt::format(
+                     "motions: {} CL end points, every one reached in order, within {:g}; {} "
+                     "arc{} by {} centre; feed, spindle and tool as the CL ({} states){}\n",
+                     cl.motions.size(), shown, k.arcs, k.arcs == 1 ? "" : "s",
+                     k.arcs == 1 ? "its" : "their", cl.states.size(), not_compared(path.readback))
+               : fmt::format("FAILED: {} difference{} over {} CL motions; the first: {}\n",
+                             k.problems, k.problems == 1 ? "" : "s", cl.motions.size(), k.first);
   return r;
 }
 

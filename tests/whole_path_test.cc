@@ -1,0 +1,189 @@
+// Verify of the whole program (verify/path_verify.h): besides threads and holes, every CL motion's
+// end point in order, each arc's sense and centre, and the tool, feed and spindle each motion is
+// made with, read back through the machine's codes and templates. Each case edits one word of a
+// reviewed golden and expects the exact first error: the NC line, the CL line and both values.
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace clpost::test {
+namespace {
+
+struct Edit {
+  const char* machine;
+  const char* golden;  // under samples/golden/<machine>/
+  const char* cl;      // under samples/
+  const char* from;    // the text edited (its first occurrence)
+  const char* to;
+  int nc_line;          // where the first error is
+  const char* message;  // the first error's message
+  int errors;           // how many errors in all
+};
+
+const Edit kEdits[] = {
+    // End points: a cut to the wrong place; a rapid written as a feed.
+    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N110 G1 Z-42.\n", "N110 G1 Z-41.\n", 12,
+     "motion at samples/part-turned.apt:19: X24.0000 Z-42.0000 is not reached by the program in "
+     "order",
+     2},
+    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N130 G0 Z2.\n", "N130 G1 Z2.\n", 15,
+     "motion at samples/part-turned.apt:22: X32.0000 Z2.0000 is reached by a feed move, the CL "
+     "rapids there",
+     1},
+    // Spindle: SPINDL/800,RPM,CLW (CL line 7) is in force from the first motion (line 11); it is
+    // compared at the first feed move, GOTO/0,0,0 at CL line 14, NC line 10.
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N40 G97 S800 M3", "N40 G97 S900 M3", 10,
+     "spindle at samples/part-turned.apt:14: CL CW at 800 rpm (since CL line 11), program CW at "
+     "900 rpm",
+     1},
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N40 G97 S800 M3", "N40 G97 S800 M4", 10,
+     "spindle at samples/part-turned.apt:14: CL CW at 800 rpm (since CL line 11), program CCW at "
+     "800 rpm",
+     1},
+    {"haas-st", "part-turned.nc", "part-turned.apt", "G97 S700 M3", "M5", 80,
+     "spindle at samples/part-turned.apt:65: CL CW at 700 rpm (since CL line 64), program stopped",
+     1},
+    // Feed: FEDRAT/0.2,MMPR as F0.2 with G99 (per revolution on a Fanuc).
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "G99 F0.2", "G99 F0.25", 10,
+     "feed at samples/part-turned.apt:14: CL 0.2 mm/rev (since CL line 11), program 0.25 mm/rev",
+     1},
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "G99 F0.2", "G98 F0.2", 10,
+     "feed at samples/part-turned.apt:14: CL 0.2 mm/rev (since CL line 11), program 0.2 mm/min", 1},
+    // Tool: LOADTL/6,ADJUST,6 as T0606; T0605 is tool 6 with offset 5, reported once although
+    // the CL's state changes at the next motion.
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N420 T0606", "N420 T0605", 46,
+     "tool at samples/part-turned.apt:64: CL tool 6 offset 6 (since CL line 64), program tool 6 "
+     "offset 5",
+     1},
+    {"sinumerik-840d", "bushing-creo.mpf", "bushing-creo.ncl", "T2 D2", "T2 D1", 7,
+     "tool at samples/bushing-creo.ncl:15: CL tool 2 offset 2 (since CL line 15), program tool 2 "
+     "offset 1",
+     1},
+    // LinuxCNC: T2 without M6 selects the tool but does not change it.
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43", "T2 G43", 7,
+     "tool at samples/bushing-creo.ncl:15: CL tool 2 (since CL line 15), program no tool", 1},
+    // Constant surface speed: SPINDL/SFM,400,CLW,MAXRPM,2500 in an inch file.
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G50 S2500", "G50 S2000", 10,
+     "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min (CSS, limit 2500 rpm) (since CL "
+     "line 17), program CW at 400 ft/min (CSS, limit 2000 rpm)",
+     1},
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G96 S400", "G97 S400", 10,
+     "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min (CSS, limit 2500 rpm) (since CL "
+     "line 17), program CW at 400 rpm",
+     1},
+    {"sinumerik-840d", "bushing-creo.mpf", "bushing-creo.ncl", "LIMS=2500", "LIMS=3000", 8,
+     "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min (CSS, limit 2500 rpm) (since CL "
+     "line 17), program CW at 400 ft/min (CSS, limit 3000 rpm)",
+     1},
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "D2500 S400", "D2500 S410", 8,
+     "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min (CSS, limit 2500 rpm) (since CL "
+     "line 17), program CW at 410 ft/min (CSS, limit 2500 rpm)",
+     1},
+    {"heidenhain-pilot", "bushing-creo.nc", "bushing-creo.ncl", "G26 S2500", "G26 S2400", 10,
+     "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min (CSS, limit 2500 rpm) (since CL "
+     "line 17), program CW at 400 ft/min (CSS, limit 2400 rpm)",
+     1},
+    // Arcs: the CL's CIRCLE (centre X0.4 radius, Z-0.05: I0.05 K0 from X0.35 Z-0.05) ends at
+    // X0.8 Z0 turning counter-clockwise.
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G3 X0.8 Z0. I0.05 K0.",
+     "G2 X0.8 Z0. I0.05 K0.", 13,
+     "motion at samples/bushing-creo.ncl:22: the CL cuts a counter-clockwise arc (G3) to X0.8000 "
+     "Z0.0000, the program a clockwise arc (G2)",
+     1},
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G3 X0.8 Z0. I0.05 K0.",
+     "G3 X0.8 Z0. I0.05 K0.01", 13,
+     "arc at samples/bushing-creo.ncl:22: the CL turns around X0.8000 Z-0.0500, the program around "
+     "X0.8000 Z-0.0400",
+     1},
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G3 X0.8 Z0. I0.05 K0.", "G1 X0.8 Z0.",
+     13,
+     "motion at samples/bushing-creo.ncl:22: the CL cuts a counter-clockwise arc (G3) to X0.8000 "
+     "Z0.0000, the program a straight line (G1)",
+     1},
+};
+
+class WholePath : public ::testing::TestWithParam<Edit> {};
+
+TEST_P(WholePath, AnEditedWordFailsAtItsLine) {
+  const Edit& e = GetParam();
+  const std::string golden =
+      source_dir() + "/samples/golden/" + e.machine + "/" + std::string(e.golden);
+  std::string text = read_file(golden);
+  const size_t at = text.find(e.from);
+  ASSERT_NE(at, std::string::npos) << e.from << " not in " << golden;
+  text.replace(at, std::string(e.from).size(), e.to);
+  const std::string path = temp_dir() + "/" + e.golden;
+  write_file(path, text);
+  const RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                          " verify -m " + e.machine + " " + quote(path) + " --cl samples/" + e.cl);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            path + ":" + std::to_string(e.nc_line) + ":1: error: " + e.message);
+  const std::string failed =
+      "FAILED: " + std::to_string(e.errors) + " difference" + (e.errors == 1 ? "" : "s") + " over ";
+  EXPECT_NE(r.out.find(failed), std::string::npos) << r.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Edits, WholePath, ::testing::ValuesIn(kEdits));
+
+// The goldens as written pass, and the report says what was compared: the part's 17 GOTOs and
+// its 3 holes' retracts (20 end points), 6 states (a tool change each); the bushing's 6 motions,
+// its one arc, and 2 states (its first motion, a rapid, comes before its FEDRAT).
+TEST(WholePathGoldens, EveryGoldenCutsTheCl) {
+  struct Case {
+    const char* machine;
+    const char* ext;
+    const char* tolerance;
+    bool offset;  // the tool_change template writes the offset
+  };
+  const Case cases[] = {
+      {"generic-lathe", "nc", "0.001", true},     {"fanuc-0i-t", "nc", "0.005", true},
+      {"haas-st", "nc", "0.005", true},           {"sinumerik-840d", "mpf", "0.001", true},
+      {"heidenhain-pilot", "nc", "0.001", false}, {"linuxcnc-lathe", "ngc", "1e-05", false},
+      {"nct-2000t", "nc", "0.001", true}};
+  const std::string not_compared =
+      "; not compared: the offset (template tool_change has no {offset})";
+  for (const Case& c : cases) {
+    const std::string tail = c.offset ? "\n" : not_compared + "\n";
+    const auto check = [&](const std::string& sample, const std::string& expected) {
+      const std::string stem = sample.substr(0, sample.find('.'));
+      const RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                              " verify -m " + c.machine + " samples/golden/" + c.machine + "/" +
+                              stem + "." + c.ext + " --cl samples/" + sample);
+      EXPECT_EQ(r.exit_code, 0) << c.machine << " " << sample << "\n" << r.out << r.err;
+      EXPECT_NE(r.out.find(expected), std::string::npos) << c.machine << "\n" << r.out;
+    };
+    check("part-turned.apt",
+          std::string("motions: 20 CL end points, every one reached in order, within ") +
+              c.tolerance +
+              "; 0 arcs by their centre; feed, spindle and tool as the CL (6 states)" + tail);
+    check("bushing-creo.ncl",
+          std::string("motions: 6 CL end points, every one reached in order, within ") +
+              c.tolerance + "; 1 arc by its centre; feed, spindle and tool as the CL (2 states)" +
+              tail);
+  }
+}
+
+// A machine whose tool change is a comment: the tool cannot be read back, and the report says
+// so instead of passing it silently.
+TEST(WholePathGoldens, AToolChangeWithoutAToolWordIsNotCompared) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/comment-tool.yaml", read_file(source_dir() + "/machines/fanuc-0i-t.yaml") +
+                                             "templates: {tool_change: [\"(TOOL CHANGE)\"]}\n");
+  const std::string machine = quote(dir + "/comment-tool.yaml");
+  const RunResult r =
+      run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " -m " + machine +
+          " samples/part-turned.apt --verify -o " + quote(dir + "/part.nc"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const RunResult v =
+      run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " + machine +
+          " " + quote(dir + "/part.nc") + " --cl samples/part-turned.apt");
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  EXPECT_NE(v.out.find("feed, spindle and tool as the CL (6 states); not compared: the tool "
+                       "(template tool_change has no {tool} word to read)\n"),
+            std::string::npos)
+      << v.out;
+}
+
+}  // namespace
+}  // namespace clpost::test
