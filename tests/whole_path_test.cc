@@ -4,6 +4,9 @@
 // reviewed golden and expects the exact first error: the NC line, the CL line and both values.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <sstream>
+
 #include "test_util.h"
 
 namespace clpost::test {
@@ -183,6 +186,58 @@ TEST(WholePathGoldens, AToolChangeWithoutAToolWordIsNotCompared) {
                        "(template tool_change has no {tool} word to read)\n"),
             std::string::npos)
       << v.out;
+}
+
+// LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
+// outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
+// feed the CL says, by hand from the CL files:
+// - part-turned.apt: T1 SPINDL/800 FEDRAT/0.2,MMPR (face, turn); T2 1500 rpm, the centre drill's
+//   MMPR 0.05; T3 900 rpm, the peck drill's 0.12; T6 700 rpm, FEDRAT/0.05,MMPR (part off);
+// - bushing-creo.ncl: T2 SFM 400 with MAXRPM 2500, FEDRAT/0.006,IPR.
+std::vector<std::string> rs274_feed_states(const std::string& ngc) {
+  const RunResult r = run_rs274(source_dir() + "/samples/golden/linuxcnc-lathe", ngc);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> out;
+  std::istringstream in(r.out);
+  std::string line, tool = "?", mode = "rpm", speed = "?", dir = "stopped", feed_mode = "?",
+                    feed = "?";
+  bool synced = false;
+  const auto arg = [](const std::string& l, const char* word) {
+    const size_t at = l.find(word);
+    if (at == std::string::npos) return std::string();
+    const size_t open = l.find('(', at) + 1;
+    return l.substr(open, l.find(')', open) - open);
+  };
+  while (std::getline(in, line)) {
+    if (std::string a = arg(line, "CHANGE_TOOL("); !a.empty()) tool = "T" + a;
+    if (std::string a = arg(line, "SET_SPINDLE_MODE("); !a.empty())
+      mode = a.substr(a.find(' ') + 1) == "0.0000" ? "rpm" : "css max " + a.substr(a.find(' ') + 1);
+    if (std::string a = arg(line, "SET_SPINDLE_SPEED("); !a.empty()) speed = a.substr(3);
+    if (line.find("START_SPINDLE_CLOCKWISE") != std::string::npos) dir = "CW";
+    if (line.find("START_SPINDLE_COUNTERCLOCKWISE") != std::string::npos) dir = "CCW";
+    if (line.find("STOP_SPINDLE_TURNING") != std::string::npos) dir = "stopped";
+    if (std::string a = arg(line, "SET_FEED_MODE("); !a.empty())
+      feed_mode = a == "0, 1" ? "/rev" : "/min";
+    if (std::string a = arg(line, "SET_FEED_RATE("); !a.empty()) feed = a;
+    if (line.find("START_SPEED_FEED_SYNC") != std::string::npos) synced = true;
+    if (line.find("STOP_SPEED_FEED_SYNCH") != std::string::npos) synced = false;
+    const bool feeds = line.find("STRAIGHT_FEED(") != std::string::npos ||
+                       line.find("ARC_FEED(") != std::string::npos;
+    if (!feeds || synced) continue;
+    std::string s = tool + " " + dir + " " + speed + " " + mode + " F" + feed + feed_mode;
+    if (out.empty() || out.back() != s) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+TEST(WholePathGoldens, Rs274FeedsWithTheClToolSpindleAndFeed) {
+  if (!rs274_available()) GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace)";
+  EXPECT_EQ(rs274_feed_states("part-turned.ngc"),
+            (std::vector<std::string>{
+                "T1 CW 800.0000 rpm F0.2000/rev", "T2 CW 1500.0000 rpm F0.0500/rev",
+                "T3 CW 900.0000 rpm F0.1200/rev", "T6 CW 700.0000 rpm F0.0500/rev"}));
+  EXPECT_EQ(rs274_feed_states("bushing-creo.ngc"),
+            (std::vector<std::string>{"T2 CW 400.0000 css max 2500.0000 F0.0060/rev"}));
 }
 
 }  // namespace
