@@ -28,10 +28,12 @@ struct CutState {
   bool operator==(const CutState&) const = default;
 };
 
-// A state and the line where it came into force (a CL line, or an NC line in the simulation).
+// A state and the line where it came into force (a CL line, or an NC line in the simulation);
+// on the CL side also the statements that set its parts (LOADTL, FEDRAT, SPINDL; 0: none).
 struct CutStateAt {
   CutState state;
   uint32_t line = 0;
+  uint32_t tool_line = 0, feed_line = 0, spindle_line = 0;
 };
 
 struct ClMotion {

@@ -73,7 +73,7 @@ void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid) {
   ClPath& path = s.cl_path;
   const CutState c = cut_state(s);
   if (path.states.empty() || !(path.states.back().state == c))
-    path.states.push_back({c, st.loc.line});
+    path.states.push_back({c, st.loc.line, s.tool_line, s.feed_line, s.spindle_line});
   ClMotion mo;
   mo.line = st.loc.line;
   mo.to = to;

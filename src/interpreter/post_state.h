@@ -94,6 +94,8 @@ struct PostState {
   FeedMode feed_mode = FeedMode::kPerMinute;
   double feed = 0;  // output units
   SpindleState spindle;
+  // The CL lines that last set the tool, the feed and the spindle (verify's messages).
+  uint32_t tool_line = 0, feed_line = 0, spindle_line = 0;
   // The lathe frame: the CL axis of the radius. With cl.radial_axis: auto it is found at the
   // first point off the spindle axis (frame.cc); until then points lie on the axis and every
   // choice gives the same output.

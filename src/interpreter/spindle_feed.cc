@@ -119,6 +119,7 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
   sp.css = w.css;
   sp.value = *w.value;
   sp.on = true;
+  s.spindle_line = st.loc.line;
   if (!w.css) {
     if (TemplateWrite r = s.prog.spindle_rpm(*w.value, sp.dir); !r)
       error(s, st, st.loc, template_error(s.m, r));
@@ -177,6 +178,7 @@ void fedrat_stmt(PostState& s, const Statement& st) {
     return error(s, st, value_loc, fmt::format("feed must be positive, got {}", value));
   s.feed = value * factor;
   s.feed_mode = mode;
+  s.feed_line = st.loc.line;
   s.feed_given = true;
   if (s.m.max_feed > 0 && mode == FeedMode::kPerMinute && s.feed > s.m.max_feed) {
     warning(s, st, st.loc,
@@ -192,6 +194,7 @@ void spindl_stmt(PostState& s, const Statement& st) {
   ensure_started(s);
   if (w.off) {
     s.spindle.on = false;
+    s.spindle_line = st.loc.line;
     if (TemplateWrite r = s.prog.spindle_stop(); !r) error(s, st, st.loc, template_error(s.m, r));
     return;
   }

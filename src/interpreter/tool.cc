@@ -44,6 +44,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   s.prog.writer().number_next();
   tool_change_position(s, st);
   s.tool.number = static_cast<int>(tool);
+  s.tool_line = st.loc.line;
   s.tool.offset = offset;
   time_tool_change(s);
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)

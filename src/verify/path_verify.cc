@@ -120,7 +120,7 @@ std::string spindle_text(const CutState& s, LengthUnit u) {
   const char* dir = s.spindle == SpindleRun::kCw ? "CW" : "CCW";
   if (!s.css) return fmt::format("{} at {:g} rpm", dir, s.speed);
   const std::string limit = s.max_rpm > 0 ? fmt::format(", limit {:g} rpm", s.max_rpm) : "";
-  return fmt::format("{} at {:g} {}/min (CSS{})", dir, s.speed, u == LengthUnit::kInch ? "ft" : "m",
+  return fmt::format("{} at {:g} {}/min CSS{}", dir, s.speed, u == LengthUnit::kInch ? "ft" : "m",
                      limit);
 }
 
@@ -166,8 +166,11 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
         : i == 1 ? std::pair{feed_text(a, u), feed_text(b, u)}
                  : std::pair{spindle_text(a, u), spindle_text(b, u)};
     if (k.reported[i] == texts) continue;
-    k.problem(&mv, fmt::format("{} at {}: CL {} (since CL line {}), program {}", kWhat[i], k.at(c),
-                               texts.first, k.cl.states[c.state].line, texts.second));
+    const CutStateAt& at = k.cl.states[c.state];
+    const uint32_t set = i == 0 ? at.tool_line : i == 1 ? at.feed_line : at.spindle_line;
+    k.problem(
+        &mv, fmt::format("{} at {}: CL {} ({} at CL line {}), program {}", kWhat[i], k.at(c),
+                         texts.first, set ? "set" : "in force", set ? set : at.line, texts.second));
     k.reported[i] = std::move(texts);
   }
 }
