@@ -150,6 +150,12 @@ void learn_tool(const Machine& m, ModalWords& w) {
       std::any_of(f.begin(), f.end(), [](const TemplateField& x) { return x.name == "offset"; });
 }
 
+// A tool or offset number as clpost writes them (0..9999, as LOADTL takes them); else an error
+// at the word and nothing.
+std::optional<int> tool_number(State& s, double v, const std::string& field, const NcWord& w) {
+  return s.whole(v, field, 0, 9999, w.col);
+}
+
 // T0303 with fields {tool,2},{offset,2}: tool 3, offset 3 (widths taken from the right).
 void read_tool_word(State& s, const NcWord& w, const ModalWords& mw) {
   std::string_view digits = w.text;
@@ -157,17 +163,18 @@ void read_tool_word(State& s, const NcWord& w, const ModalWords& mw) {
     return std::isdigit(static_cast<unsigned char>(c));
   });
   if (mw.tool_fields.size() == 1 || !all_digits) {
-    s.cut.tool = static_cast<int>(w.value);
+    if (std::optional<int> t = tool_number(s, w.value, "the tool", w)) s.cut.tool = *t;
     return;
   }
   for (size_t k = mw.tool_fields.size(); k-- > 0;) {
     const TemplateField& f = mw.tool_fields[k];
     const size_t n = k == 0 ? digits.size() : std::min<size_t>(f.width, digits.size());
-    int v = 0;
+    double v = 0;  // no overflow on a long word: tool_number refuses it
     for (char c : digits.substr(digits.size() - n)) v = v * 10 + (c - '0');
     digits.remove_suffix(n);
-    if (f.name == "tool") s.cut.tool = v;
-    if (f.name == "offset") s.cut.offset = v;
+    const std::optional<int> number = tool_number(s, v, "the " + f.name, w);
+    if (number && f.name == "tool") s.cut.tool = *number;
+    if (number && f.name == "offset") s.cut.offset = *number;
   }
 }
 
@@ -207,7 +214,7 @@ void read_modal_words(State& s, const NcBlock& b, const ModalWords& w) {
       if (all) {
         read_tool_word(s, *t, w);
         if (const NcWord* d = w.offset_address.empty() ? nullptr : b.find(w.offset_address))
-          s.cut.offset = static_cast<int>(d->value);
+          if (std::optional<int> o = tool_number(s, d->value, "the offset", *d)) s.cut.offset = *o;
       }
     }
   read_spindle(s, b, w);

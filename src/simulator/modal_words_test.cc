@@ -84,5 +84,17 @@ TEST(ModalWords, HeidenhainG26IsTheLimitAndG97TheRpm) {
   EXPECT_EQ(s[0], state(0, -1, SpindleRun::kCw, false, 600, 2500, 2, -1));
 }
 
+TEST(ModalWords, AnOffsetOutOfRangeIsAnErrorAtItsWord) {
+  const Machine m = shipped("sinumerik-840d");
+  Diagnostics d("p.mpf");
+  reader::LineSource src(std::string_view("T2 D99999\nG0 X10 Z2\n"));
+  Simulation sim;
+  EXPECT_FALSE(simulate_nc(src, m, d, sim));
+  EXPECT_EQ(d.render_all(),
+            "p.mpf:1:4: error: the offset 99999: a whole number from 0 to 9999 expected\n"
+            "  T2 D99999\n"
+            "     ^\n");
+}
+
 }  // namespace
 }  // namespace clpost
