@@ -1,6 +1,7 @@
 // libFuzzer target: arbitrary bytes as an NC program, through the NC lexer and the control
 // simulation of every shipped machine's dialect (cycles expanded with their laws), then verified
-// against a fixed plan (an M16x1.5 thread posted on that machine), as `clpost verify` does.
+// against a fixed plan (an M16x1.5 thread posted on that machine) and its CL path (end points,
+// tool, feed and spindle), as `clpost verify --cl` does.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -8,6 +9,7 @@
 
 #include "fuzz_post.h"
 #include "simulator/control_sim.h"
+#include "verify/path_verify.h"
 #include "verify/verify.h"
 
 namespace {
@@ -23,6 +25,7 @@ constexpr const char* kPlan =
 struct Target {
   clpost::Machine machine;
   std::vector<clpost::ThreadPlan> plans;
+  clpost::ClPath path;
 };
 std::vector<std::unique_ptr<Target>>* g_targets = nullptr;
 
@@ -33,7 +36,11 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   for (const char* name : kMachines) {
     auto t = std::make_unique<Target>();
     t->machine = clpost::fuzz::shipped_machine(name);
-    t->plans = clpost::post_text(kPlan, t->machine, "plan.cl").plans;
+    clpost::PostOptions opts;
+    opts.keep_motions = true;
+    clpost::PostedText posted = clpost::post_text(kPlan, t->machine, "plan.cl", opts);
+    t->plans = std::move(posted.plans);
+    t->path = std::move(posted.summary.path);
     g_targets->push_back(std::move(t));
   }
   return 0;
@@ -53,6 +60,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     VerifyReport report;
     verify_cuts(t.plans, sim, t.machine, vo, diags, report);
     (void)verify_report_text(report, t.plans, "fuzz.nc", t.machine, vo);
+    (void)verify_path(t.path, sim.path, t.machine, vo, diags);
   }
   (void)diags.render_all();
   return 0;
