@@ -4,17 +4,12 @@
 
 #include <cmath>
 
-#include "machine/machine_loader.h"
+#include "simulator/sim_test_util.h"
 
 namespace clpost {
 namespace {
 
-Machine shipped(const std::string& name) {
-  Machine m;
-  std::string errors;
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
-  return m;
-}
+using testing::shipped;
 
 struct SimRun {
   bool ok = false;

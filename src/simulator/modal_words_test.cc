@@ -3,18 +3,13 @@
 // and the CSS limit, each as the move after it is made with.
 #include <gtest/gtest.h>
 
-#include "machine/machine_loader.h"
 #include "simulator/control_sim.h"
+#include "simulator/sim_test_util.h"
 
 namespace clpost {
 namespace {
 
-Machine shipped(const std::string& name) {
-  Machine m;
-  std::string errors;
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
-  return m;
-}
+using testing::shipped;
 
 // The states of a program's moves, each move's in order.
 std::vector<CutState> move_states(const std::string& machine, std::string_view program,
