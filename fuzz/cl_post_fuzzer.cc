@@ -3,16 +3,53 @@
 // linuxcnc-lathe (read through a FILE*, so both LineSource paths are covered): the first byte's
 // second bit picks one, so each input costs one post (twice the inputs per second of posting
 // both).
+//
+// The first byte's third bit asks for the round trip instead: the file posted on one of the
+// shipped machines (picked by the byte's high bits) and, when it posts without an error, its
+// program read back through the control simulation and verified against the CL — its threads,
+// holes, motions, arcs, tool, feed and spindle. A program clpost wrote without an error that does
+// not verify is a bug in one or the other: the run stops on it, with both sides' words.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <vector>
 
 #include "fuzz_post.h"
+#include "verify/program_verify.h"
 
 namespace {
 
 const clpost::Machine* g_generic = nullptr;
 const clpost::Machine* g_linuxcnc = nullptr;
+std::vector<clpost::Machine>* g_all = nullptr;
+
+constexpr const char* kMachines[] = {"generic-lathe", "linuxcnc-lathe", "sinumerik-840d",
+                                     "fanuc-0i-t",    "haas-st",        "heidenhain-pilot",
+                                     "nct-2000t"};
+
+// Posts `text` on `m` and verifies the program against it; aborts when a clean post does not
+// verify.
+void round_trip(std::string_view text, const clpost::Machine& m, bool strict) {
+  using namespace clpost;
+  Diagnostics diags("fuzz.cl");
+  ClReader reader(text, diags);
+  PostOptions opts;
+  opts.strict = strict;
+  opts.keep_motions = true;
+  StringSink sink;
+  std::vector<ThreadPlan> plans;
+  PostSummary summary =
+      post(reader, m, sink, diags, opts, [&](const ThreadPlan& p) { plans.push_back(p); });
+  if (diags.has_errors()) return;
+  const ClExpected expected{std::move(summary.holes), std::move(summary.path)};
+  reader::LineSource src{std::string_view(sink.out)};
+  const VerifyOutcome v = verify_program(src, "fuzz.nc", plans, &expected, "fuzz.cl", m, 0);
+  if (v.ok) return;
+  std::fprintf(stderr, "round trip on %s: the program clpost wrote does not verify\n%s%s\n%s\n",
+               m.name.c_str(), v.report.c_str(), v.diagnostics.c_str(), sink.out.c_str());
+  std::abort();
+}
 
 }  // namespace
 
@@ -21,6 +58,8 @@ const clpost::Machine* g_linuxcnc = nullptr;
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   g_generic = new clpost::Machine(clpost::fuzz::shipped_machine("generic-lathe"));
   g_linuxcnc = new clpost::Machine(clpost::fuzz::shipped_machine("linuxcnc-lathe"));
+  g_all = new std::vector<clpost::Machine>();
+  for (const char* name : kMachines) g_all->push_back(clpost::fuzz::shipped_machine(name));
   return 0;
 }
 
@@ -30,7 +69,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // The first byte's low bit picks --strict (the text still starts at byte 0).
   PostOptions opts;
   opts.strict = size > 0 && (data[0] & 1) != 0;
-  if (size == 0 || (data[0] & 2) == 0) {
+  if (size > 0 && (data[0] & 4) != 0) {
+    round_trip(text, (*g_all)[(data[0] >> 3) % g_all->size()], opts.strict);
+  } else if (size == 0 || (data[0] & 2) == 0) {
     Diagnostics diags("fuzz.cl");
     ClReader reader(text, diags);
     fuzz::post(reader, diags, *g_generic, opts);
