@@ -30,6 +30,9 @@ void pprint_stmt(PostState& s, const Statement& st) {
 void insert_stmt(PostState& s, const Statement& st) {
   ensure_started(s);
   s.prog.raw(st.text);
+  // The text may set a motion mode, a feed or a position the program does not know of: the next
+  // move states them all again.
+  s.prog.forget_modal();
 }
 
 void tool_path_stmt(PostState& s, const Statement& st) {
