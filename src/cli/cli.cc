@@ -184,6 +184,265 @@ int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bo
   return rc;
 }
 
+int print_command_output(const CommandOutput& r) {
+  print_out(r.out);
+  print_err(r.err);
+  return r.exit_code;
+}
+
+// The main command: post one file, or a batch (-d).
+struct PostCommand {
+  MachineOpts machine;
+  std::vector<std::string> inputs;
+  std::string output;
+  bool strict = false;
+  BatchOpts batch;
+  bool verify = false;
+};
+
+void add_post_command(CLI::App& app, PostCommand& c) {
+  add_machine_opts(app, c.machine);
+  app.add_option("-o,--output", c.output, "Output file (default: standard output)");
+  app.add_flag("--strict", c.strict, "Unknown CL statements are errors, not warnings");
+  add_batch_opts(app, c.batch);
+  app.add_flag("--verify", c.verify,
+               "Read the program back through the control's laws and check it cuts the plan; "
+               "a program that does not is an error (nothing written)");
+  app.add_option("inputs", c.inputs,
+                 "CL file to post ('-' for standard input); with -d: files and directories");
+}
+
+int run_post_command(const CLI::App& app, const PostCommand& c) {
+  if (c.inputs.empty()) {
+    print_err(app.help());
+    print_err("\nclpost: error: no input file (use '-' for standard input)\n");
+    return kExitUsage;
+  }
+  if (!c.batch.out_dir.empty() || c.batch.used(app)) {
+    if (c.batch.out_dir.empty()) {
+      print_err("clpost: error: -r, -j, --keep-going, --quiet and --report need -d OUTDIR\n");
+      return kExitUsage;
+    }
+    if (!c.output.empty()) {
+      print_err("clpost: error: -o and -d cannot be used together\n");
+      return kExitUsage;
+    }
+    return run_batch_command(c.machine, c.batch, c.strict, c.verify, c.inputs);
+  }
+  if (c.inputs.size() > 1) {
+    print_err("clpost: error: several inputs need an output directory: -d OUTDIR\n");
+    return kExitUsage;
+  }
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  PostRequest req{c.inputs[0], c.output.empty() ? "-" : c.output, &m, PostOptions{c.strict},
+                  nullptr};
+  req.verify = c.verify;
+  PostOutcome r = post_file(req);
+  print_err(r.verify_report);
+  print_err(r.diagnostics);
+  return r.ok ? kExitOk : kExitInput;
+}
+
+// `clpost machines`, `machines show`, `machines diff`.
+struct MachinesCommand {
+  CLI::App* list = nullptr;
+  CLI::App* show = nullptr;
+  CLI::App* diff = nullptr;
+  MachineOpts show_machine;
+  bool show_origin = false;
+  std::string diff_a, diff_b;
+};
+
+void add_machines_command(CLI::App& app, MachinesCommand& c) {
+  c.list = app.add_subcommand("machines", "List the shipped machines");
+  c.show = c.list->add_subcommand("show", "A machine exactly as loaded: every key");
+  c.show->add_option("machine", c.show_machine.machine, "Shipped machine name or machine file")
+      ->required();
+  c.show->add_option("--set", c.show_machine.sets, "Override a machine key")
+      ->type_name("KEY=VALUE");
+  c.show->add_flag("--origin", c.show_origin,
+                   "Where each value came from (file:line, --set, default)");
+  c.diff = c.list->add_subcommand("diff", "The keys whose values differ");
+  c.diff->add_option("a", c.diff_a, "Machine name or file")->required();
+  c.diff->add_option("b", c.diff_b, "Machine name or file")->required();
+}
+
+// Each machine is loaded in full, so a broken file shows here rather than mid-batch.
+int list_machines_command() {
+  int rc = kExitOk;
+  for (const MachineInfo& mi : list_machines(data_dirs())) {
+    Machine m;
+    std::string errors;
+    if (!load_machine(mi.path, data_dirs(), {}, m, errors)) {
+      print_out(fmt::format("{:<18} {:<5} {}\n", mi.name, "?", "(does not load, see below)"));
+      print_err(errors);
+      rc = kExitUsage;
+      continue;
+    }
+    print_out(fmt::format("{:<18} {:<5} {:<40} {}\n", mi.name, m.extension, threading_summary(m),
+                          m.description));
+  }
+  return rc;
+}
+
+int run_machines_command(const MachinesCommand& c) {
+  if (*c.show)
+    return print_command_output(
+        machines_show(c.show_machine.machine, c.show_machine.sets, c.show_origin, data_dirs()));
+  if (*c.diff) return print_command_output(machines_diff(c.diff_a, c.diff_b, data_dirs()));
+  return list_machines_command();
+}
+
+// `clpost check`: post without writing, a line per file.
+struct CheckCommand {
+  MachineOpts machine;
+  std::vector<std::string> inputs;
+  bool strict = false;
+};
+
+CLI::App* add_check_command(CLI::App& app, CheckCommand& c) {
+  CLI::App* check = app.add_subcommand("check", "Parse and validate CL files without writing");
+  add_machine_opts(*check, c.machine);
+  check->add_flag("--strict", c.strict, "Unknown CL statements are errors");
+  check->add_option("inputs", c.inputs, "CL files")->required();
+  return check;
+}
+
+int run_check_command(const CheckCommand& c) {
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  int rc = kExitOk;
+  for (const std::string& in : c.inputs) {
+    PostRequest req{in, "", &m, PostOptions{c.strict}, nullptr};
+    PostOutcome r = post_file(req);
+    print_err(r.diagnostics);
+    if (!r.ok) rc = kExitInput;
+    print_err(fmt::format("{}: {} ({} errors, {} warnings, {} statements, {} threads)\n",
+                          display_name(in), r.ok ? "ok" : "failed", r.errors, r.warnings,
+                          r.stats.statements, r.stats.threads));
+    if (r.ok)
+      for (const std::string& l : cycle_time_lines(r.cycle_time, r.units, m.diameter_output))
+        print_err("  " + l + "\n");
+  }
+  return rc;
+}
+
+// `clpost plan`: the thread pass plans, as text or JSON.
+struct PlanCommand {
+  MachineOpts machine;
+  std::vector<std::string> inputs;
+  std::string format = "text";
+};
+
+CLI::App* add_plan_command(CLI::App& app, PlanCommand& c) {
+  CLI::App* plan = app.add_subcommand("plan", "Print the thread pass plans of CL files");
+  add_machine_opts(*plan, c.machine);
+  plan->add_option("--format", c.format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  plan->add_option("inputs", c.inputs, "CL files")->required();
+  return plan;
+}
+
+int run_plan_command(const PlanCommand& c) {
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  int rc = kExitOk;
+  std::string out;
+  bool json = c.format == "json";
+  if (json && c.inputs.size() > 1) out += "[\n";
+  for (size_t i = 0; i < c.inputs.size(); ++i) {
+    std::vector<ThreadPlan> plans;
+    PostRequest req{c.inputs[i], "", &m, PostOptions{},
+                    [&](const ThreadPlan& p) { plans.push_back(p); }};
+    PostOutcome r = post_file(req);
+    print_err(r.diagnostics);
+    if (!r.ok) {
+      rc = kExitInput;
+      continue;
+    }
+    std::string name = display_name(c.inputs[i]);
+    if (json) {
+      if (i > 0 && c.inputs.size() > 1 && out.size() > 2) out += ",\n";
+      out += plan_to_json(name, r.units, plans);
+    } else {
+      out += plan_to_text(name, r.units, plans);
+    }
+  }
+  if (json && c.inputs.size() > 1) out += "\n]\n";
+  print_out(out);
+  return rc;
+}
+
+// `clpost verify`: a program against the plan of a CL file or of a plan JSON.
+struct VerifyCommand {
+  MachineOpts machine;
+  std::string nc, cl, plan;
+  double tolerance = 0;
+};
+
+CLI::App* add_verify_command(CLI::App& app, VerifyCommand& c) {
+  CLI::App* verify =
+      app.add_subcommand("verify", "Check that an NC program cuts the thread plan of a CL file");
+  add_machine_opts(*verify, c.machine);
+  verify->add_option("program", c.nc, "NC program in the machine's dialect ('-': stdin)")
+      ->required();
+  CLI::Option* cl_opt = verify->add_option("--cl", c.cl, "The CL file the plan comes from");
+  CLI::Option* plan_opt = verify->add_option(
+      "--plan", c.plan, "The plan as `clpost plan --format json` wrote it (instead of --cl)");
+  cl_opt->excludes(plan_opt);
+  verify
+      ->add_option("--tolerance", c.tolerance,
+                   "Largest difference that counts as equal (default: the machine's "
+                   "threading.tolerance, else one least increment of Z)")
+      ->check(CLI::PositiveNumber);
+  return verify;
+}
+
+int run_verify_command(const VerifyCommand& c) {
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  if (c.cl.empty() && c.plan.empty()) {
+    print_err("clpost verify: error: give the plan: --cl INPUT.cl or --plan PLAN.json\n");
+    return kExitUsage;
+  }
+  VerifyOutcome v = verify_files(c.nc, c.cl, c.plan, m, c.tolerance);
+  print_out(v.report);
+  print_err(v.diagnostics);
+  return v.ok ? kExitOk : kExitInput;
+}
+
+// `clpost plot`: the SVG backplot and thread sections.
+struct PlotCommand {
+  MachineOpts machine;
+  PlotRequest req;
+};
+
+CLI::App* add_plot_command(CLI::App& app, PlotCommand& c) {
+  CLI::App* plot = app.add_subcommand(
+      "plot", "SVG pictures: the backplot of a program and the cross-section of every thread");
+  c.req.output = "-";
+  add_machine_opts(*plot, c.machine);
+  plot->add_option("input", c.req.input,
+                   "A CL file (its plan, posted on the machine) or an NC program")
+      ->required();
+  plot->add_option("--cl", c.req.cl,
+                   "With an NC program: the CL file of its plan (for the thread sections)");
+  plot->add_option("-o,--output", c.req.output, "SVG file (default: standard output)");
+  plot->add_option("--thread", c.req.thread, "Only thread N's cross-section (1 = the first)")
+      ->check(CLI::PositiveNumber);
+  return plot;
+}
+
+int run_plot_command(const PlotCommand& c) {
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  PlotRequest req = c.req;
+  req.machine = &m;
+  PlotOutcome r = plot_file(req);
+  print_err(r.diagnostics);
+  return r.ok ? kExitOk : kExitInput;
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
@@ -192,89 +451,22 @@ int run_cli(int argc, char** argv) {
   app.set_version_flag("--version", std::string("clpost ") + CLPOST_VERSION);
   app.require_subcommand(0, 1);
 
-  MachineOpts post_opts;
-  std::vector<std::string> inputs;
-  std::string output;
-  bool strict = false;
-  BatchOpts batch;
-  add_machine_opts(app, post_opts);
-  app.add_option("-o,--output", output, "Output file (default: standard output)");
-  app.add_flag("--strict", strict, "Unknown CL statements are errors, not warnings");
-  add_batch_opts(app, batch);
-  bool verify_post = false;
-  app.add_flag("--verify", verify_post,
-               "Read the program back through the control's laws and check it cuts the plan; "
-               "a program that does not is an error (nothing written)");
-  app.add_option("inputs", inputs,
-                 "CL file to post ('-' for standard input); with -d: files and directories");
-
-  CLI::App* machines = app.add_subcommand("machines", "List the shipped machines");
-  CLI::App* show = machines->add_subcommand("show", "A machine exactly as loaded: every key");
-  MachineOpts show_opts;
-  bool show_origin = false;
-  show->add_option("machine", show_opts.machine, "Shipped machine name or machine file")
-      ->required();
-  show->add_option("--set", show_opts.sets, "Override a machine key")->type_name("KEY=VALUE");
-  show->add_flag("--origin", show_origin, "Where each value came from (file:line, --set, default)");
-  CLI::App* diff = machines->add_subcommand("diff", "The keys whose values differ");
-  std::string diff_a, diff_b;
-  diff->add_option("a", diff_a, "Machine name or file")->required();
-  diff->add_option("b", diff_b, "Machine name or file")->required();
-
+  PostCommand post;
+  add_post_command(app, post);
+  MachinesCommand machines;
+  add_machines_command(app, machines);
   CLI::App* schema =
       app.add_subcommand("schema", "The JSON Schema of machine and post files (draft 2020-12)");
   bool schema_md = false;
   schema->add_flag("--markdown", schema_md, "The key tables of docs/machines.md instead");
-
-  CLI::App* check = app.add_subcommand("check", "Parse and validate CL files without writing");
-  MachineOpts check_opts;
-  std::vector<std::string> check_inputs;
-  bool check_strict = false;
-  add_machine_opts(*check, check_opts);
-  check->add_flag("--strict", check_strict, "Unknown CL statements are errors");
-  check->add_option("inputs", check_inputs, "CL files")->required();
-
-  CLI::App* plan = app.add_subcommand("plan", "Print the thread pass plans of CL files");
-  MachineOpts plan_opts;
-  std::vector<std::string> plan_inputs;
-  std::string plan_format = "text";
-  add_machine_opts(*plan, plan_opts);
-  plan->add_option("--format", plan_format, "text or json")->check(CLI::IsMember({"text", "json"}));
-  plan->add_option("inputs", plan_inputs, "CL files")->required();
-
-  CLI::App* verify =
-      app.add_subcommand("verify", "Check that an NC program cuts the thread plan of a CL file");
-  MachineOpts verify_opts;
-  std::string verify_nc, verify_cl, verify_plan;
-  double verify_tolerance = 0;
-  add_machine_opts(*verify, verify_opts);
-  verify->add_option("program", verify_nc, "NC program in the machine's dialect ('-': stdin)")
-      ->required();
-  CLI::Option* cl_opt = verify->add_option("--cl", verify_cl, "The CL file the plan comes from");
-  CLI::Option* plan_opt = verify->add_option(
-      "--plan", verify_plan, "The plan as `clpost plan --format json` wrote it (instead of --cl)");
-  cl_opt->excludes(plan_opt);
-  verify
-      ->add_option("--tolerance", verify_tolerance,
-                   "Largest difference that counts as equal (default: the machine's "
-                   "threading.tolerance, else one least increment of Z)")
-      ->check(CLI::PositiveNumber);
-
-  CLI::App* plot = app.add_subcommand(
-      "plot", "SVG pictures: the backplot of a program and the cross-section of every thread");
-  MachineOpts plot_opts;
-  PlotRequest plot_req;
-  plot_req.output = "-";
-  add_machine_opts(*plot, plot_opts);
-  plot->add_option("input", plot_req.input,
-                   "A CL file (its plan, posted on the machine) or an NC program")
-      ->required();
-  plot->add_option("--cl", plot_req.cl,
-                   "With an NC program: the CL file of its plan (for the thread sections)");
-  plot->add_option("-o,--output", plot_req.output, "SVG file (default: standard output)");
-  plot->add_option("--thread", plot_req.thread, "Only thread N's cross-section (1 = the first)")
-      ->check(CLI::PositiveNumber);
-
+  CheckCommand check_cmd;
+  CLI::App* check = add_check_command(app, check_cmd);
+  PlanCommand plan_cmd;
+  CLI::App* plan = add_plan_command(app, plan_cmd);
+  VerifyCommand verify_cmd;
+  CLI::App* verify = add_verify_command(app, verify_cmd);
+  PlotCommand plot_cmd;
+  CLI::App* plot = add_plot_command(app, plot_cmd);
   Cl2AptRequest cl2apt_req;
   CLI::App* cl2apt = add_cl2apt_command(app, cl2apt_req);
 
@@ -285,144 +477,14 @@ int run_cli(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
-  if (*show) {
-    CommandOutput r = machines_show(show_opts.machine, show_opts.sets, show_origin, data_dirs());
-    print_out(r.out);
-    print_err(r.err);
-    return r.exit_code;
-  }
-  if (*diff) {
-    CommandOutput r = machines_diff(diff_a, diff_b, data_dirs());
-    print_out(r.out);
-    print_err(r.err);
-    return r.exit_code;
-  }
-  if (*machines) {
-    // Each machine is loaded in full, so a broken file shows here rather than mid-batch.
-    int rc = kExitOk;
-    for (const MachineInfo& mi : list_machines(data_dirs())) {
-      Machine m;
-      std::string errors;
-      if (!load_machine(mi.path, data_dirs(), {}, m, errors)) {
-        print_out(fmt::format("{:<18} {:<5} {}\n", mi.name, "?", "(does not load, see below)"));
-        print_err(errors);
-        rc = kExitUsage;
-        continue;
-      }
-      print_out(fmt::format("{:<18} {:<5} {:<40} {}\n", mi.name, m.extension, threading_summary(m),
-                            m.description));
-    }
-    return rc;
-  }
-
-  if (*schema) {
-    CommandOutput r = schema_command(schema_md);
-    print_out(r.out);
-    print_err(r.err);
-    return r.exit_code;
-  }
-
+  if (*machines.list) return run_machines_command(machines);
+  if (*schema) return print_command_output(schema_command(schema_md));
   if (*cl2apt) return run_cl2apt_command(cl2apt_req);
-
-  if (*verify) {
-    Machine m;
-    if (!load(verify_opts, m)) return kExitUsage;
-    if (verify_cl.empty() && verify_plan.empty()) {
-      print_err("clpost verify: error: give the plan: --cl INPUT.cl or --plan PLAN.json\n");
-      return kExitUsage;
-    }
-    VerifyOutcome v = verify_files(verify_nc, verify_cl, verify_plan, m, verify_tolerance);
-    print_out(v.report);
-    print_err(v.diagnostics);
-    return v.ok ? kExitOk : kExitInput;
-  }
-
-  if (*plot) {
-    Machine m;
-    if (!load(plot_opts, m)) return kExitUsage;
-    plot_req.machine = &m;
-    PlotOutcome r = plot_file(plot_req);
-    print_err(r.diagnostics);
-    return r.ok ? kExitOk : kExitInput;
-  }
-
-  if (*check) {
-    Machine m;
-    if (!load(check_opts, m)) return kExitUsage;
-    int rc = kExitOk;
-    for (const std::string& in : check_inputs) {
-      PostRequest req{in, "", &m, PostOptions{check_strict}, nullptr};
-      PostOutcome r = post_file(req);
-      print_err(r.diagnostics);
-      if (!r.ok) rc = kExitInput;
-      print_err(fmt::format("{}: {} ({} errors, {} warnings, {} statements, {} threads)\n",
-                            display_name(in), r.ok ? "ok" : "failed", r.errors, r.warnings,
-                            r.stats.statements, r.stats.threads));
-      if (r.ok)
-        for (const std::string& l : cycle_time_lines(r.cycle_time, r.units, m.diameter_output))
-          print_err("  " + l + "\n");
-    }
-    return rc;
-  }
-
-  if (*plan) {
-    Machine m;
-    if (!load(plan_opts, m)) return kExitUsage;
-    int rc = kExitOk;
-    std::string out;
-    bool json = plan_format == "json";
-    if (json && plan_inputs.size() > 1) out += "[\n";
-    for (size_t i = 0; i < plan_inputs.size(); ++i) {
-      std::vector<ThreadPlan> plans;
-      PostRequest req{plan_inputs[i], "", &m, PostOptions{},
-                      [&](const ThreadPlan& p) { plans.push_back(p); }};
-      PostOutcome r = post_file(req);
-      print_err(r.diagnostics);
-      if (!r.ok) {
-        rc = kExitInput;
-        continue;
-      }
-      std::string name = display_name(plan_inputs[i]);
-      if (json) {
-        if (i > 0 && plan_inputs.size() > 1 && out.size() > 2) out += ",\n";
-        out += plan_to_json(name, r.units, plans);
-      } else {
-        out += plan_to_text(name, r.units, plans);
-      }
-    }
-    if (json && plan_inputs.size() > 1) out += "\n]\n";
-    print_out(out);
-    return rc;
-  }
-
-  if (inputs.empty()) {
-    print_err(app.help());
-    print_err("\nclpost: error: no input file (use '-' for standard input)\n");
-    return kExitUsage;
-  }
-  if (!batch.out_dir.empty() || batch.used(app)) {
-    if (batch.out_dir.empty()) {
-      print_err("clpost: error: -r, -j, --keep-going, --quiet and --report need -d OUTDIR\n");
-      return kExitUsage;
-    }
-    if (!output.empty()) {
-      print_err("clpost: error: -o and -d cannot be used together\n");
-      return kExitUsage;
-    }
-    return run_batch_command(post_opts, batch, strict, verify_post, inputs);
-  }
-  if (inputs.size() > 1) {
-    print_err("clpost: error: several inputs need an output directory: -d OUTDIR\n");
-    return kExitUsage;
-  }
-  Machine m;
-  if (!load(post_opts, m)) return kExitUsage;
-  PostRequest req{inputs[0], output.empty() ? "-" : output, &m, PostOptions{strict}, nullptr};
-  req.verify = verify_post;
-  PostOutcome r = post_file(req);
-  print_err(r.verify_report);
-  print_err(r.diagnostics);
-  return r.ok ? kExitOk : kExitInput;
+  if (*verify) return run_verify_command(verify_cmd);
+  if (*plot) return run_plot_command(plot_cmd);
+  if (*check) return run_check_command(check_cmd);
+  if (*plan) return run_plan_command(plan_cmd);
+  return run_post_command(app, post);
 }
 
 }  // namespace clpost

@@ -16,8 +16,6 @@ using namespace vec2_math;
 
 namespace g76 {
 
-namespace {}  // namespace
-
 std::string describe_pullout(const ThreadPlan& plan) {
   if (!plan.pullout) return "none";
   return fmt::format("X {:.4g}, Z {:.4g}", plan.pullout->x, plan.pullout->z);
@@ -102,6 +100,35 @@ double move_ends_to_deepest(const CyclePlan& cp, std::vector<Cut>& cuts) {
   return most;
 }
 
+size_t passes_at(const std::vector<double>& heights, double h) {
+  size_t n = 0;
+  while (n < heights.size() && heights[heights.size() - 1 - n] >= h - 1e-9) ++n;
+  return n;
+}
+
+std::string pass_end_mismatch(const std::vector<Cut>& cuts, const std::vector<Cut>& want,
+                              const std::vector<Cut>& moved, double most, double z,
+                              const Machine& m, const CutCompareOptions& opt,
+                              std::vector<std::string>& notes) {
+  const std::string diff = compare_cuts(cuts, want, opt);
+  if (diff.empty()) return {};
+  if (m.cycle_shifted_end) return "G76 would cut " + diff;
+  // A difference beyond the pass ends is what to report.
+  const std::string rest = compare_cuts(cuts, moved, opt);
+  if (!rest.empty()) return "G76 would cut " + rest;
+  const std::string z_text = number_text(z, m.format_for("Z"));
+  if (!m.accept_pass_end)
+    return fmt::format(
+        "G76 ends every pass at Z{}; the plan ends the shallower passes "
+        "up to {:.4f} earlier (threading.accept_pass_end is off)",
+        z_text, most);
+  notes.push_back(
+      fmt::format("G76 ends every pass at Z{}; the plan ends the shallower "
+                  "passes up to {:.4f} earlier (threading.accept_pass_end)",
+                  z_text, most));
+  return {};
+}
+
 }  // namespace g76
 
 namespace {
@@ -120,63 +147,65 @@ struct FanucBlock {
   Vec2 start;  // A as written
 };
 
-// The words that cut `plan` (single start) with G76, or a mismatch in `f`.
-std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
-  auto fail = [&](std::string why) -> std::optional<FanucBlock> {
-    f.mismatch = std::move(why);
-    return std::nullopt;
-  };
-  if (plan.form == ThreadForm::kChain)
-    return fail("a chained thread: G76 cuts one straight thread line");
-  if (plan.pitch.lead_change != 0) return fail("variable lead: G76 cuts a constant lead");
+// Why G76 cannot cut this kind of plan at all (empty: it may).
+std::string fanuc_refusal(const ThreadPlan& plan) {
+  if (plan.form == ThreadForm::kChain) return "a chained thread: G76 cuts one straight thread line";
+  if (plan.pitch.lead_change != 0) return "variable lead: G76 cuts a constant lead";
   if (plan.pitch.starts > 1)
-    return fail(fmt::format("{} starts: G76 has no start-angle word (G92 with Q cuts them)",
-                            plan.pitch.starts));
+    return fmt::format("{} starts: G76 has no start-angle word (G92 with Q cuts them)",
+                       plan.pitch.starts);
   if (plan.option == 0)
-    return fail("OPTION 0, steps shrinking by a constant amount: G76 cuts depths Q x root n");
+    return "OPTION 0, steps shrinking by a constant amount: G76 cuts depths Q x root n";
   if (plan.option == 3 || plan.option == 4)
-    return fail(fmt::format("OPTION {}, constant depth: G76 cuts depths Q x root n", plan.option));
-  if (plan.option == 2) return fail("OPTION 2 alternates flanks: G76 infeeds along one flank");
-  g76::CyclePlan cp;
-  std::string why = g76::read_cycle_plan(plan, 0, "G76", cp);
-  if (!why.empty()) return fail(why);
+    return fmt::format("OPTION {}, constant depth: G76 cuts depths Q x root n", plan.option);
+  if (plan.option == 2) return "OPTION 2 alternates flanks: G76 infeeds along one flank";
+  return {};
+}
+
+// a (the tool angle G76 takes, the passes along the flank at half of it) and F.
+std::string angle_words(const ThreadPlan& plan, const Machine& m, const g76::CyclePlan& cp,
+                        FanucG76Words& w) {
   const double a = plan.tool_angle;
   if (std::fabs(a - std::round(a)) > 1e-9 || !fanuc_g76_tool_angle_ok(static_cast<int>(a)))
-    return fail(fmt::format("tool angle {:g}: G76 takes 80, 60, 55, 30, 29 or 0", a));
+    return fmt::format("tool angle {:g}: G76 takes 80, 60, 55, 30, 29 or 0", a);
   if (cp.flank < 0 || std::fabs(cp.flank - a / 2) > 1e-6)
-    return fail(
-        fmt::format("the passes are not shifted along the flank at {:g} deg: G76 infeeds "
-                    "at half the tool angle",
-                    a / 2));
-  FanucBlock b;
-  FanucG76Words& w = b.w;
+    return fmt::format(
+        "the passes are not shifted along the flank at {:g} deg: G76 infeeds "
+        "at half the tool angle",
+        a / 2);
   w.tool_angle = static_cast<int>(a);
   w.lead = as_read(m, "F", plan.lead);
-  if (cp.chamfer > 0) {
-    if (std::fabs(cp.chamfer_angle - m.chamfer_angle) > 1e-6)
-      return fail(
-          fmt::format("pull-out ({}) is not G76's {:g} deg chamfer "
-                      "(threading.chamfer_angle)",
-                      g76::describe_pullout(plan), m.chamfer_angle));
-    const double r = cp.chamfer / (0.1 * plan.lead);
-    if (std::fabs(r - std::round(r)) > 1e-6 || std::round(r) < 1 || std::round(r) > 99)
-      return fail(
-          fmt::format("chamfer {:g} is not a whole number of tenths of the lead {:g} "
-                      "(r 01-99 of G76)",
-                      cp.chamfer, plan.lead));
-    w.chamfer = static_cast<int>(std::round(r));
-  }
-  if (!m.templates.count(kFanucTemplate))
-    return fail(fmt::format("machine '{}' has no template '{}'", m.name, kFanucTemplate));
+  return {};
+}
 
+// r: the pull-out as G76's chamfer (threading.chamfer_angle) of whole tenths of the lead.
+std::string chamfer_word(const ThreadPlan& plan, const Machine& m, const g76::CyclePlan& cp,
+                         FanucG76Words& w) {
+  if (cp.chamfer <= 0) return {};
+  if (std::fabs(cp.chamfer_angle - m.chamfer_angle) > 1e-6)
+    return fmt::format(
+        "pull-out ({}) is not G76's {:g} deg chamfer "
+        "(threading.chamfer_angle)",
+        g76::describe_pullout(plan), m.chamfer_angle);
+  const double r = cp.chamfer / (0.1 * plan.lead);
+  if (std::fabs(r - std::round(r)) > 1e-6 || std::round(r) < 1 || std::round(r) > 99)
+    return fmt::format(
+        "chamfer {:g} is not a whole number of tenths of the lead {:g} "
+        "(r 01-99 of G76)",
+        cp.chamfer, plan.lead);
+  w.chamfer = static_cast<int>(std::round(r));
+  return {};
+}
+
+// k, d, Δd and m from the pass heights; `extra` when G76 adds a spring pass the plan has not.
+std::string depth_words(const ThreadPlan& plan, const Machine& m, const g76::CyclePlan& cp,
+                        FanucG76Words& w, bool& extra) {
   const std::string_view df = depth_format(plan);
   const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
   w.height = as_read(m, df, h_max);
-  size_t at_k = 0;
-  while (at_k < cp.heights.size() && cp.heights[cp.heights.size() - 1 - at_k] >= h_max - 1e-9)
-    ++at_k;
+  const size_t at_k = g76::passes_at(cp.heights, h_max);
   const size_t below = cp.heights.size() - at_k;
-  bool extra = false;
+  extra = false;
   if (below == 0) {
     // Roughing reaches k in its first pass (d = 0), then m passes at k.
     w.allowance = 0;
@@ -184,9 +213,8 @@ std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, 
     w.finish_passes = static_cast<int>(at_k) - 1;
     if (w.finish_passes == 0) {
       if (!m.extra_spring_passes)
-        return fail(
-            "one pass at full depth: G76 cuts at least two (roughing to k - d, then m >= "
-            "1 at k) and threading.extra_spring_passes is off");
+        return "one pass at full depth: G76 cuts at least two (roughing to k - d, then m >= "
+               "1 at k) and threading.extra_spring_passes is off";
       w.finish_passes = 1;
       extra = true;
     }
@@ -197,54 +225,70 @@ std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, 
     w.finish_passes = static_cast<int>(at_k);
   }
   if (w.finish_passes > 99)
-    return fail(fmt::format("{} passes at full depth: G76 m is 01-99", w.finish_passes));
-  // Δdmin: the smallest increment of the roughing, rounded down, so that it never raises one.
-  {
-    FanucG76Words probe = w;
-    probe.min_cut = 0;
-    probe.finish_passes = 0;
-    std::vector<double> rough = fanuc_g76_depths(probe);
-    double least = -1, prev = 0;
-    for (size_t i = 0; i + 1 < rough.size(); ++i) {
-      const double inc = rough[i] - prev;
-      least = least < 0 ? inc : std::min(least, inc);
-      prev = rough[i];
-    }
-    w.min_cut = least > 0 ? read_down(m, df, least) : 0;
+    return fmt::format("{} passes at full depth: G76 m is 01-99", w.finish_passes);
+  return {};
+}
+
+// Δdmin: the smallest increment of the roughing, rounded down, so that it never raises one.
+double min_cut_word(const ThreadPlan& plan, const Machine& m, const FanucG76Words& w) {
+  FanucG76Words probe = w;
+  probe.min_cut = 0;
+  probe.finish_passes = 0;
+  std::vector<double> rough = fanuc_g76_depths(probe);
+  double least = -1, prev = 0;
+  for (size_t i = 0; i + 1 < rough.size(); ++i) {
+    const double inc = rough[i] - prev;
+    least = least < 0 ? inc : std::min(least, inc);
+    prev = rough[i];
   }
+  return least > 0 ? read_down(m, depth_format(plan), least) : 0;
+}
+
+// X, Z (the full-depth end), R (the taper) and A, the start, as written.
+void position_words(const Machine& m, const g76::CyclePlan& cp, FanucBlock& b) {
+  FanucG76Words& w = b.w;
   const double k = m.diameter_output ? 2 : 1;
   w.x = as_read(m, "X", k * cp.end.x);
   w.z = as_read(m, "Z", cp.end.z);
   b.start = point_as_read(m, cp.start);
   w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "R", cp.slope * (b.start.z - w.z)) : 0;
+}
 
+// What the control cuts from the block, against the plan (with its extra spring pass).
+std::string fanuc_cut_mismatch(const Machine& m, const g76::CyclePlan& cp, const FanucBlock& b,
+                               bool extra, std::vector<std::string>& notes) {
   CycleLaw law{m.diameter_output, m.cycle_shifted_end, m.chamfer_angle};
-  std::vector<Cut> cuts = expand_fanuc_g76(w, b.start, law);
+  std::vector<Cut> cuts = expand_fanuc_g76(b.w, b.start, law);
   std::vector<Cut> want = cp.cuts;
   if (extra) want.push_back(want.back());
-  const CutCompareOptions opt{cut_tolerance(m), false};
-  std::string diff = compare_cuts(cuts, want, opt);
-  if (!diff.empty() && !m.cycle_shifted_end) {
-    std::vector<Cut> moved = want;
-    const double most = g76::move_ends_to_deepest(cp, moved);
-    if (extra) moved.back() = moved[moved.size() - 2];
-    // A difference beyond the pass ends is what to report.
-    const std::string rest = compare_cuts(cuts, moved, opt);
-    if (!rest.empty()) diff = rest;
-    if (rest.empty()) {
-      if (!m.accept_pass_end)
-        return fail(
-            fmt::format("G76 ends every pass at Z{}; the plan ends the shallower passes "
-                        "up to {:.4f} earlier (threading.accept_pass_end is off)",
-                        number_text(w.z, m.format_for("Z")), most));
-      f.notes.push_back(
-          fmt::format("G76 ends every pass at Z{}; the plan ends the shallower "
-                      "passes up to {:.4f} earlier (threading.accept_pass_end)",
-                      number_text(w.z, m.format_for("Z")), most));
-      diff.clear();
-    }
+  std::vector<Cut> moved = want;
+  const double most = g76::move_ends_to_deepest(cp, moved);
+  if (extra) moved.back() = moved[moved.size() - 2];
+  return g76::pass_end_mismatch(cuts, want, moved, most, b.w.z, m,
+                                CutCompareOptions{cut_tolerance(m), false}, notes);
+}
+
+// The words that cut `plan` (single start) with G76, or a mismatch in `f`.
+std::optional<FanucBlock> fanuc_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
+  auto failed = [&](std::string why) {
+    f.mismatch = std::move(why);
+    return !f.mismatch.empty();
+  };
+  g76::CyclePlan cp;
+  FanucBlock b;
+  FanucG76Words& w = b.w;
+  if (failed(fanuc_refusal(plan)) || failed(g76::read_cycle_plan(plan, 0, "G76", cp)) ||
+      failed(angle_words(plan, m, cp, w)) || failed(chamfer_word(plan, m, cp, w)))
+    return std::nullopt;
+  if (!m.templates.count(kFanucTemplate)) {
+    failed(fmt::format("machine '{}' has no template '{}'", m.name, kFanucTemplate));
+    return std::nullopt;
   }
-  if (!diff.empty()) return fail("G76 would cut " + diff);
+  bool extra = false;
+  if (failed(depth_words(plan, m, cp, w, extra))) return std::nullopt;
+  w.min_cut = min_cut_word(plan, m, w);
+  position_words(m, cp, b);
+  if (failed(fanuc_cut_mismatch(m, cp, b, extra, f.notes))) return std::nullopt;
   if (extra)
     f.notes.push_back("G76 adds one spring pass at full depth (threading.extra_spring_passes)");
   return b;

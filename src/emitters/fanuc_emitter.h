@@ -72,6 +72,18 @@ std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view 
 // thread to where the deepest pass ends. Returns the largest move.
 double move_ends_to_deepest(const CyclePlan& cp, std::vector<Cut>& cuts);
 
+// How many of the last `heights` are at `h` (full depth), within 1e-9.
+size_t passes_at(const std::vector<double>& heights, double h);
+
+// Why G76's `cuts` are not the plan's `want` (empty: they are). A fixed-end control (not
+// threading.cycle_shifted_end) ends every pass where the deepest ends: cuts that equal `moved`
+// (the plan so moved, by up to `most`) are accepted with a note in `notes` when
+// threading.accept_pass_end is on; `z` is the Z word the passes end at, as read.
+std::string pass_end_mismatch(const std::vector<Cut>& cuts, const std::vector<Cut>& want,
+                              const std::vector<Cut>& moved, double most, double z,
+                              const Machine& m, const CutCompareOptions& opt,
+                              std::vector<std::string>& notes);
+
 std::string describe_pullout(const ThreadPlan& plan);
 
 // Whether the tool is at `p` (as written) after a cycle.

@@ -34,120 +34,144 @@ struct HaasBlock {
   Vec2 start;  // A as written
 };
 
-std::optional<std::vector<HaasBlock>> haas_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
-  auto fail = [&](std::string why) -> std::optional<std::vector<HaasBlock>> {
-    f.mismatch = std::move(why);
-    return std::nullopt;
-  };
-  if (plan.form == ThreadForm::kChain)
-    return fail("a chained thread: G76 cuts one straight thread line");
-  if (plan.pitch.lead_change != 0) return fail("variable lead: G76 cuts a constant lead");
+// Why Haas G76 cannot cut this kind of plan at all (empty: it may).
+std::string haas_refusal(const ThreadPlan& plan, const Machine& m) {
+  if (plan.form == ThreadForm::kChain) return "a chained thread: G76 cuts one straight thread line";
+  if (plan.pitch.lead_change != 0) return "variable lead: G76 cuts a constant lead";
   if (plan.option == 0)
-    return fail(
-        "OPTION 0, steps shrinking by a constant amount: Haas G76 cuts D x root n "
-        "with P1 or n x D with P3");
+    return "OPTION 0, steps shrinking by a constant amount: Haas G76 cuts D x root n "
+           "with P1 or n x D with P3";
   if (plan.option == 2 || plan.option == 4)
-    return fail(
-        fmt::format("OPTION {} alternates flanks: the control's alternating infeed P{} "
-                    "is not documented in our sources, unverified",
-                    plan.option, plan.option));
+    return fmt::format(
+        "OPTION {} alternates flanks: the control's alternating infeed P{} "
+        "is not documented in our sources, unverified",
+        plan.option, plan.option);
   const double a = plan.tool_angle;
   if (std::fabs(a - std::round(a)) > 1e-9 || a > 120)
-    return fail(fmt::format("tool angle {:g}: A takes whole degrees 0-120", a));
+    return fmt::format("tool angle {:g}: A takes whole degrees 0-120", a);
   if (!m.templates.count(kTemplate))
-    return fail(fmt::format("machine '{}' has no template '{}'", m.name, kTemplate));
-  const HaasSettings s = haas_settings(m, plan.units);
-  const CycleLaw law{m.diameter_output, m.cycle_shifted_end, s.chamfer_angle};
-  const int starts = std::max(1, plan.pitch.starts);
-  const bool by_angle = plan.starts_by_angle && starts > 1;
-  const CutCompareOptions opt{cut_tolerance(m), true};
+    return fmt::format("machine '{}' has no template '{}'", m.name, kTemplate);
+  return {};
+}
+
+// Whether a start's pull-out is the control's chamfer (settings 95/96), or why not.
+std::string haas_chamfer_mismatch(const ThreadPlan& plan, const HaasSettings& s,
+                                  const g76::CyclePlan& cp) {
+  const double chamfer = s.chamfer * plan.lead;
+  if (cp.chamfer == 0 && chamfer > 0)
+    return fmt::format(
+        "the plan has no pull-out; the control chamfers {:g} leads (setting "
+        "95, threading.haas_chamfer)",
+        s.chamfer);
+  if (cp.chamfer > 0 && chamfer == 0)
+    return fmt::format(
+        "pull-out ({}): the control's chamfer (setting 95, "
+        "threading.haas_chamfer) is 0",
+        g76::describe_pullout(plan));
+  if (cp.chamfer > 0 && (std::fabs(cp.chamfer - chamfer) > 1e-6 ||
+                         std::fabs(cp.chamfer_angle - s.chamfer_angle) > 1e-6))
+    return fmt::format(
+        "pull-out ({}) is not the control's chamfer of {:g} leads at {:g} deg "
+        "(settings 95/96)",
+        g76::describe_pullout(plan), s.chamfer, s.chamfer_angle);
+  return {};
+}
+
+// Whether a start's depths are what the control cuts: one pass at full depth, the last step the
+// finish allowance (setting 86), or why not.
+std::string haas_depth_mismatch(const ThreadPlan& plan, const HaasSettings& s,
+                                const g76::CyclePlan& cp) {
+  const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
+  const size_t at_k = g76::passes_at(cp.heights, h_max);
+  if (at_k > 1)
+    return fmt::format("{} passes at full depth: Haas G76 cuts one (no spring passes)", at_k);
+  const size_t below = cp.heights.size() - 1;
+  const double gap = below > 0 ? h_max - cp.heights[below - 1] : h_max;
+  const bool finish = plan.passes.back().kind == PassKind::kFinish;
+  if (s.finish_allowance == 0 && finish)
+    return fmt::format(
+        "finish allowance {:.4g} (FINCUT): the control's setting 86 "
+        "(threading.haas_finish_allowance) is 0",
+        gap);
+  if (s.finish_allowance > 0 && std::fabs(gap - s.finish_allowance) > 1e-6)
+    return fmt::format(
+        "the last step {:.4g} is not the control's finish allowance {:.4g} "
+        "(setting 86, threading.haas_finish_allowance)",
+        gap, s.finish_allowance);
+  return {};
+}
+
+// The block of start `k` of `starts`.
+HaasBlock haas_block(const ThreadPlan& plan, const Machine& m, const g76::CyclePlan& cp, int k,
+                     int starts) {
+  const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
   const double xk = m.diameter_output ? 2 : 1;
-  std::vector<HaasBlock> blocks;
+  HaasBlock b;
+  HaasG76Words& w = b.w;
+  w.mode = plan.option == 3 ? 3 : 1;
+  w.tool_angle = static_cast<int>(std::round(plan.tool_angle));
+  w.lead = as_read(m, "F", plan.lead);
+  w.height = as_read(m, "K", h_max);
+  w.first_cut = read_up(m, "D", cp.heights[0]);
+  w.x = as_read(m, "X", xk * cp.end.x);
+  w.z = as_read(m, "Z", cp.end.z);
+  b.start = point_as_read(m, cp.start);
+  w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "I", cp.slope * (b.start.z - w.z)) : 0;
+  if (plan.starts_by_angle && starts > 1)
+    w.start_angle = as_read(m, "thread_angle", k * 360.0 / starts);
+  return b;
+}
+
+// The cuts of every start, one after the other: as the control cuts them, as planned, and as
+// planned with the pass ends moved to the deepest pass's (by up to `most`).
+struct HaasCuts {
   std::vector<Cut> cuts, want, moved;
   double most = 0;
-  for (int k = 0; k < starts; ++k) {
-    g76::CyclePlan cp;
-    std::string why = g76::read_cycle_plan(plan, k, "G76", cp);
-    if (!why.empty()) return fail(why);
-    if (cp.flank < 0 || std::fabs(cp.flank - a / 2) > 1e-6)
-      return fail(
-          fmt::format("the passes are not shifted along the flank at {:g} deg: G76 infeeds "
-                      "at half the tool angle A",
-                      a / 2));
-    const double chamfer = s.chamfer * plan.lead;
-    if (cp.chamfer == 0 && chamfer > 0)
-      return fail(
-          fmt::format("the plan has no pull-out; the control chamfers {:g} leads (setting "
-                      "95, threading.haas_chamfer)",
-                      s.chamfer));
-    if (cp.chamfer > 0 && chamfer == 0)
-      return fail(
-          fmt::format("pull-out ({}): the control's chamfer (setting 95, "
-                      "threading.haas_chamfer) is 0",
-                      g76::describe_pullout(plan)));
-    if (cp.chamfer > 0 && (std::fabs(cp.chamfer - chamfer) > 1e-6 ||
-                           std::fabs(cp.chamfer_angle - s.chamfer_angle) > 1e-6))
-      return fail(
-          fmt::format("pull-out ({}) is not the control's chamfer of {:g} leads at {:g} deg "
-                      "(settings 95/96)",
-                      g76::describe_pullout(plan), s.chamfer, s.chamfer_angle));
-    const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
-    size_t at_k = 0;
-    while (at_k < cp.heights.size() && cp.heights[cp.heights.size() - 1 - at_k] >= h_max - 1e-9)
-      ++at_k;
-    if (at_k > 1)
-      return fail(
-          fmt::format("{} passes at full depth: Haas G76 cuts one (no spring passes)", at_k));
-    const size_t below = cp.heights.size() - 1;
-    const double gap = below > 0 ? h_max - cp.heights[below - 1] : h_max;
-    const bool finish = plan.passes.back().kind == PassKind::kFinish;
-    if (s.finish_allowance == 0 && finish)
-      return fail(
-          fmt::format("finish allowance {:.4g} (FINCUT): the control's setting 86 "
-                      "(threading.haas_finish_allowance) is 0",
-                      gap));
-    if (s.finish_allowance > 0 && std::fabs(gap - s.finish_allowance) > 1e-6)
-      return fail(
-          fmt::format("the last step {:.4g} is not the control's finish allowance {:.4g} "
-                      "(setting 86, threading.haas_finish_allowance)",
-                      gap, s.finish_allowance));
-    HaasBlock b;
-    HaasG76Words& w = b.w;
-    w.mode = plan.option == 3 ? 3 : 1;
-    w.tool_angle = static_cast<int>(std::round(a));
-    w.lead = as_read(m, "F", plan.lead);
-    w.height = as_read(m, "K", h_max);
-    w.first_cut = read_up(m, "D", cp.heights[0]);
-    w.x = as_read(m, "X", xk * cp.end.x);
-    w.z = as_read(m, "Z", cp.end.z);
-    b.start = point_as_read(m, cp.start);
-    w.taper = std::fabs(cp.slope) > 1e-12 ? as_read(m, "I", cp.slope * (b.start.z - w.z)) : 0;
-    if (by_angle) w.start_angle = as_read(m, "thread_angle", k * 360.0 / starts);
-    std::vector<Cut> c = expand_haas_g76(w, b.start, s, law, starts);
-    cuts.insert(cuts.end(), c.begin(), c.end());
-    want.insert(want.end(), cp.cuts.begin(), cp.cuts.end());
-    std::vector<Cut> mv = cp.cuts;
-    most = std::max(most, g76::move_ends_to_deepest(cp, mv));
-    moved.insert(moved.end(), mv.begin(), mv.end());
-    blocks.push_back(b);
-  }
-  std::string diff = compare_cuts(cuts, want, opt);
-  std::string rest = diff.empty() || m.cycle_shifted_end ? diff : compare_cuts(cuts, moved, opt);
-  if (!rest.empty()) diff = rest;  // a difference beyond the pass ends is what to report
-  if (!diff.empty() && rest.empty()) {
-    const std::string z = number_text(blocks.front().w.z, m.format_for("Z"));
-    if (!m.accept_pass_end)
-      return fail(
-          fmt::format("G76 ends every pass at Z{}; the plan ends the shallower passes up "
-                      "to {:.4f} earlier (threading.accept_pass_end is off)",
-                      z, most));
-    f.notes.push_back(
-        fmt::format("G76 ends every pass at Z{}; the plan ends the shallower "
-                    "passes up to {:.4f} earlier (threading.accept_pass_end)",
-                    z, most));
-    diff.clear();
-  }
-  if (!diff.empty()) return fail("G76 would cut " + diff);
+};
+
+// Reads start `k` of the plan as one block, adding its cuts to `all`, or says why it is not one.
+std::string haas_start(const ThreadPlan& plan, const Machine& m, const HaasSettings& s, int k,
+                       int starts, std::vector<HaasBlock>& blocks, HaasCuts& all) {
+  g76::CyclePlan cp;
+  std::string why = g76::read_cycle_plan(plan, k, "G76", cp);
+  if (!why.empty()) return why;
+  const double a = plan.tool_angle;
+  if (cp.flank < 0 || std::fabs(cp.flank - a / 2) > 1e-6)
+    return fmt::format(
+        "the passes are not shifted along the flank at {:g} deg: G76 infeeds "
+        "at half the tool angle A",
+        a / 2);
+  why = haas_chamfer_mismatch(plan, s, cp);
+  if (why.empty()) why = haas_depth_mismatch(plan, s, cp);
+  if (!why.empty()) return why;
+  const HaasBlock b = haas_block(plan, m, cp, k, starts);
+  const CycleLaw law{m.diameter_output, m.cycle_shifted_end, s.chamfer_angle};
+  std::vector<Cut> c = expand_haas_g76(b.w, b.start, s, law, starts);
+  all.cuts.insert(all.cuts.end(), c.begin(), c.end());
+  all.want.insert(all.want.end(), cp.cuts.begin(), cp.cuts.end());
+  std::vector<Cut> mv = cp.cuts;
+  all.most = std::max(all.most, g76::move_ends_to_deepest(cp, mv));
+  all.moved.insert(all.moved.end(), mv.begin(), mv.end());
+  blocks.push_back(b);
+  return {};
+}
+
+std::optional<std::vector<HaasBlock>> haas_words(const ThreadPlan& plan, const Machine& m, Fit& f) {
+  auto failed = [&](std::string why) {
+    f.mismatch = std::move(why);
+    return !f.mismatch.empty();
+  };
+  if (failed(haas_refusal(plan, m))) return std::nullopt;
+  const HaasSettings s = haas_settings(m, plan.units);
+  const int starts = std::max(1, plan.pitch.starts);
+  std::vector<HaasBlock> blocks;
+  HaasCuts all;
+  for (int k = 0; k < starts; ++k)
+    if (failed(haas_start(plan, m, s, k, starts, blocks, all))) return std::nullopt;
+  const CutCompareOptions opt{cut_tolerance(m), true};
+  if (failed(g76::pass_end_mismatch(all.cuts, all.want, all.moved, all.most, blocks.front().w.z, m,
+                                    opt, f.notes)))
+    return std::nullopt;
   if (starts > 1)
     f.notes.push_back(
         fmt::format("G76 cuts the {} starts one after the other (the plan "

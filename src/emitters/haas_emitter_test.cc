@@ -83,6 +83,12 @@ TEST(HaasG76, MismatchReasons) {
             "threading.haas_chamfer)");
   EXPECT_EQ(haas_fit("THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,4,OPTION,1,TLANGL,150"),
             "tool angle 150: A takes whole degrees 0-120");
+  // The fixed pass end (Option1IsP1's note) not accepted: pass 1 of 6 at 0.92·√(1/6) shifted
+  // 0.375586·tan 30 = 0.216845 ends 0.531162 - 0.216845 = 0.314317 before the deepest.
+  EXPECT_EQ(haas_fit("THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1",
+                     {"threading.accept_pass_end=false"}),
+            "G76 ends every pass at Z-20.; the plan ends the shallower passes up to 0.3143 "
+            "earlier (threading.accept_pass_end is off)");
 }
 
 TEST(HaasG76, SettingsThatMatchThePlan) {

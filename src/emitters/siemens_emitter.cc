@@ -31,57 +31,73 @@ const char* law_name(int vari) {
              : "constant infeed";
 }
 
-}  // namespace
-
-Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
-  Cycle99Call call;
-  Cycle99Words& w = call.words;
-  auto fail = [&](std::string why) {
-    call.mismatch = std::move(why);
-    return call;
-  };
+// Why CYCLE99 cannot cut this kind of plan at all (empty: it may).
+std::string cycle99_refusal(const ThreadPlan& plan, const Machine& m) {
   if (plan.form == ThreadForm::kChain)
-    return fail("a chained thread: CYCLE99 cuts one straight thread line");
+    return "a chained thread: CYCLE99 cuts one straight thread line";
   if (plan.form != ThreadForm::kMulti || plan.passes.empty())
-    return fail("CYCLE99 cuts multi-pass threads (THREAD/ON) only");
+    return "CYCLE99 cuts multi-pass threads (THREAD/ON) only";
   if (!m.templates.count(std::string(tmpl::kCycle99.name)))
-    return fail(fmt::format("machine '{}' has no 'cycle99' template", m.name));
+    return fmt::format("machine '{}' has no 'cycle99' template", m.name);
   if (plan.pitch.lead_change != 0)
-    return fail(fmt::format("CYCLE99 cuts a constant lead; this lead {} by {} per revolution",
-                            plan.pitch.lead_change > 0 ? "grows (INCR)" : "shrinks (DECR)",
-                            num_text(std::fabs(plan.pitch.lead_change))));
-  const double tol = cut_tolerance(m);
-  const Vec2 p1 = plan.p1, p2 = plan.p2;
-  const double len = length(p2 - p1);
-  const Vec2 t = (1 / len) * (p2 - p1);
-  const Vec2 u = direction(plan.cutang);
-  Vec2 n{t.z, -t.x};  // toward the material (the side the infeed goes to)
-  if (dot(n, u) < 0) n = -n;
+    return fmt::format("CYCLE99 cuts a constant lead; this lead {} by {} per revolution",
+                       plan.pitch.lead_change > 0 ? "grows (INCR)" : "shrinks (DECR)",
+                       num_text(std::fabs(plan.pitch.lead_change)));
+  return {};
+}
 
-  // --- Kind, side, infeed axis. ---
-  Vec2 a_in;
+// The thread line and the infeed as CYCLE99 reads them.
+struct Cycle99Frame {
+  double tol = 0;   // cut_tolerance
+  Vec2 p1;          // the thread start
+  double len = 0;   // P1 to P2
+  Vec2 t;           // unit cutting direction
+  Vec2 n;           // unit normal toward the material (the side the infeed goes to)
+  Vec2 a_in;        // the paraxial infeed axis
+  double cosv = 1;  // n . a_in
+};
+
+// PSYS (the kind, side and infeed axis) and the frame, or why CYCLE99 does not cut this thread
+// that way.
+std::string frame_words(const ThreadPlan& plan, const Machine& m, Cycle99Frame& f,
+                        Cycle99Words& w) {
+  f.tol = cut_tolerance(m);
+  f.p1 = plan.p1;
+  const Vec2 p1 = plan.p1, p2 = plan.p2;
+  f.len = length(p2 - p1);
+  f.t = (1 / f.len) * (p2 - p1);
+  const Vec2 u = direction(plan.cutang);
+  f.n = {f.t.z, -f.t.x};
+  if (dot(f.n, u) < 0) f.n = -f.n;
   if (plan.kind == ThreadKind::kFace) {
     w.psys = 10;
-    a_in = {0, -1};
-    if (n.z >= 0)
-      return fail(
-          "CYCLE99 cuts a face thread toward -Z (unverified); this one's infeed goes toward +Z");
+    f.a_in = {0, -1};
+    if (f.n.z >= 0)
+      return "CYCLE99 cuts a face thread toward -Z (unverified); this one's infeed goes toward +Z";
   } else {
     if (!plan.lead_along_z)
-      return fail(
-          fmt::format("CYCLE99 takes a taper thread's lead along Z (unverified); this "
-                      "taper's lead is along X (X travel {} > Z travel {})",
-                      num_text(std::fabs(p2.x - p1.x)), num_text(std::fabs(p2.z - p1.z))));
+      return fmt::format(
+          "CYCLE99 takes a taper thread's lead along Z (unverified); this "
+          "taper's lead is along X (X travel {} > Z travel {})",
+          num_text(std::fabs(p2.x - p1.x)), num_text(std::fabs(p2.z - p1.z)));
     w.psys = plan.kind == ThreadKind::kTaper ? 20 : 0;
-    a_in = {plan.side == ThreadSide::kInternal ? 1.0 : -1.0, 0};
+    f.a_in = {plan.side == ThreadSide::kInternal ? 1.0 : -1.0, 0};
   }
-  const bool internal = w.psys != 10 && plan.side == ThreadSide::kInternal;
-  const double cosv = dot(n, a_in);
+  f.cosv = dot(f.n, f.a_in);
+  return {};
+}
 
-  // --- Depth ladder (start 0): NRC roughing cuts, FAL, NID idle passes. ---
+// The depth ladder: the passes of the first start (start 0).
+std::vector<const ThreadPass*> depth_ladder(const ThreadPlan& plan) {
   std::vector<const ThreadPass*> ladder;
   for (const ThreadPass& p : plan.passes)
     if (p.start == 0) ladder.push_back(&p);
+  return ladder;
+}
+
+// NRC roughing cuts, FAL, NID idle passes and TDEP from the ladder.
+std::string depth_words(const std::vector<const ThreadPass*>& ladder, const Machine& m,
+                        const Cycle99Frame& f, Cycle99Words& w) {
   int nrc = 0, nid = 0;
   double rough = 0, finish = -1;
   for (const ThreadPass* p : ladder) {
@@ -90,92 +106,118 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
     if (p->kind == PassKind::kSpring) ++nid;
   }
   const double full = finish >= 0 ? finish : rough;
-  if (!(full > tol))
-    return fail("CYCLE99 needs a thread depth (TDEP); this thread is one pass on the contour");
+  if (!(full > f.tol))
+    return "CYCLE99 needs a thread depth (TDEP); this thread is one pass on the contour";
   w.nrc = nrc;
   w.nid = nid;
-  w.tdep = as_read(m, kDepthFormat, full / cosv);
-  w.fal = finish >= 0 ? as_read(m, kDepthFormat, (finish - rough) / cosv) : 0;
+  w.tdep = as_read(m, kDepthFormat, full / f.cosv);
+  w.fal = finish >= 0 ? as_read(m, kDepthFormat, (finish - rough) / f.cosv) : 0;
+  return {};
+}
 
-  // --- Flank infeed: every pass's shift along t, beyond what the paraxial infeed gives. ---
+// A pass's shift along the thread line beyond what the paraxial infeed to its depth gives.
+double flank_shift(const ThreadPass& p, const Cycle99Frame& f) {
+  return dot(p.from - f.p1, f.t) - (p.depth / f.cosv) * dot(f.a_in, f.t);
+}
+
+// IANG: every pass shifted by depth x tan(IANG) (one flank), within half the tool angle.
+std::string flank_words(const ThreadPlan& plan, const Machine& m, const Cycle99Frame& f,
+                        const std::vector<const ThreadPass*>& ladder, Cycle99Words& w) {
   const ThreadPass& deepest = *ladder.back();
-  auto shift_of = [&](const ThreadPass& p) {
-    return dot(p.from - p1, t) - (p.depth / cosv) * dot(a_in, t);
-  };
-  const double tan_iang = shift_of(deepest) / deepest.depth;
+  const double tan_iang = flank_shift(deepest, f) / deepest.depth;
   for (const ThreadPass* p : ladder) {
-    double s = shift_of(*p);
-    if (std::fabs(s - p->depth * tan_iang) <= tol) continue;
+    double s = flank_shift(*p, f);
+    if (std::fabs(s - p->depth * tan_iang) <= f.tol) continue;
     if (plan.option == 2 || plan.option == 4)
-      return fail(fmt::format(
+      return fmt::format(
           "CYCLE99 infeeds along one flank (IANG); OPTION {} alternates the "
           "flanks (pass {} shift {:.4f}, pass {} shift {:.4f})",
-          plan.option, ladder.front()->n, shift_of(*ladder.front()), deepest.n, shift_of(deepest)));
-    return fail(
-        fmt::format("CYCLE99 shifts every cut by depth x tan(IANG); pass {} is shifted "
-                    "{:.4f}, not {:.4f}",
-                    p->n, s, p->depth * tan_iang));
+          plan.option, ladder.front()->n, flank_shift(*ladder.front(), f), deepest.n,
+          flank_shift(deepest, f));
+    return fmt::format(
+        "CYCLE99 shifts every cut by depth x tan(IANG); pass {} is shifted "
+        "{:.4f}, not {:.4f}",
+        p->n, s, p->depth * tan_iang);
   }
   const double iang = deg(std::atan(tan_iang));
   if (std::fabs(iang) > plan.tool_angle / 2 + 1e-6)
-    return fail(
-        fmt::format("IANG {:.4f} is more than half the tool angle {} (CYCLE99 allows at "
-                    "most {})",
-                    iang, num_text(plan.tool_angle), num_text(plan.tool_angle / 2)));
+    return fmt::format(
+        "IANG {:.4f} is more than half the tool angle {} (CYCLE99 allows at "
+        "most {})",
+        iang, num_text(plan.tool_angle), num_text(plan.tool_angle / 2));
   w.iang = as_read(m, kAngleFormat, iang);
+  return {};
+}
 
-  // --- Pull-out: only the run-out ROP (CHAMFR with a negative length). ---
+// ROP and APP. The only pull-out is the run-out ROP (CHAMFR with a negative length); `rop` is
+// its length along the thread as planned (ROP unrounded).
+std::string runout_words(const ThreadPlan& plan, const Machine& m, const Cycle99Frame& f,
+                         const std::vector<const ThreadPass*>& ladder, Cycle99Words& w,
+                         double& rop) {
+  const ThreadPass& deepest = *ladder.back();
   double sigma_max = 0;
   for (const ThreadPass* p : ladder) sigma_max = std::max(sigma_max, p->shift);
-  const double shorten = len - sigma_max - dot(deepest.to - deepest.from, t);
-  double rop = 0;
+  const double shorten = f.len - sigma_max - dot(deepest.to - deepest.from, f.t);
+  rop = 0;
   if (plan.pullout) {
-    const double along = dot(*plan.pullout, t), out = dot(*plan.pullout, -n);
-    if (shorten <= tol)
-      return fail(
-          fmt::format("CYCLE99 has no pull-out past the thread end, only the run-out ROP "
-                      "that ends at FPL (CL CHAMFR with a negative length); this "
-                      "pull-out moves {} from the pass end",
-                      vec_text(*plan.pullout)));
-    if (std::fabs(out - along) > tol)
-      return fail(
-          fmt::format("CYCLE99's run-out ROP leaves the thread at 45 degrees "
-                      "(unverified); this run-out rises {} over {} ({} degrees)",
-                      num_text(out), num_text(along), num_text(deg(std::atan2(out, along)))));
+    const double along = dot(*plan.pullout, f.t), out = dot(*plan.pullout, -f.n);
+    if (shorten <= f.tol)
+      return fmt::format(
+          "CYCLE99 has no pull-out past the thread end, only the run-out ROP "
+          "that ends at FPL (CL CHAMFR with a negative length); this "
+          "pull-out moves {} from the pass end",
+          vec_text(*plan.pullout));
+    if (std::fabs(out - along) > f.tol)
+      return fmt::format(
+          "CYCLE99's run-out ROP leaves the thread at 45 degrees "
+          "(unverified); this run-out rises {} over {} ({} degrees)",
+          num_text(out), num_text(along), num_text(deg(std::atan2(out, along))));
     rop = along;
   }
   w.rop = as_read(m, kDepthFormat, rop);
   w.app = as_read(m, kDepthFormat, m.run_in);
+  return {};
+}
 
-  // --- Start and end points: the full-depth cut's run-out ends at FPL. ---
-  // Along t the deepest cut's end is FPL - ROP plus what its paraxial infeed moves along t.
-  const double end_t = dot(deepest.to - p1, t) - (deepest.depth / cosv) * dot(a_in, t) + rop;
+// SPL, DM1, FPL, DM2: the start APP into the thread, the full-depth cut's run-out ending at FPL.
+// Along t the deepest cut's end is FPL - ROP plus what its paraxial infeed moves along t.
+std::string end_point_words(const Machine& m, const Cycle99Frame& f, const ThreadPass& deepest,
+                            double rop, Cycle99Words& w) {
+  const double end_t =
+      dot(deepest.to - f.p1, f.t) - (deepest.depth / f.cosv) * dot(f.a_in, f.t) + rop;
   if (w.app >= end_t)
-    return fail(fmt::format("threading.run_in {} is not shorter than the thread ({})",
-                            num_text(m.run_in), num_text(end_t)));
-  const Vec2 sp = p1 + w.app * t, fp = p1 + end_t * t;
+    return fmt::format("threading.run_in {} is not shorter than the thread ({})",
+                       num_text(m.run_in), num_text(end_t));
+  const Vec2 sp = f.p1 + w.app * f.t, fp = f.p1 + end_t * f.t;
   w.spl = as_read(m, "Z", sp.z);
   w.dm1 = as_read(m, "X", 2 * sp.x);
   w.fpl = as_read(m, "Z", fp.z);
   w.dm2 = as_read(m, "X", 2 * fp.x);
+  return {};
+}
 
-  // --- Starts. ---
+// NUMTH and NSP: several starts spread over the spindle angle, cut start by start (a note).
+std::string start_words(const ThreadPlan& plan, Cycle99Words& w, std::vector<std::string>& notes) {
   const int starts = plan.pitch.starts;
   if (starts > 1) {
     if (!plan.starts_by_angle)
-      return fail(
-          fmt::format("CYCLE99 spreads the {} starts over the spindle angle (NUMTH); this "
-                      "plan offsets them by the pitch (threading.start_angle_word is "
-                      "false)",
-                      starts));
+      return fmt::format(
+          "CYCLE99 spreads the {} starts over the spindle angle (NUMTH); this "
+          "plan offsets them by the pitch (threading.start_angle_word is "
+          "false)",
+          starts);
     w.numth = starts;
-    call.notes.push_back(
+    notes.push_back(
         fmt::format("CYCLE99 cuts start by start: every pass of start 1, then of start 2{}",
                     starts > 2 ? " ..." : ""));
   }
   w.nsp = 0;
+  return {};
+}
 
-  // --- Lead. ---
+// PIT and PITA: the lead in mm (PITA 1) or threads per inch (PITA 2), as read back, within the
+// tolerance over the thread's turns.
+std::string lead_words(const ThreadPlan& plan, const Machine& m, double tol, Cycle99Words& w) {
   const bool inch = plan.units == LengthUnit::kInch;
   if (plan.pitch.from_tpi || inch) {
     w.pita = 2;
@@ -185,32 +227,60 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
     w.pit = as_read(m, kLeadFormat, plan.lead);
   }
   const double lead = cycle99_lead(w, inch);
+  const Vec2 p1 = plan.p1, p2 = plan.p2;
   const double travel = plan.lead_along_z ? std::fabs(p2.z - p1.z) : std::fabs(p2.x - p1.x);
   const double turns = travel / plan.lead;
   if (std::fabs(lead - plan.lead) * turns > tol)
-    return fail(fmt::format(
+    return fmt::format(
         "PIT {} (PITA {}) is a lead of {:.6f}, plan {:.6f}: {:.4f} off over "
         "the thread's {:.1f} turns",
-        num_text(w.pit), w.pita, lead, plan.lead, std::fabs(lead - plan.lead) * turns, turns));
+        num_text(w.pit), w.pita, lead, plan.lead, std::fabs(lead - plan.lead) * turns, turns);
+  return {};
+}
 
-  // --- Law and retraction. ---
+// VARI (the infeed law and side) and VRT (the retraction).
+void law_words(const ThreadPlan& plan, const Machine& m, Cycle99Words& w) {
+  const bool internal = w.psys != 10 && plan.side == ThreadSide::kInternal;
   const bool section = plan.option == 1 || plan.option == 2;
   w.vari = internal ? (section ? kVariInternalConstantSection : kVariInternalConstantInfeed)
                     : (section ? kVariExternalConstantSection : kVariExternalConstantInfeed);
   w.vrt = as_read(m, kDepthFormat, plan.clearance);
+}
 
-  // --- What the control cuts from these words, against the plan. ---
+// What the control cuts from the words, against the plan (empty: the same cuts).
+std::string cut_mismatch(const ThreadPlan& plan, double tol, const Cycle99Words& w) {
   Cycle99Expansion cut = expand_cycle99(w);
-  if (!cut.alarm.empty()) return fail("CYCLE99 would stop: " + cut.alarm);
+  if (!cut.alarm.empty()) return "CYCLE99 would stop: " + cut.alarm;
   std::string diff = compare_cuts(cut.cuts, plan_cuts(plan), {tol, true});
-  if (!diff.empty()) {
-    if (plan.option == 0)
-      return fail(
-          fmt::format("CYCLE99 has no infeed with steps decreasing by a constant amount "
-                      "(OPTION 0): VARI {} ({}) cuts {}",
-                      w.vari, law_name(w.vari), diff));
-    return fail(fmt::format("VARI {} ({}) cuts {}", w.vari, law_name(w.vari), diff));
-  }
+  if (diff.empty()) return {};
+  if (plan.option == 0)
+    return fmt::format(
+        "CYCLE99 has no infeed with steps decreasing by a constant amount "
+        "(OPTION 0): VARI {} ({}) cuts {}",
+        w.vari, law_name(w.vari), diff);
+  return fmt::format("VARI {} ({}) cuts {}", w.vari, law_name(w.vari), diff);
+}
+
+}  // namespace
+
+Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
+  Cycle99Call call;
+  Cycle99Words& w = call.words;
+  auto failed = [&](std::string why) {
+    call.mismatch = std::move(why);
+    return !call.mismatch.empty();
+  };
+  Cycle99Frame f;
+  if (failed(cycle99_refusal(plan, m)) || failed(frame_words(plan, m, f, w))) return call;
+  const std::vector<const ThreadPass*> ladder = depth_ladder(plan);
+  double rop = 0;
+  if (failed(depth_words(ladder, m, f, w)) || failed(flank_words(plan, m, f, ladder, w)) ||
+      failed(runout_words(plan, m, f, ladder, w, rop)) ||
+      failed(end_point_words(m, f, *ladder.back(), rop, w)) ||
+      failed(start_words(plan, w, call.notes)) || failed(lead_words(plan, m, f.tol, w)))
+    return call;
+  law_words(plan, m, w);
+  failed(cut_mismatch(plan, f.tol, w));
   return call;
 }
 

@@ -453,31 +453,107 @@ bool check_required(const std::string& path, const std::string& text, const Mach
 
 }  // namespace
 
+namespace {
+
+// The machine file of a name (machines/NAME.yaml in the first data dir that has it) or a path.
+bool find_machine_file(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
+                       std::string& path, std::string& errors) {
+  if (looks_like_path(name_or_path)) {
+    path = std::string(name_or_path);
+    return true;
+  }
+  for (const std::string& dir : data_dirs) {
+    std::string p = dir + "/machines/" + std::string(name_or_path) + ".yaml";
+    if (fs::exists(p)) {
+      path = p;
+      return true;
+    }
+  }
+  std::vector<std::string> names;
+  for (const MachineInfo& mi : list_machines(data_dirs)) names.push_back(mi.name);
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  errors +=
+      fmt::format("clpost: error: unknown machine '{}'{}; shipped machines: {}\n", name_or_path,
+                  did_you_mean(name_or_path, names), list.empty() ? "none found" : list);
+  return false;
+}
+
+// Applies post `post`, which the machine file `path` (text `machine_text`) extends, to `m`.
+// Posts live in posts/ beside the machines/ folder of the machine file, or in a data dir.
+bool apply_post(const std::string& path, const std::string& machine_text, const std::string& post,
+                const std::vector<std::string>& data_dirs, Machine& m, std::string& errors,
+                KeyOrigins* origins) {
+  std::vector<std::string> candidates = {
+      (fs::path(path).parent_path() / ".." / "posts" / (post + ".yaml"))
+          .lexically_normal()
+          .string(),
+      (fs::path(path).parent_path() / (post + ".yaml")).string()};
+  for (const std::string& dir : data_dirs) candidates.push_back(dir + "/posts/" + post + ".yaml");
+  std::string post_path;
+  for (const std::string& cand : candidates)
+    if (fs::exists(cand)) {
+      post_path = cand;
+      break;
+    }
+  if (post_path.empty()) {
+    YamlText t(machine_text);
+    uint32_t line = t.find_key_line("extends");
+    Diagnostics d(path);
+    d.error(SourceLoc{line, 1}, t.line(line),
+            fmt::format("post '{}' not found (looked in posts/ beside the machine file and in "
+                        "the data directories)",
+                        post));
+    errors += d.render_all();
+    return false;
+  }
+  std::string post_text;
+  if (!read_file(post_path, post_text)) {
+    errors += fmt::format("{}: error: cannot read post file\n", post_path);
+    return false;
+  }
+  return apply_machine_yaml(post_path, post_text, true, m, errors, origins);
+}
+
+// Applies one `--set key.path=value` to `m`.
+bool apply_override(const std::string& ov, Machine& m, std::string& errors, KeyOrigins* origins) {
+  size_t eq = ov.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    errors += fmt::format("--set: error: expected key.path=value, got '{}'\n", ov);
+    return false;
+  }
+  // Turn "a.b.c=v" into the YAML document "a: {b: {c: v}}" and apply it like a file.
+  std::string key = ov.substr(0, eq), value = ov.substr(eq + 1);
+  std::string doc;
+  size_t depth = 0, start = 0;
+  for (size_t dot; (dot = key.find('.', start)) != std::string::npos; start = dot + 1, ++depth)
+    doc += key.substr(start, dot - start) + ": {";
+  doc += key.substr(start) + ": " + (value.empty() ? "''" : value) + std::string(depth, '}');
+  std::string set_errors;
+  if (apply_machine_yaml("--set " + ov, doc, false, m, set_errors, origins)) return true;
+  // The YAML document was made here, so its line, column and text mean nothing to the user:
+  // keep only `--set key=value: error: message`.
+  std::string prefix = "--set " + ov + ":1:";
+  start = 0;
+  while (start < set_errors.size()) {
+    size_t end = set_errors.find('\n', start);
+    std::string line = set_errors.substr(start, end - start);
+    if (line.starts_with(prefix)) {
+      size_t colon = line.find(':', prefix.size());
+      errors += "--set " + ov + line.substr(colon) + "\n";
+    }
+    start = end == std::string::npos ? set_errors.size() : end + 1;
+  }
+  return false;
+}
+
+}  // namespace
+
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
                   const std::vector<std::string>& overrides, Machine& out, std::string& errors,
                   KeyOrigins* origins) {
   std::string path;
-  if (looks_like_path(name_or_path)) {
-    path = std::string(name_or_path);
-  } else {
-    for (const std::string& dir : data_dirs) {
-      std::string p = dir + "/machines/" + std::string(name_or_path) + ".yaml";
-      if (fs::exists(p)) {
-        path = p;
-        break;
-      }
-    }
-    if (path.empty()) {
-      std::vector<std::string> names;
-      for (const MachineInfo& mi : list_machines(data_dirs)) names.push_back(mi.name);
-      std::string list;
-      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      errors +=
-          fmt::format("clpost: error: unknown machine '{}'{}; shipped machines: {}\n", name_or_path,
-                      did_you_mean(name_or_path, names), list.empty() ? "none found" : list);
-      return false;
-    }
-  }
+  if (!find_machine_file(name_or_path, data_dirs, path, errors)) return false;
   std::string machine_text;
   if (!read_file(path, machine_text)) {
     errors += fmt::format("{}: error: cannot read machine file\n", path);
@@ -493,71 +569,12 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
   Machine m;
   m.name = fs::path(path).stem().string();
   m.source = path;
-  if (!probe.post.empty()) {
-    // Posts live in posts/ beside the machines/ folder of the machine file, or in a data dir.
-    std::vector<std::string> candidates = {
-        (fs::path(path).parent_path() / ".." / "posts" / (probe.post + ".yaml"))
-            .lexically_normal()
-            .string(),
-        (fs::path(path).parent_path() / (probe.post + ".yaml")).string()};
-    for (const std::string& dir : data_dirs)
-      candidates.push_back(dir + "/posts/" + probe.post + ".yaml");
-    std::string post_path;
-    for (const std::string& cand : candidates)
-      if (fs::exists(cand)) {
-        post_path = cand;
-        break;
-      }
-    if (post_path.empty()) {
-      YamlText t(machine_text);
-      uint32_t line = t.find_key_line("extends");
-      Diagnostics d(path);
-      d.error(SourceLoc{line, 1}, t.line(line),
-              fmt::format("post '{}' not found (looked in posts/ beside the machine file and in "
-                          "the data directories)",
-                          probe.post));
-      errors += d.render_all();
-      return false;
-    }
-    std::string post_text;
-    if (!read_file(post_path, post_text)) {
-      errors += fmt::format("{}: error: cannot read post file\n", post_path);
-      return false;
-    }
-    if (!apply_machine_yaml(post_path, post_text, true, m, errors, origins)) return false;
-  }
+  if (!probe.post.empty() &&
+      !apply_post(path, machine_text, probe.post, data_dirs, m, errors, origins))
+    return false;
   if (!apply_machine_yaml(path, machine_text, false, m, errors, origins)) return false;
-  for (const std::string& ov : overrides) {
-    size_t eq = ov.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      errors += fmt::format("--set: error: expected key.path=value, got '{}'\n", ov);
-      return false;
-    }
-    // Turn "a.b.c=v" into the YAML document "a: {b: {c: v}}" and apply it like a file.
-    std::string key = ov.substr(0, eq), value = ov.substr(eq + 1);
-    std::string doc;
-    size_t depth = 0, start = 0;
-    for (size_t dot; (dot = key.find('.', start)) != std::string::npos; start = dot + 1, ++depth)
-      doc += key.substr(start, dot - start) + ": {";
-    doc += key.substr(start) + ": " + (value.empty() ? "''" : value) + std::string(depth, '}');
-    std::string set_errors;
-    if (!apply_machine_yaml("--set " + ov, doc, false, m, set_errors, origins)) {
-      // The YAML document was made here, so its line, column and text mean nothing to the user:
-      // keep only `--set key=value: error: message`.
-      std::string prefix = "--set " + ov + ":1:";
-      size_t start = 0;
-      while (start < set_errors.size()) {
-        size_t end = set_errors.find('\n', start);
-        std::string line = set_errors.substr(start, end - start);
-        if (line.starts_with(prefix)) {
-          size_t colon = line.find(':', prefix.size());
-          errors += "--set " + ov + line.substr(colon) + "\n";
-        }
-        start = end == std::string::npos ? set_errors.size() : end + 1;
-      }
-      return false;
-    }
-  }
+  for (const std::string& ov : overrides)
+    if (!apply_override(ov, m, errors, origins)) return false;
   if (!check_required(path, machine_text, m, errors)) return false;
   out = std::move(m);
   return true;

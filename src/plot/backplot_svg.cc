@@ -269,47 +269,79 @@ std::string summary(const Totals& t, size_t total, const char* unit) {
   return s;
 }
 
+// The bounds the frame shows: the moves, fitted to the cutting moves and what is near them
+// (`clipped`) when a rapid goes far off, to a tool-change or home position, which would shrink
+// the part to a few pixels.
+Bounds plot_bounds(const Toolpath& tp, bool& clipped) {
+  Bounds b = toolpath_bounds(tp);
+  clipped = false;
+  const Bounds cut = toolpath_bounds(tp, false);
+  if (cut.empty) return b;
+  const double margin = 0.25 * std::max({cut.z_hi - cut.z_lo, cut.x_hi - cut.x_lo, 1e-9});
+  Bounds near = cut;
+  near.z_lo -= margin;
+  near.z_hi += margin;
+  near.x_lo -= margin;
+  near.x_hi += margin;
+  if (b.z_lo < near.z_lo || b.z_hi > near.z_hi || b.x_lo < near.x_lo || b.x_hi > near.x_hi) {
+    b.z_lo = std::max(b.z_lo, near.z_lo);
+    b.z_hi = std::min(b.z_hi, near.z_hi);
+    b.x_lo = std::max(b.x_lo, near.x_lo);
+    b.x_hi = std::min(b.x_hi, near.x_hi);
+    clipped = true;
+  }
+  return b;
+}
+
+// A thread section drawn under the plot, scaled to the width, at `y`.
+struct Inset {
+  const ThreadSection* s;
+  SvgSize size;
+  double scale, y;
+};
+
+// The insets of `sections` (may be null) one under the other from `height`, which grows by
+// them.
+std::vector<Inset> section_insets(const std::vector<ThreadSection>* sections, double& height) {
+  std::vector<Inset> insets;
+  if (sections == nullptr) return insets;
+  for (const ThreadSection& s : *sections) {
+    const SvgSize size = thread_section_size(s);
+    const double scale = std::min(1.0, (kWidth - 32) / size.width);
+    insets.push_back({&s, size, scale, height + 12});
+    height += 12 + size.height * scale;
+  }
+  return insets;
+}
+
+void draw_insets(SvgWriter& w, const std::vector<Inset>& insets) {
+  for (size_t i = 0; i < insets.size(); ++i) {
+    const Inset& in = insets[i];
+    w.empty("line", {{"x1", "16"},
+                     {"y1", svg_num(in.y - 6)},
+                     {"x2", svg_num(kWidth - 16)},
+                     {"y2", svg_num(in.y - 6)},
+                     {"stroke", "#cccccc"}});
+    w.open("svg", {{"x", "16"},
+                   {"y", svg_num(in.y)},
+                   {"width", svg_num(in.size.width * in.scale)},
+                   {"height", svg_num(in.size.height * in.scale)},
+                   {"viewBox",
+                    fmt::format("0 0 {} {}", svg_num(in.size.width), svg_num(in.size.height))}});
+    draw_thread_section(w, *in.s, fmt::format("s{}-", i + 1));
+    w.close();
+  }
+}
+
 }  // namespace
 
 std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
                          std::string_view title) {
   const char* unit = tp.units == LengthUnit::kInch ? "in" : "mm";
-  // The frame fits the cutting moves and what is near them: a rapid to a far tool-change or
-  // home position would shrink the part to a few pixels, so it runs off the (clipped) frame.
-  Bounds b = toolpath_bounds(tp);
   bool clipped = false;
-  if (const Bounds cut = toolpath_bounds(tp, false); !cut.empty) {
-    const double margin = 0.25 * std::max({cut.z_hi - cut.z_lo, cut.x_hi - cut.x_lo, 1e-9});
-    Bounds near = cut;
-    near.z_lo -= margin;
-    near.z_hi += margin;
-    near.x_lo -= margin;
-    near.x_hi += margin;
-    if (b.z_lo < near.z_lo || b.z_hi > near.z_hi || b.x_lo < near.x_lo || b.x_hi > near.x_hi) {
-      b.z_lo = std::max(b.z_lo, near.z_lo);
-      b.z_hi = std::min(b.z_hi, near.z_hi);
-      b.x_lo = std::max(b.x_lo, near.x_lo);
-      b.x_hi = std::min(b.x_hi, near.x_hi);
-      clipped = true;
-    }
-  }
-  Frame f = frame_of(b);
+  Frame f = frame_of(plot_bounds(tp, clipped));
   double height = f.oy + f.h + kBelow;
-  // Section insets under the plot, scaled to the width.
-  struct Inset {
-    const ThreadSection* s;
-    SvgSize size;
-    double scale, y;
-  };
-  std::vector<Inset> insets;
-  if (sections != nullptr) {
-    for (const ThreadSection& s : *sections) {
-      const SvgSize size = thread_section_size(s);
-      const double scale = std::min(1.0, (kWidth - 32) / size.width);
-      insets.push_back({&s, size, scale, height + 12});
-      height += 12 + size.height * scale;
-    }
-  }
+  const std::vector<Inset> insets = section_insets(sections, height);
   SvgWriter w(kWidth, height);
   draw_style(w);
   w.empty("rect", {{"width", svg_num(kWidth)}, {"height", svg_num(height)}, {"fill", "#ffffff"}});
@@ -335,22 +367,7 @@ std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* s
          summary(t, drawn, unit) +
              (clipped ? "; fitted to the cutting moves, far rapids run off the frame" : ""));
   draw_legend(w, 78);
-  for (size_t i = 0; i < insets.size(); ++i) {
-    const Inset& in = insets[i];
-    w.empty("line", {{"x1", "16"},
-                     {"y1", svg_num(in.y - 6)},
-                     {"x2", svg_num(kWidth - 16)},
-                     {"y2", svg_num(in.y - 6)},
-                     {"stroke", "#cccccc"}});
-    w.open("svg", {{"x", "16"},
-                   {"y", svg_num(in.y)},
-                   {"width", svg_num(in.size.width * in.scale)},
-                   {"height", svg_num(in.size.height * in.scale)},
-                   {"viewBox",
-                    fmt::format("0 0 {} {}", svg_num(in.size.width), svg_num(in.size.height))}});
-    draw_thread_section(w, *in.s, fmt::format("s{}-", i + 1));
-    w.close();
-  }
+  draw_insets(w, insets);
   return w.finish();
 }
 

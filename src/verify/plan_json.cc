@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <optional>
 
 #include "machine/yaml_text.h"
 #include "planner/plan_format.h"
@@ -97,6 +98,67 @@ void chain_details(ThreadPlan& p) {
   p.pullout_linear = angle < 30 - 1e-9 || angle > 60 + 1e-9;
 }
 
+// One pass of thread `p` (a chain's passes have a path).
+ThreadPass read_pass(Reader& r, const YAML::Node& q, const ThreadPlan& p, bool chain) {
+  ThreadPass s;
+  s.n = static_cast<int>(std::lround(r.number(q, "n")));
+  s.start = static_cast<int>(std::lround(r.number(q, "start")));
+  s.depth = r.number(q, "depth");
+  constexpr PassKind kPassKinds[] = {PassKind::kRough, PassKind::kFinish, PassKind::kSpring};
+  s.kind = named(r.word(q, "kind"), kPassKinds, pass_kind_name);
+  s.shift = r.number(q, "shift");
+  s.from = r.point(q, "from");
+  s.to = r.point(q, "to");
+  if (chain) s.path = r.points(q, "path");
+  s.pullout_end = p.pullout ? Vec2{s.to.x + p.pullout->x, s.to.z + p.pullout->z} : s.to;
+  s.start_angle = p.starts_by_angle ? s.start * 360.0 / p.pitch.starts : 0;
+  return s;
+}
+
+// One thread of the JSON, or nothing when it cannot be verified from the JSON (a form whose
+// path the JSON does not hold) or has no passes.
+std::optional<ThreadPlan> read_thread(Reader& r, const YAML::Node& t, const std::string& units,
+                                      const Machine& m) {
+  ThreadPlan p;
+  p.units = units == units_name(LengthUnit::kInch) ? LengthUnit::kInch : LengthUnit::kMm;
+  p.loc.line = static_cast<uint32_t>(std::max(0.0, r.number(t, "line")));
+  p.loc.col = 1;
+  const std::string form = r.word(t, "form");
+  const bool chain = form == form_name(ThreadForm::kChain);
+  if (r.ok && form != form_name(ThreadForm::kMulti) && !chain) {
+    r.error(t.Mark(), fmt::format("thread at line {}: a {} thread's path is not in the plan "
+                                  "JSON; verify against the CL file (--cl)",
+                                  p.loc.line, form));
+    return std::nullopt;
+  }
+  constexpr ThreadKind kKinds[] = {ThreadKind::kTurn, ThreadKind::kFace, ThreadKind::kTaper};
+  constexpr ThreadSide kSides[] = {ThreadSide::kExternal, ThreadSide::kInternal};
+  p.kind = named(r.word(t, "kind"), kKinds, kind_name);
+  p.side = named(r.word(t, "side"), kSides, side_name);
+  p.pitch.set = true;
+  p.pitch.pitch = r.number(t, "pitch");
+  p.lead = r.number(t, "lead");
+  p.pitch.starts = static_cast<int>(std::lround(r.number(t, "starts")));
+  p.depth = r.number(t, "depth");
+  p.option = static_cast<int>(std::lround(r.number(t, "option")));
+  p.tool_angle = r.number(t, "tool_angle");
+  p.cutang = r.number(t, "cutang");
+  p.p1 = r.point(t, "p1");
+  p.p2 = r.point(t, "p2");
+  if (YAML::Node po = t["pullout"]; po && !po.IsNull()) p.pullout = r.point(t, "pullout");
+  if (chain) {
+    p.form = ThreadForm::kChain;
+    p.points = r.points(t, "points");
+  }
+  p.lead_along_z = std::fabs(p.p2.z - p.p1.z) >= std::fabs(p.p2.x - p.p1.x);
+  if (chain) chain_details(p);
+  p.starts_by_angle = p.pitch.starts > 1 && m.start_angle_word;
+  YAML::Node passes = r.need(t, "passes");
+  if (!passes) return std::nullopt;
+  for (const YAML::Node& q : passes) p.passes.push_back(read_pass(r, q, p, chain));
+  return p;
+}
+
 }  // namespace
 
 bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadPlan>& plans,
@@ -124,60 +186,8 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
     r.error(root["units"].Mark(), fmt::format("plan JSON: units '{}', expected mm or in", units));
   YAML::Node threads = r.need(root, "threads");
   if (!r.ok) return false;
-  for (const YAML::Node& t : threads) {
-    ThreadPlan p;
-    p.units = units == units_name(LengthUnit::kInch) ? LengthUnit::kInch : LengthUnit::kMm;
-    p.loc.line = static_cast<uint32_t>(std::max(0.0, r.number(t, "line")));
-    p.loc.col = 1;
-    const std::string form = r.word(t, "form");
-    const bool chain = form == form_name(ThreadForm::kChain);
-    if (r.ok && form != form_name(ThreadForm::kMulti) && !chain) {
-      r.error(t.Mark(), fmt::format("thread at line {}: a {} thread's path is not in the plan "
-                                    "JSON; verify against the CL file (--cl)",
-                                    p.loc.line, form));
-      continue;
-    }
-    constexpr ThreadKind kKinds[] = {ThreadKind::kTurn, ThreadKind::kFace, ThreadKind::kTaper};
-    constexpr ThreadSide kSides[] = {ThreadSide::kExternal, ThreadSide::kInternal};
-    p.kind = named(r.word(t, "kind"), kKinds, kind_name);
-    p.side = named(r.word(t, "side"), kSides, side_name);
-    p.pitch.set = true;
-    p.pitch.pitch = r.number(t, "pitch");
-    p.lead = r.number(t, "lead");
-    p.pitch.starts = static_cast<int>(std::lround(r.number(t, "starts")));
-    p.depth = r.number(t, "depth");
-    p.option = static_cast<int>(std::lround(r.number(t, "option")));
-    p.tool_angle = r.number(t, "tool_angle");
-    p.cutang = r.number(t, "cutang");
-    p.p1 = r.point(t, "p1");
-    p.p2 = r.point(t, "p2");
-    if (YAML::Node po = t["pullout"]; po && !po.IsNull()) p.pullout = r.point(t, "pullout");
-    if (chain) {
-      p.form = ThreadForm::kChain;
-      p.points = r.points(t, "points");
-    }
-    p.lead_along_z = std::fabs(p.p2.z - p.p1.z) >= std::fabs(p.p2.x - p.p1.x);
-    if (chain) chain_details(p);
-    p.starts_by_angle = p.pitch.starts > 1 && m.start_angle_word;
-    YAML::Node passes = r.need(t, "passes");
-    if (!passes) continue;
-    for (const YAML::Node& q : passes) {
-      ThreadPass s;
-      s.n = static_cast<int>(std::lround(r.number(q, "n")));
-      s.start = static_cast<int>(std::lround(r.number(q, "start")));
-      s.depth = r.number(q, "depth");
-      constexpr PassKind kPassKinds[] = {PassKind::kRough, PassKind::kFinish, PassKind::kSpring};
-      s.kind = named(r.word(q, "kind"), kPassKinds, pass_kind_name);
-      s.shift = r.number(q, "shift");
-      s.from = r.point(q, "from");
-      s.to = r.point(q, "to");
-      if (chain) s.path = r.points(q, "path");
-      s.pullout_end = p.pullout ? Vec2{s.to.x + p.pullout->x, s.to.z + p.pullout->z} : s.to;
-      s.start_angle = p.starts_by_angle ? s.start * 360.0 / p.pitch.starts : 0;
-      p.passes.push_back(s);
-    }
-    plans.push_back(std::move(p));
-  }
+  for (const YAML::Node& t : threads)
+    if (std::optional<ThreadPlan> p = read_thread(r, t, units, m)) plans.push_back(std::move(*p));
   return r.ok;
 }
 
