@@ -147,6 +147,16 @@ TEST(Interpreter, TextStatements) {
   EXPECT_EQ(p.nc, std::string(kHeader) + "(SHAFT 12)\n(rough OD)\nG65 P9010\nM30\n%\n");
 }
 
+// INSERT's text is the user's: it may change the motion mode, the feed or the position, so the
+// next move writes its motion code, both axes and its feed again (without the INSERT the second
+// GOTO would be "Z-10." alone).
+TEST(Interpreter, AnInsertMakesTheNextMoveStateEverything) {
+  Posted p =
+      post("FEDRAT/0.2,MMPR\nGOTO/10,0,0\nINSERT G98 G0 Z50.\nGOTO/10,0,-10\nFINI\n", generic());
+  EXPECT_EQ(p.nc, std::string(kHeader) +
+                      "G1 X20. Z0. G95 F0.2\nG98 G0 Z50.\nG1 X20. Z-10. G95 F0.2\nM30\n%\n");
+}
+
 TEST(Interpreter, ToolCoolantCompDwellStops) {
   Posted p = post(
       "LOADTL/4,ADJUST,14\nLOAD/TOOL,5\nCOOLNT/ON\nCOOLNT/OFF\nCUTCOM/LEFT\nCUTCOM/OFF\n"
