@@ -198,13 +198,20 @@ void NcProgram::feed_words() {
   }
 }
 
+bool NcProgram::stays_at(LathePoint p) const {
+  return last_x_ && last_z_ && same_text(*last_x_, written_after(last_x_, x_out(p.r), fmt_x_)) &&
+         same_text(*last_z_, written_after(last_z_, p.z, fmt_z_));
+}
+
 void NcProgram::rapid(LathePoint p) {
+  if (stays_at(p)) return;
   motion_code(code_rapid_);
   axes(p, false);
   w_.end_block();
 }
 
 void NcProgram::linear(LathePoint p) {
+  if (stays_at(p)) return;
   motion_code(code_linear_);
   axes(p, false);
   feed_words();

@@ -80,6 +80,8 @@ class NcProgram {
   void comment(std::string_view text) { w_.comment(text); }
   void raw(std::string_view text) { w_.raw_line(text); }
 
+  // A rapid or feed move; none at all to where the program has just put the tool (its X and Z
+  // would be written as they were last): a block of its motion code alone moves nothing.
   void rapid(LathePoint p);
   void linear(LathePoint p);
   // Arc in the XZ plane to `p` around `center`; `ccw` = positive rotation about +Y (G3 in G18).
@@ -110,6 +112,7 @@ class NcProgram {
  private:
   void motion_code(const std::string& code);
   void axes(LathePoint p, bool force_both);
+  bool stays_at(LathePoint p) const;  // X and Z as last written
   void feed_words();
   double x_out(double r) const { return m_.diameter_output ? 2 * r : r; }
 

@@ -37,6 +37,22 @@ TEST(NcProgram, ModalWordsAndDiameterOutput) {
             "X30. F0.15\n");
 }
 
+// A move to where the tool was just written to be writes no block: "G0" alone (the motion code
+// changed, no axis) would be a block that moves nothing. A position written differently (X to
+// the X format's 3 decimals) is a move.
+TEST(NcProgram, AMoveToTheWrittenPositionWritesNothing) {
+  Machine m = test_machine();
+  StringSink out;
+  NcProgram p(m, out);
+  p.set_feed(0.2, FeedMode::kPerRev);
+  p.linear({12, -10});
+  p.rapid({12, -10});
+  p.linear({12.0000001, -10});
+  p.rapid({16, 2});
+  p.rapid({16.001, 2});
+  EXPECT_EQ(out.out, "G1 X24. Z-10. G95 F0.2\nG0 X32. Z2.\nX32.002\n");
+}
+
 TEST(NcProgram, ModalSuppressionComparesTheWrittenText) {
   // 0.0055 · 1000 is 5.5 in double arithmetic, but the exact binary value of 0.0055 lies below
   // the half: it is written Z0.005, as printf rounds. The move to Z0.006 after it is a new text
