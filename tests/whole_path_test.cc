@@ -188,6 +188,23 @@ TEST(WholePathGoldens, AToolChangeWithoutAToolWordIsNotCompared) {
       << v.out;
 }
 
+// A CL motion to where the tool already is writes no block (nothing moves; it used to write a
+// motionless "G0" alone), and verify takes it as reached there, whatever its kind. Found by the
+// round-trip fuzzer (a RAPID, GOTO to the point just reached).
+TEST(WholePathGoldens, AMotionToWhereTheToolIsNeedsNoBlock) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/same.cl",
+             "UNITS/MM\nLOADTL/1\nSPINDL/800,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/16,0,2\n"
+             "GOTO/12,0,-10\nRAPID\nGOTO/12,0,-10\nRAPID\nGOTO/16,0,2\nFINI\n");
+  const RunResult r = run(quote(clpost_bin()) + " -m haas-st " + quote(dir + "/same.cl") +
+                          " --verify -o " + quote(dir + "/same.nc"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const std::string nc = read_file(dir + "/same.nc");
+  EXPECT_NE(nc.find("G1 X24. Z-10. G99 F0.2\nG0 X32. Z2.\n"), std::string::npos) << nc;
+  EXPECT_NE(r.err.find("motions: 4 CL end points, every one reached in order"), std::string::npos)
+      << r.err;
+}
+
 // LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
 // outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
 // feed the CL says, by hand from the CL files:
