@@ -118,6 +118,7 @@ struct PostState {
   size_t y_warnings = 0;                // points off the lathe plane (warned once)
   std::vector<std::string> noted;       // keys of notes already given once
   ThreadSequence thread;                // the thread sequence being read, if any
+  double clock_feed = -1;  // the feed in force for the clock, per minute (time_feed_rate)
 };
 
 // Diagnostics at statement `st` (its own line text is shown).
