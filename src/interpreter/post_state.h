@@ -109,7 +109,7 @@ struct PostState {
   std::optional<Point3> last_dir;  // the direction the last motion ended in
   // SYN/'word','replacement': major words read as others; an empty replacement: ignored.
   std::vector<std::pair<std::string, std::string>> synonyms;
-  bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
+  bool in_cycle = false;  // between CYCLE/ and CYCLE/OFF: its GOTOs are holes or not posted
   std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
   std::vector<Hole> holes;              // every hole written, in order (verify)
   CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
