@@ -38,7 +38,8 @@ inline double move_length(Vec2 a, Vec2 b) {
 // The feed in force as a length per minute, for straight feed moves (PostState::clock_feed):
 // the feed per minute, or per revolution times the rpm; -1 when it is not that simple (no feed
 // or no speed yet, or constant surface speed, whose rpm changes with the radius): then every
-// move is worked out in full. FEDRAT and SPINDL call it when they change the feed or the spindle.
+// move is worked out in full. Whatever changes PostState::feed, feed_mode or spindle calls it
+// (FEDRAT and SPINDL, spindle_feed.cc), or the next moves are timed at the old feed.
 void time_feed_rate(PostState& s);
 
 // A feed move to `to` at the feed in force, in full (cycle_time.cc).
