@@ -1,4 +1,5 @@
-// The cycle-time clock (cycle_time.h): every hook moves the clock's tool from where it is.
+// The cycle-time clock (cycle_time.h, its hooks in clock.h): every hook moves the clock's tool
+// from where it is.
 #include "interpreter/cycle_time.h"
 
 #include <fmt/format.h>
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interpreter/clock.h"
 #include "interpreter/post_state.h"
 
 namespace clpost {
@@ -14,26 +16,24 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The first move before any tool change starts the list (rare: out of line).
+[[gnu::noinline]] void first_entry(CycleTime& c) {
+  c.tools.emplace_back();
+}
+
+// The tool the clock times. Its data (text, nose radius) came with its change
+// (time_tool_change): tool data words describe the next tool (ToolInfo, next_tool), never the one
+// in use, so a move has nothing to take.
 ToolTime& current(PostState& s) {
   CycleTime& c = s.clock;
-  if (c.tools.empty()) c.tools.emplace_back();
-  ToolTime& t = c.tools.back();
-  // Tool data may come after the tool change (PPRINT TOOL:): taken when it is there. Every move
-  // comes here: the common case (no text) is one test.
-  if (!s.tool.text.empty() && t.text.empty() && t.tool == s.tool.number) t.text = s.tool.text;
-  if (s.tool.nose_radius && !t.nose_radius && t.tool == s.tool.number)
-    t.nose_radius = s.tool.nose_radius;
-  return t;
+  if (c.tools.empty()) [[unlikely]]
+    first_entry(c);
+  return c.tools.back();
 }
 
 // The tool reaches `p` after `seconds` more (one look-up of the tool per move).
-void reach(PostState& s, Vec2 p, double seconds = 0) {
-  ToolTime& t = current(s);
-  t.seconds += seconds;
-  t.x_min = std::min(t.x_min, p.x);
-  t.x_max = std::max(t.x_max, p.x);
-  t.z_min = std::min(t.z_min, p.z);
-  t.z_max = std::max(t.z_max, p.z);
+void arrive(PostState& s, Vec2 p, double seconds = 0) {
+  reach(current(s), p, seconds);
   s.clock_at = p;
 }
 
@@ -41,14 +41,10 @@ void add(PostState& s, double seconds) {
   current(s).seconds += seconds;
 }
 
-// Minutes to feed `length` along radii r0 .. r1 (linearly) at feed `f` in `mode`.
-double feed_minutes(const PostState& s, double length, double r0, double r1, double f,
-                    FeedMode mode) {
-  if (!(f > 0) || length <= 0) return 0;
-  if (mode == FeedMode::kPerMinute) return length / f;
+// Minutes to feed `length` along radii r0 .. r1 (linearly) at feed `f` per revolution under
+// constant surface speed: rpm(r) = K / (2 pi r), clamped at the limit below the radius rc.
+double css_minutes(const PostState& s, double length, double r0, double r1, double f) {
   const SpindleState& sp = s.spindle;
-  if (!sp.css) return sp.value > 0 ? length / (f * sp.value) : 0;
-  // rpm(r) = K / (2 pi r), clamped at the limit below the radius rc.
   const double k = sp.value * (s.units == LengthUnit::kInch ? 12 : 1000);
   const double max = sp.css_max_rpm > 0 ? sp.css_max_rpm : s.m.max_rpm;
   const double rc = max > 0 ? k / (2 * kPi * max) : 0;
@@ -65,10 +61,14 @@ double feed_minutes(const PostState& s, double length, double r0, double r1, dou
   return piece(0, 1);
 }
 
-// sqrt rather than hypot: every GOTO comes here, and CL values are far from overflow.
-double length(Vec2 a, Vec2 b) {
-  const double dx = b.x - a.x, dz = b.z - a.z;
-  return std::sqrt(dx * dx + dz * dz);
+// Minutes to feed `length` along radii r0 .. r1 (linearly) at feed `f` in `mode`.
+double feed_minutes(const PostState& s, double length, double r0, double r1, double f,
+                    FeedMode mode) {
+  if (!(f > 0) || length <= 0) return 0;
+  if (mode == FeedMode::kPerMinute) return length / f;
+  const SpindleState& sp = s.spindle;
+  if (!sp.css) return sp.value > 0 ? length / (f * sp.value) : 0;
+  return css_minutes(s, length, r0, r1, f);
 }
 
 // A feed move from where the clock is to `to` at feed `f`.
@@ -76,9 +76,9 @@ void feed_to(PostState& s, Vec2 to, double f, FeedMode mode) {
   double seconds = 0;
   if (s.clock_at) {
     const Vec2 a = *s.clock_at;
-    seconds = 60 * feed_minutes(s, length(a, to), a.x, to.x, f, mode);
+    seconds = 60 * feed_minutes(s, move_length(a, to), a.x, to.x, f, mode);
   }
-  reach(s, to, seconds);
+  arrive(s, to, seconds);
 }
 
 }  // namespace
@@ -101,17 +101,28 @@ void time_rapid(PostState& s, Vec2 to) {
     if ((dx > 0 && rx <= 0) || (dz > 0 && rz <= 0)) s.clock.rapids_untimed = true;
     seconds = 60 * std::max(rx > 0 ? dx / rx : 0, rz > 0 ? dz / rz : 0);
   }
-  reach(s, to, seconds);
+  arrive(s, to, seconds);
 }
 
-void time_feed(PostState& s, Vec2 to) {
+void time_feed_rate(PostState& s) {
+  const double f = s.feed, rpm = s.spindle.value;
+  s.clock_feed = -1;
+  if (!(f > 0)) return;
+  if (s.feed_mode == FeedMode::kPerMinute) {
+    s.clock_feed = f;
+  } else if (!s.spindle.css && rpm > 0 && f * rpm > 0) {  // (a product below the smallest
+    s.clock_feed = f * rpm;                               // double is worked out in full)
+  }
+}
+
+void time_feed_move(PostState& s, Vec2 to) {
   feed_to(s, to, s.feed, s.feed_mode);
 }
 
 void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
-  if (!s.clock_at) return reach(s, to);
+  if (!s.clock_at) return arrive(s, to);
   const Vec2 a = *s.clock_at;
-  const double r = length(center, a);
+  const double r = move_length(center, a);
   const double t0 = std::atan2(a.x - center.x, a.z - center.z);
   double sweep = std::atan2(to.x - center.x, to.z - center.z) - t0;
   // Positive rotation turns Z toward X (G3 in G18 with the lathe frame as drawn).
@@ -124,7 +135,7 @@ void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
     const double rad = center.x + r * std::sin(u);
     minutes += feed_minutes(s, r * std::fabs(sweep) / kSteps, rad, rad, s.feed, s.feed_mode);
   }
-  reach(s, to, 60 * minutes);
+  arrive(s, to, 60 * minutes);
 }
 
 void time_dwell(PostState& s, double seconds) {
@@ -135,9 +146,9 @@ void time_sync(PostState& s, Vec2 to, double lead, double rpm) {
   if (s.clock_at && lead > 0 && rpm > 0) {
     const double travel =
         std::max(std::fabs(to.x - s.clock_at->x), std::fabs(to.z - s.clock_at->z));
-    return reach(s, to, 60 * travel / (lead * rpm));
+    return arrive(s, to, 60 * travel / (lead * rpm));
   }
-  reach(s, to);
+  arrive(s, to);
 }
 
 void time_thread(PostState& s, const ThreadPlan& plan, double rpm) {

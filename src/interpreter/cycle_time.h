@@ -51,17 +51,6 @@ std::string time_text(double seconds);
 // the NC header; each line without a line ending, in `units`.
 std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter);
 
-struct PostState;  // post_state.h
-struct Point3;
-
-// The clock's hooks (in the lathe frame, CL units; positions from where the tool is).
-void time_tool_change(PostState& s);
-void time_rapid(PostState& s, Vec2 to);
-void time_feed(PostState& s, Vec2 to);
-void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw);
-void time_dwell(PostState& s, double seconds);
-void time_thread(PostState& s, const ThreadPlan& plan, double rpm);
-void time_sync(PostState& s, Vec2 to, double lead, double rpm);
-void time_hole(PostState& s, const Hole& h);
+// The hooks that time a program as it is posted are in clock.h.
 
 }  // namespace clpost

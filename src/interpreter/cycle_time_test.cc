@@ -88,6 +88,31 @@ TEST(CycleTime, PerToolAndUntimedRapids) {
             "cycle time 0:07.5, 2 tool changes; rapids not timed: no time.rapid_x/rapid_z");
 }
 
+// The clock keeps the feed in force as a length per minute between FEDRAT and SPINDL: every change
+// of feed, feed mode or speed is taken at the next move.
+TEST(CycleTime, FeedAndSpeedChangesBetweenMoves) {
+  PostedText r = post_text(
+      "UNITS/MM\nFROM/0,0,0\nLOADTL/1\n"
+      "FEDRAT/100,MMPM\nGOTO/0,0,-10\n"      // 10 mm at 100 mm/min: 6 s
+      "FEDRAT/200,MMPM\nGOTO/0,0,-30\n"      // 20 mm at 200 mm/min: 6 s
+      "FEDRAT/0.1,MMPR\nGOTO/0,0,-40\n"      // per revolution, no speed yet: not timed
+      "SPINDL/500,RPM,CLW\nGOTO/0,0,-50\n"   // 10 mm at 0.1 x 500 = 50 mm/min: 12 s
+      "FEDRAT/0.2,MMPR\nGOTO/0,0,-60\n"      // 10 mm at 0.2 x 500 = 100 mm/min: 6 s
+      "SPINDL/1000,RPM,CLW\nGOTO/0,0,-70\n"  // 10 mm at 0.2 x 1000 = 200 mm/min: 3 s
+      "FEDRAT/300,MMPM\nGOTO/3,0,-66\n"      // 5 mm (3, 4) at 300 mm/min: 1 s
+      "FINI\n",
+      load("generic-lathe", kRates), "t.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  const CycleTime& t = r.summary.cycle_time;
+  ASSERT_EQ(t.tools.size(), 1u);
+  // The tool change 2 s, then 6 + 6 + 0 + 12 + 6 + 3 + 1 s.
+  EXPECT_NEAR(t.tools[0].seconds, 36, 1e-9);
+  EXPECT_EQ(t.tools[0].x_min, 0);
+  EXPECT_EQ(t.tools[0].x_max, 3);
+  EXPECT_EQ(t.tools[0].z_min, -70);
+  EXPECT_EQ(t.tools[0].z_max, -10);
+}
+
 // A machine with a program_header writes the list after its program start (generic-lathe's
 // three lines), the template once per line, as comment text (no parentheses inside).
 TEST(CycleTime, ProgramHeader) {

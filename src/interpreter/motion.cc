@@ -136,8 +136,10 @@ void goto_stmt(PostState& s, const Statement& st) {
     }
     note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
-  if (s.hole_cycle) return hole_goto(s, st, p);
-  if (s.in_cycle) return;  // reported at CYCLE/
+  if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
+    if (s.hole_cycle) hole_goto(s, st, p);
+    return;
+  }
   if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);

@@ -111,7 +111,7 @@ struct PostState {
   std::optional<Point3> last_dir;  // the direction the last motion ended in
   // SYN/'word','replacement': major words read as others; an empty replacement: ignored.
   std::vector<std::pair<std::string, std::string>> synonyms;
-  bool in_cycle = false;  // between a refused CYCLE/ and CYCLE/OFF: its holes are not moves
+  bool in_cycle = false;  // between CYCLE/ and CYCLE/OFF: its GOTOs are holes or not posted
   std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
   std::vector<Hole> holes;              // every hole written, in order (verify)
   CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
@@ -120,6 +120,7 @@ struct PostState {
   size_t y_warnings = 0;                // points off the lathe plane (warned once)
   std::vector<std::string> noted;       // keys of notes already given once
   ThreadSequence thread;                // the thread sequence being read, if any
+  double clock_feed = -1;  // the feed in force for the clock, per minute (time_feed_rate)
 };
 
 // Diagnostics at statement `st` (its own line text is shown).

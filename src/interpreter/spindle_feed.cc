@@ -180,6 +180,7 @@ void fedrat_stmt(PostState& s, const Statement& st) {
   s.feed_mode = mode;
   s.feed_line = st.loc.line;
   s.feed_given = true;
+  time_feed_rate(s);
   if (s.m.max_feed > 0 && mode == FeedMode::kPerMinute && s.feed > s.m.max_feed) {
     warning(s, st, st.loc,
             fmt::format("feed {} exceeds the machine's maximum feed {}", s.feed, s.m.max_feed));
@@ -199,6 +200,7 @@ void spindl_stmt(PostState& s, const Statement& st) {
     return;
   }
   spindle_on(s, st, w);
+  time_feed_rate(s);
 }
 
 // DELAY/t dwells t seconds, DELAY/REV,n n spindle revolutions. The machine's dwell template

@@ -9,6 +9,7 @@
 #include <span>
 #include <string_view>
 
+#include "interpreter/clock.h"
 #include "interpreter/post_state.h"
 
 namespace clpost {

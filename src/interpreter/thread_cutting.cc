@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "emitters/emulation_emitter.h"
+#include "interpreter/clock.h"
 
 namespace clpost {
 

@@ -3,22 +3,50 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdint>
 
 #include "writer/number_format.h"
 
 namespace clpost {
 
-NcWriter::NcWriter(const Machine& m, Sink& out) : m_(m), out_(out), next_number_(m.block_start) {}
+namespace {
 
+// The one-character texts of every block (a block address, a line ending): a memcpy call costs
+// more than the copy.
+void append_short(BlockBuffer& b, std::string_view s) {
+  if (s.size() == 1) return b.push_back(s[0]);
+  b.append(s);
+}
+
+}  // namespace
+
+NcWriter::NcWriter(const Machine& m, Sink& out)
+    : m_(m),
+      out_(out),
+      plain_blocks_(!m.numbers_at_tool_changes),
+      line_limit_(m.max_line_length > 0 ? static_cast<size_t>(m.max_line_length) : SIZE_MAX),
+      next_number_(m.block_start) {}
+
+void NcWriter::set_block_delete(std::string_view mark) {
+  block_delete_ = mark;
+  plain_blocks_ = block_delete_.empty() && !m_.numbers_at_tool_changes;
+}
+
+// Every block comes here (every GOTO is one): a block without block delete whose number only
+// depends on block_numbers.enabled takes one test before its number.
 void NcWriter::open_block() {
   open_ = true;
   line_.clear();
-  if (!block_delete_.empty()) line_.append(block_delete_);
-  numbered_ = m_.block_numbers && (!m_.numbers_at_tool_changes || number_next_);
-  number_next_ = false;
+  if (plain_blocks_) {
+    numbered_ = m_.block_numbers;
+  } else {
+    line_.append(block_delete_);
+    numbered_ = m_.block_numbers && (!m_.numbers_at_tool_changes || number_next_);
+    number_next_ = false;
+  }
   if (numbered_) {
     // "N120 ": the address, the number, a blank.
-    line_.append(m_.block_address);
+    append_short(line_, m_.block_address);
     char* p = line_.room(16);
     p = std::to_chars(p, p + 15, next_number_).ptr;
     *p++ = ' ';
@@ -57,10 +85,8 @@ void NcWriter::end_block() {
     }
   }
   ++lines_;
-  if (m_.max_line_length > 0 && line_.size() > static_cast<size_t>(m_.max_line_length) &&
-      long_lines_++ == 0)
-    first_long_line_ = lines_;
-  line_.append(m_.line_ending);
+  if (line_.size() > line_limit_ && long_lines_++ == 0) first_long_line_ = lines_;
+  append_short(line_, m_.line_ending);
   out_.write(line_.view());
   open_ = false;
 }

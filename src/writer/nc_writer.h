@@ -44,7 +44,7 @@ class NcWriter {
   // as blanks, upper case when it asks, trimmed.
   static std::string comment_text(const Machine& m, std::string_view text);
   // Every block from now on starts with `mark` (block delete, "/"); empty: none.
-  void set_block_delete(std::string_view mark) { block_delete_ = mark; }
+  void set_block_delete(std::string_view mark);
   // With block_numbers.at_tool_changes: the next block gets a number (a tool change begins).
   void number_next() { number_next_ = true; }
   // Comments wrapped at comments.max_length; blocks longer than output.max_line_length and the
@@ -79,6 +79,8 @@ class NcWriter {
   std::string block_delete_;  // OPSKIP: the mark every block starts with
   bool number_next_ = false;  // at_tool_changes: this block is numbered
   bool numbered_ = false;     // the open block has a number
+  bool plain_blocks_;         // neither block delete nor numbers at tool changes only
+  size_t line_limit_;         // output.max_line_length (SIZE_MAX: none)
   size_t lines_ = 0;          // lines written
   size_t wrapped_comments_ = 0, long_lines_ = 0, first_long_line_ = 0;
   int next_number_;
