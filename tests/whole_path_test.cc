@@ -205,6 +205,22 @@ TEST(WholePathGoldens, AMotionToWhereTheToolIsNeedsNoBlock) {
       << r.err;
 }
 
+// The hole marker the post writes ("hole at CL line N: ...") in a comment of the user's is not a
+// hole: not in the middle of a comment, and not at its start when no feed into a hole follows.
+// Found by the round-trip fuzzer (a tool name holding the words).
+TEST(WholePathGoldens, AUserCommentWithTheHoleMarkerIsNoHole) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/note.cl",
+             "UNITS/MM\nPPRINT TOOL NOTE HOLE AT CL LINE 7\nPPRINT hole at CL line 9: none\n"
+             "LOADTL/1\nSPINDL/800,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/16,0,2\n"
+             "GOTO/12,0,-10\nFINI\n");
+  const RunResult r = run(quote(clpost_bin()) + " -m fanuc-0i-t " + quote(dir + "/note.cl") +
+                          " --verify -o " + quote(dir + "/note.nc"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_file(dir + "/note.nc").find("(HOLE AT CL LINE 9: NONE)"), std::string::npos);
+  EXPECT_EQ(r.err.find("holes on the centre line"), std::string::npos) << r.err;
+}
+
 // LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
 // outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
 // feed the CL says, by hand from the CL files:

@@ -177,8 +177,9 @@ void hole_comment(State& s, const NcBlock& b) {
   for (const std::string& c : b.comments) {
     std::string lower(c);
     for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    const size_t at = lower.find(kMarker);
-    if (at == std::string::npos) continue;
+    // The post's marker starts its comment; the words anywhere else are somebody's text.
+    const size_t at = lower.find_first_not_of(' ');
+    if (at == std::string::npos || lower.compare(at, kMarker.size(), kMarker) != 0) continue;
     uint32_t n = 0;
     for (size_t i = at + kMarker.size();
          i < lower.size() && std::isdigit(static_cast<unsigned char>(lower[i])) && n < 100000000;
