@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include "emitters/cut_pass.h"
+#include "emitters/written_value.h"
+
 namespace clpost {
 
 namespace {
@@ -28,6 +31,7 @@ Fit EmulationEmitter::fit(const ThreadPlan& plan, const Machine& m) const {
     f.mismatch =
         fmt::format("machine '{}' has no code for a variable lead ({})", m.name,
                     plan.pitch.lead_change > 0 ? "thread_increasing" : "thread_decreasing");
+  if (f.exact()) f.mismatch = sync_lead_mismatch(m, plan, cut_tolerance(m));
   return f;
 }
 

@@ -175,7 +175,7 @@ std::string angle_words(const ThreadPlan& plan, const Machine& m, const g76::Cyc
         a / 2);
   w.tool_angle = static_cast<int>(a);
   w.lead = as_read(m, "F", plan.lead);
-  return {};
+  return lead_word_mismatch(m, plan, "F", "F", cut_tolerance(m));
 }
 
 // r: the pull-out as G76's chamfer (threading.chamfer_angle) of whole tenths of the lead.
@@ -312,6 +312,8 @@ std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& 
   if (plan.pitch.lead_change != 0) return fail("variable lead: G92 cuts a constant lead");
   if (plan.kind == ThreadKind::kFace || !plan.lead_along_z)
     return fail("face thread: G92 threads along Z");
+  if (std::string why = lead_word_mismatch(m, plan, "F", "F", cut_tolerance(m)); !why.empty())
+    return fail(why);
   if (plan.pullout)
     return fail(
         fmt::format("pull-out ({}): G92 cuts the control's own chamfer (a parameter), "

@@ -38,6 +38,8 @@ struct HaasBlock {
 std::string haas_refusal(const ThreadPlan& plan, const Machine& m) {
   if (plan.form == ThreadForm::kChain) return "a chained thread: G76 cuts one straight thread line";
   if (plan.pitch.lead_change != 0) return "variable lead: G76 cuts a constant lead";
+  if (std::string why = lead_word_mismatch(m, plan, "F", "F", cut_tolerance(m)); !why.empty())
+    return why;
   if (plan.option == 0)
     return "OPTION 0, steps shrinking by a constant amount: Haas G76 cuts D x root n "
            "with P1 or n x D with P3";

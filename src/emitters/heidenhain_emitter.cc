@@ -66,6 +66,8 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
     return no("G31's run-out K geometry is not documented; the plan has a pull-out");
   if (!m.templates.count(kTemplate))
     return no(fmt::format("machine '{}' has no template '{}'", m.name, kTemplate));
+  if (std::string why = lead_word_mismatch(m, plan, "F", "F", cut_tolerance(m)); !why.empty())
+    return no(why);
 
   double d_max = 0;
   for (const ThreadPass& p : plan.passes) d_max = std::max(d_max, p.depth);

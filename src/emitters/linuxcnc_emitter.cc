@@ -123,6 +123,8 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
         fmt::format("G76 cuts every pass on one flank; OPTION {} alternates flanks", plan.option));
 
   const double tol = cut_tolerance(m);
+  if (std::string why = lead_word_mismatch(m, plan, "P", "g76_lead", tol); !why.empty())
+    return no(why);
   const Vec2 t = (1 / length(plan.p2 - plan.p1)) * (plan.p2 - plan.p1);
   const double out_sign = plan.side == ThreadSide::kExternal ? 1 : -1;
   const Vec2 out{out_sign, 0};

@@ -226,16 +226,8 @@ std::string lead_words(const ThreadPlan& plan, const Machine& m, double tol, Cyc
     w.pita = 1;
     w.pit = as_read(m, kLeadFormat, plan.lead);
   }
-  const double lead = cycle99_lead(w, inch);
-  const Vec2 p1 = plan.p1, p2 = plan.p2;
-  const double travel = plan.lead_along_z ? std::fabs(p2.z - p1.z) : std::fabs(p2.x - p1.x);
-  const double turns = travel / plan.lead;
-  if (std::fabs(lead - plan.lead) * turns > tol)
-    return fmt::format(
-        "PIT {} (PITA {}) is a lead of {:.6f}, plan {:.6f}: {:.4f} off over "
-        "the thread's {:.1f} turns",
-        num_text(w.pit), w.pita, lead, plan.lead, std::fabs(lead - plan.lead) * turns, turns);
-  return {};
+  return lead_mismatch(m, plan, cycle99_lead(w, inch),
+                       fmt::format("PIT {} (PITA {})", num_text(w.pit), w.pita), kLeadFormat, tol);
 }
 
 // VARI (the infeed law and side) and VRT (the retraction).

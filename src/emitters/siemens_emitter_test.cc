@@ -311,8 +311,8 @@ TEST(Cycle99Emitter, LeadRoundedAwayByTheFormat) {
   // PIT 1.814 written as 1.8: 0.014 x 22 / 1.814 = 12.1 turns -> 0.1698 at the thread end.
   auto c = plan(m, "MMPR,1.814,DEPTH,1.1,CUTS,5,OPTION,3", {10, 5}, {{8, 2}, {8, -20}});
   EXPECT_EQ(mismatch(m, *c),
-            "PIT 1.8 (PITA 1) is a lead of 1.800000, plan 1.814000: 0.1698 off over the thread's "
-            "12.1 turns");
+            "the lead 1.814000 is written PIT 1.8 (PITA 1), 1.800000 (formats.cycle99_lead: 1 "
+            "decimal): 0.1698 off over the thread's 12.1 turns, more than the tolerance 0.001");
 }
 
 // ---------------------------------------------------------------------------------------------

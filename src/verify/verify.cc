@@ -7,6 +7,7 @@
 #include <map>
 
 #include "emitters/cut_pass.h"
+#include "emitters/written_value.h"
 #include "planner/vec2_math.h"
 #include "verify/cut_alignment.h"
 #include "verify/expected_cuts.h"
@@ -40,8 +41,7 @@ Frame frame_of(const ThreadPlan& plan) {
   } else if ((plan.side == ThreadSide::kExternal) == (f.n.x > 0)) {
     f.n = -f.n;
   }
-  const double travel = plan.lead_along_z ? std::fabs(d.z) : std::fabs(d.x);
-  if (plan.lead > 0) f.turns = std::max(1.0, travel / plan.lead);
+  f.turns = thread_turns(plan);
   return f;
 }
 
