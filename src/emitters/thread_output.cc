@@ -91,7 +91,8 @@ class ThreadOutput : public Emitter {
   }
 
   bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) override {
-    std::string why;
+    std::string why;                                         // the first emitter's reason
+    std::vector<std::pair<std::string, std::string>> unfit;  // every one's: names, reason
     const std::vector<Emitter*> order = order_for(plan);
     for (size_t i = 0; i < order.size(); ++i) {
       Emitter& e = *order[i];
@@ -105,15 +106,23 @@ class ThreadOutput : public Emitter {
           return false;
         }
         if (why.empty()) why = fmt::format("{} not used: {}", e.name(), f.mismatch);
+        if (!unfit.empty() && unfit.back().second == f.mismatch) {
+          unfit.back().first += fmt::format(", {}", e.name());
+        } else {
+          unfit.emplace_back(std::string(e.name()), f.mismatch);
+        }
         continue;
       }
       if (!why.empty()) prog.comment(fmt::format("{}. {} instead", why, e.name()));
       for (const std::string& n : f.notes) prog.comment(n);
       return e.emit(plan, prog, ctx);
     }
+    std::string all;
+    for (const auto& [names, reason] : unfit)
+      all += fmt::format("{}{} not used: {}", all.empty() ? "" : "; ", names, reason);
     ctx.diags.error(
         plan.loc, ctx.lines.text(plan.loc.line),
-        fmt::format("machine '{}': no threading output can cut this thread: {}", m_.name, why));
+        fmt::format("machine '{}': no threading output can cut this thread: {}", m_.name, all));
     return false;
   }
 
