@@ -38,7 +38,7 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
         std::string("threading.fallback: error                       # --set"),
         std::string("threading.loop: g33                             # default"),
         "limits.max_rpm: 3000                            # " + machine + ":8",
-        "formats.K.decimals: 6                           # " + post + ":19",
+        "formats.K.decimals: 8                           # " + post + ":19",
         std::string("formats.K.scale: 1                              # default"),
         "codes.thread: G33                               # " + post + ":36",
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
