@@ -117,6 +117,9 @@ Cycle98Call cycle98_call(const ThreadPlan& plan, const Machine& m) {
     w.dm[j] = as_read(m, "X", 2 * p.x);
   }
   for (double& pp : w.pp) pp = as_read(m, kLeadFormat, plan.lead);
+  call.mismatch = lead_mismatch(m, plan, w.pp[0], fmt::format("PP1 {}", num_text(w.pp[0])),
+                                kLeadFormat, cut_tolerance(m));
+  if (!call.mismatch.empty()) return call;
   w.app = 0;
   w.numth = plan.pitch.starts > 1 ? plan.pitch.starts : 1;
   w.nsp = 0;
