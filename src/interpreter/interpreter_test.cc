@@ -142,6 +142,21 @@ TEST(Interpreter, RemappedAxesAndDiameterInput) {
   EXPECT_EQ(p.nc, std::string(kHeader) + "G0 X40. Z-5.\nM30\n%\n");
 }
 
+// A CIRCLE/ whose GOTO ends where the tool is writes nothing, with a warning: the block would be
+// "I0. K-2." alone (X and Z unchanged, G3 modal), a full circle on the control. Found by the
+// round-trip fuzzer.
+TEST(Interpreter, AnArcEndingWhereItStartsCutsNothing) {
+  Posted p =
+      post("FEDRAT/0.2,MMPR\nGOTO/10,0,0\nCIRCLE/10,0,-2,0,1,0,2\nGOTO/10,0,0\nGOTO/12,0,0\nFINI\n",
+           generic());
+  EXPECT_EQ(p.nc, std::string(kHeader) + "G1 X20. Z0. G95 F0.2\nX24.\nM30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:4:1: warning: the arc of the CIRCLE/ at line 3 ends where it starts: nothing is "
+            "cut (a full circle is no lathe profile)\n"
+            "  GOTO/10,0,0\n"
+            "  ^\n");
+}
+
 TEST(Interpreter, TextStatements) {
   Posted p = post("PARTNO SHAFT 12\nPPRINT rough (OD)\nINSERT G65 P9010\nFINI\n", generic());
   EXPECT_EQ(p.nc, std::string(kHeader) + "(SHAFT 12)\n(rough OD)\nG65 P9010\nM30\n%\n");

@@ -28,6 +28,15 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
                       c.loc.line, r0, r1));
     return false;
   }
+  // An arc that ends where the program put the tool moves nothing: a block of I and K alone is a
+  // full circle on most controls, a gouge through a lathe profile.
+  if (s.prog.stays_at(target)) {
+    warning(s, st, st.loc,
+            fmt::format("the arc of the CIRCLE/ at line {} ends where it starts: nothing is cut (a "
+                        "full circle is no lathe profile)",
+                        c.loc.line));
+    return true;
+  }
   // Positive rotation about the axis: G3 when it turns axial toward radial (axis along
   // axial x radial), as ISO G18 defines it.
   const double axis[3] = {c.ax, c.ay, c.az};

@@ -103,6 +103,8 @@ class NcProgram {
   // After a cycle: the tool is at `p` (lathe frame, output units); modal words are unknown.
   void cycle_ended_at(LathePoint p);
 
+  // `p` is where the program has just put the tool: its X and Z as last written.
+  bool stays_at(LathePoint p) const;
   // Where the tool is (unknown until the first move).
   std::optional<LathePoint> position() const { return pos_; }
   // Forgets the modal motion code, feed and spindle words (after a cycle or raw insert whose
@@ -112,7 +114,7 @@ class NcProgram {
  private:
   void motion_code(const std::string& code);
   void axes(LathePoint p, bool force_both);
-  bool stays_at(LathePoint p) const;  // X and Z as last written
+
   void feed_words();
   double x_out(double r) const { return m_.diameter_output ? 2 * r : r; }
 
