@@ -134,7 +134,11 @@ std::string templates_tables() {
       "formatted with the format named); any other name is an error when the machine loads. "
       "An empty list (`dwell: []`) is the integrator's choice: that template writes nothing. "
       "A template the program needs but the machine lacks is an error: at load time when it is "
-      "always required or selected by a setting, else at the CL line that needs it.\n\n"
+      "always required or selected by a setting, else at the CL line that needs it. Fields "
+      "written one after another (`T{tool:02}{offset:02}`) are told apart by their widths alone, "
+      "as `clpost verify` reads them back: a number after the first wider than its width (offset "
+      "700 in two digits) is an error at the CL line, never a word that reads as other "
+      "numbers.\n\n"
       "| template | required | used for |\n|---|---|---|\n";
   for (const TemplateSpec* t : template_specs())
     out += fmt::format("| `{}` | {} | {} |\n", t->name, need_text(*t), t->doc);

@@ -19,6 +19,37 @@ void TemplateValues::set_stand_ins() {
   }
 }
 
+namespace {
+
+// Fields written one after another with nothing between ("T{tool:02}{offset:02}") are told apart
+// by their widths alone: a whole number after the first wider than its width makes the word read
+// as other numbers (tool 7 offset 700 as T07700: tool 77, offset 0). What is wrong, or "".
+std::string adjacent_overflow(std::string_view line, const TemplateSpec& spec,
+                              const std::vector<TemplateValues::Value>& values) {
+  for (const FieldUse& u : field_uses(line)) {
+    if (u.offset == 0 || line[u.offset - 1] != '}') continue;
+    const size_t close = line.find('}', u.offset);
+    const std::string_view inner = line.substr(u.offset + 1, close - u.offset - 1);
+    const size_t colon = inner.find(':');
+    const std::string format =
+        fmt::format("{{{}}}", colon == std::string_view::npos ? "" : inner.substr(colon));
+    for (size_t i = 0; i < values.size(); ++i) {
+      const long long* n = std::get_if<long long>(&values[i]);
+      if (spec.fields[i].name != u.name || n == nullptr) continue;
+      const size_t width = fmt::vformat(format, fmt::make_format_args(0LL)).size();
+      const std::string text = fmt::vformat(format, fmt::make_format_args(*n));
+      if (text.size() > width)
+        return fmt::format(
+            "{{{}}} {} is {} digits where '{}' gives it {}: the word would read as other "
+            "numbers",
+            u.name, *n, text.size(), line, width);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 TemplateValues::Line TemplateValues::format(std::string_view line) const {
   Line out;
   for (const FieldUse& u : field_uses(line)) {
@@ -38,7 +69,8 @@ TemplateValues::Line TemplateValues::format(std::string_view line) const {
   }
   try {
     out.text = fmt::vformat(line, args);
-    out.ok = true;
+    out.error = adjacent_overflow(line, *spec_, values_);
+    out.ok = out.error.empty();
   } catch (const fmt::format_error& e) {
     out.error = e.what();
   }

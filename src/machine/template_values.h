@@ -17,6 +17,7 @@ namespace clpost {
 
 class TemplateValues {
  public:
+  using Value = std::variant<std::monostate, long long, std::string>;
   explicit TemplateValues(const TemplateSpec& t) : spec_(&t), values_(t.fields.size()) {}
   const TemplateSpec& spec() const { return *spec_; }
 
@@ -38,7 +39,7 @@ class TemplateValues {
 
  private:
   const TemplateSpec* spec_;
-  std::vector<std::variant<std::monostate, long long, std::string>> values_;
+  std::vector<Value> values_;
 };
 
 // A field name as a template argument: text<"lead">(…).

@@ -53,6 +53,23 @@ TEST(NcProgram, AMoveToTheWrittenPositionWritesNothing) {
   EXPECT_EQ(out.out, "G1 X24. Z-10. G95 F0.2\nG0 X32. Z2.\nX32.002\n");
 }
 
+// "T{tool:02}{offset:02}": the offset is told from the tool by its two digits only. Tool 700
+// with offset 7 is T70007 (tool 700, offset 07); offset 700 would write T07700, read as tool 77
+// offset 0 (or T700700 as tool 7007): the template cannot say it, an error, nothing written.
+TEST(NcProgram, AFieldWiderThanItsWidthAfterAnotherIsAnError) {
+  Machine m = test_machine();
+  m.templates["tool_change"] = {"T{tool:02}{offset:02}"};
+  StringSink out;
+  NcProgram p(m, out);
+  EXPECT_TRUE(p.tool_change(700, 7, ""));
+  const TemplateWrite w = p.tool_change(7, 700, "");
+  EXPECT_EQ(w.status, TemplateWrite::Status::kBadLine);
+  EXPECT_EQ(w.detail,
+            "{offset} 700 is 3 digits where 'T{tool:02}{offset:02}' gives it 2: the word would "
+            "read as other numbers");
+  EXPECT_EQ(out.out, "T70007\n");
+}
+
 TEST(NcProgram, ModalSuppressionComparesTheWrittenText) {
   // 0.0055 · 1000 is 5.5 in double arithmetic, but the exact binary value of 0.0055 lies below
   // the half: it is written Z0.005, as printf rounds. The move to Z0.006 after it is a new text
