@@ -63,6 +63,27 @@ TEST(PathThread, RepeatedGotoInsideCoupleWritesNoMotionlessBlock) {
             "N40 G33 Z-20. F3.\nN50 X23. Z-21.5 F3.\nN60 G0 X30. Z5.\nN70 M30\n%\n");
 }
 
+// A single-pass thread and a COUPLE that begins where it ends, with no move between: the program
+// writes consecutive G33 blocks, which the control cuts as one continuous thread; verify splits
+// that cut where the couple begins and finds each thread cut as planned. Found by the round-trip
+// fuzzer (it reported the couple as not cut).
+TEST(PathThread, ACoupleRightAfterASinglePassThreadVerifies) {
+  Posted p = post(
+      "UNITS/MM\nSPINDL/600,RPM,CLW\nRAPID\nGOTO/12,0,5\nPITCH/1.5,MMPR\nTHREAD/TURN\n"
+      "RAPID\nGOTO/9.2,0,2\nGOTO/9.2,0,-20\nCOUPLE/ON\nGOTO/9.1,0,-20\nGOTO/10.6,0,-21.5\nCOUPLE/"
+      "OFF\n"
+      "RAPID\nGOTO/15,0,5\nFINI\n",
+      "--verify");
+  EXPECT_EQ(p.run.exit_code, 0) << p.run.err;
+  EXPECT_NE(p.program.find("N50 G33 Z-20. F1.5\nN60 X18.2 F1.5\nN70 X21.2 Z-21.5 F1.5\n"),
+            std::string::npos)
+      << p.program;
+  EXPECT_NE(p.run.err.find("  t.cl:6       1 passes  ok     G33, NC line 7\n"
+                           "  t.cl:10      1 passes  ok     G33, NC line 7\n"),
+            std::string::npos)
+      << p.run.err;
+}
+
 TEST(PathThread, FaceCoupleIsHeldToTheXFeedLimit) {
   // A face thread from radius 20 to 5 at Z1, lead 2 at 1000 rpm: X moves 2 x 1000 = 2000 per
   // minute. Was: checked as a turn thread (X moving nothing), exit 0; THREAD/FACE was refused.

@@ -16,6 +16,7 @@ std::vector<ExpectedCut> expected_cuts(const std::vector<ThreadPlan>& plans) {
       c.to = c.chain.front();
       c.end = c.chain.back();
       c.kind = PassKind::kFinish;
+      c.path = true;
       out.push_back(std::move(c));
       continue;
     }

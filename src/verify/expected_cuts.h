@@ -19,6 +19,7 @@ struct ExpectedCut {
   // segments, then a threaded pull-out).
   std::vector<Vec2> chain;
   PassKind kind = PassKind::kRough;
+  bool path = false;  // a coupled or single-pass thread's synchronized path
 };
 
 std::vector<ExpectedCut> expected_cuts(const std::vector<ThreadPlan>& plans);

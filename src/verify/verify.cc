@@ -45,6 +45,38 @@ Frame frame_of(const ThreadPlan& plan) {
   return f;
 }
 
+// Consecutive synchronized blocks are one continuous cut on the control (G33 is modal), so a
+// coupled or single-pass thread that begins where the one before it ended, with no move
+// between, is cut as part of that one. The program's cut is split where such a thread of the
+// plan begins, so each is compared with its own.
+std::vector<NcCut> split_at_path_starts(const std::vector<NcCut>& cuts,
+                                        const std::vector<ExpectedCut>& expected, double tol) {
+  const auto path_starts_at = [&](Vec2 p) {
+    return std::any_of(expected.begin(), expected.end(), [&](const ExpectedCut& e) {
+      return e.path && std::fabs(e.from.x - p.x) <= tol && std::fabs(e.from.z - p.z) <= tol;
+    });
+  };
+  std::vector<NcCut> out;
+  out.reserve(cuts.size());
+  for (const NcCut& c : cuts) {
+    NcCut rest = c;
+    for (size_t k = 0; c.call < 0 && k + 1 < rest.chain.size(); ++k) {
+      if (!path_starts_at(rest.chain[k])) continue;
+      NcCut head = rest;
+      head.chain.resize(k + 1);
+      head.end = head.chain.back();
+      head.linear_pullout.reset();
+      out.push_back(std::move(head));
+      rest.from = rest.chain[k];
+      rest.chain.erase(rest.chain.begin(), rest.chain.begin() + static_cast<long>(k) + 1);
+      rest.to = rest.chain.front();
+      k = static_cast<size_t>(-1);  // the loop's ++k makes it 0
+    }
+    out.push_back(std::move(rest));
+  }
+  return out;
+}
+
 // The program's cuts in the plan's order: a cycle that cuts start by start (CYCLE99 with NUMTH,
 // Haas G76 once per start) is put back in the plan's order, pass by pass and start by start
 // within a pass, so the comparison sees the same sequence.
@@ -250,7 +282,8 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
   report = VerifyReport{};
   report.tolerance = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
   const std::vector<ExpectedCut> expected = expected_cuts(plans);
-  const std::vector<size_t> order = cutting_order(sim.cuts);
+  const std::vector<NcCut> cuts = split_at_path_starts(sim.cuts, expected, report.tolerance);
+  const std::vector<size_t> order = cutting_order(cuts);
   report.planned_passes = expected.size();
   report.program_cuts = order.size();
   for (size_t t = 0; t < plans.size(); ++t) {
@@ -263,7 +296,7 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
   const Comparer cmp(plans, m, report.tolerance);
   std::vector<AlignedPair> pairs = align_sequences(
       expected.size(), order.size(),
-      [&](size_t i, size_t j) { return cmp.compare(expected[i], sim.cuts[order[j]], false).cost; });
+      [&](size_t i, size_t j) { return cmp.compare(expected[i], cuts[order[j]], false).cost; });
 
   auto thread_name = [&](size_t t) {
     return fmt::format("thread at {}:{}", options.plan_name, plans[t].loc.line);
@@ -284,7 +317,7 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
   for (size_t k = 0; k < pairs.size(); ++k) {
     const AlignedPair& p = pairs[k];
     if (p.a >= 0) last_thread = expected[static_cast<size_t>(p.a)].thread;
-    const NcCut* c = p.b >= 0 ? &sim.cuts[order[static_cast<size_t>(p.b)]] : nullptr;
+    const NcCut* c = p.b >= 0 ? &cuts[order[static_cast<size_t>(p.b)]] : nullptr;
     if (p.a >= 0 && c != nullptr) {
       const ExpectedCut& e = expected[static_cast<size_t>(p.a)];
       ThreadVerdict& v = report.threads[e.thread];
@@ -306,7 +339,7 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
       // Name the block after which the pass should have been cut.
       const NcCut* near = last_cut;
       for (size_t q = k + 1; near == nullptr && q < pairs.size(); ++q)
-        if (pairs[q].b >= 0) near = &sim.cuts[order[static_cast<size_t>(pairs[q].b)]];
+        if (pairs[q].b >= 0) near = &cuts[order[static_cast<size_t>(pairs[q].b)]];
       problem(e.thread, near,
               fmt::format("{} (depth {:.4f}, from {}) is not cut by the program",
                           pass_name(plans[e.thread], e), e.depth, cmp.point(e.from)));
