@@ -221,6 +221,29 @@ TEST(WholePathGoldens, AUserCommentWithTheHoleMarkerIsNoHole) {
   EXPECT_EQ(r.err.find("holes on the centre line"), std::string::npos) << r.err;
 }
 
+// Two holes from the same start point and then a GOTO to the first hole's R plane: the GOTO after
+// each tool change to where the tool already is (Z10) moves nothing, and the last GOTO (Z2) must
+// be matched with the program's own block, not with the first hole's rapid to its R plane at Z2
+// (under the first tool). Found by the round-trip fuzzer; on every machine.
+TEST(WholePathGoldens, AGotoToAnEarlierHolesRPlaneIsItsOwnBlock) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/h.cl",
+             "UNITS/MM\nLOADTL/2,ADJUST,2\nSPINDL/1500,RPM,CLW\nRAPID\nGOTO/0,0,10\n"
+             "CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,2,DWELL,0.5\nGOTO/0,0,0\nCYCLE/OFF\n"
+             "LOADTL/4,ADJUST,4\nSPINDL/300,RPM,CLW\nRAPID\nGOTO/0,0,10\n"
+             "CYCLE/TAP,DEPTH,16,PITCH,1.5,MMPM,450,CLEAR,5\nGOTO/0,0,0\nCYCLE/OFF\nRAPID\n"
+             "GOTO/0,0,2\nRAPID\nGOTO/20,0,2\nFINI\n");
+  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
+                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/h.cl") +
+                            " --verify -o " + quote(dir + "/h.nc"));
+    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
+    EXPECT_NE(r.err.find("motions: 6 CL end points, every one reached in order"), std::string::npos)
+        << m << "\n"
+        << r.err;
+  }
+}
+
 // LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
 // outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
 // feed the CL says, by hand from the CL files:

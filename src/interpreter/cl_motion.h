@@ -40,6 +40,7 @@ struct ClMotion {
   uint32_t line = 0;  // the CL line
   Vec2 to;
   bool rapid = false;
+  bool stays = false;  // the tool is already there: nothing moves, the program need not say it
   ArcSense arc = ArcSense::kNone;
   Vec2 center;         // arcs only
   uint32_t state = 0;  // index into ClPath::states

@@ -78,7 +78,7 @@ CutState cut_state(const PostState& s) {
 
 }  // namespace
 
-void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid) {
+void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool from_pos) {
   ClPath& path = s.cl_path;
   const CutState c = cut_state(s);
   if (path.states.empty() || !(path.states.back().state == c))
@@ -87,6 +87,10 @@ void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid) {
   mo.line = st.loc.line;
   mo.to = to;
   mo.rapid = rapid;
+  if (from_pos && s.pos) {
+    const Vec2 at = cl2(s, *s.pos);
+    mo.stays = std::fabs(at.x - to.x) < 1e-9 && std::fabs(at.z - to.z) < 1e-9;
+  }
   mo.state = static_cast<uint32_t>(path.states.size() - 1);
   path.motions.push_back(mo);
 }

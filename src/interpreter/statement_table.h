@@ -112,7 +112,9 @@ void finish_program(PostState& s);
 // The ordinary move to `p` (motion.cc): rapid, feed or the arc of a CIRCLE/ before it.
 void move_to(PostState& s, const Statement& st, Point3 p);
 // Verify's record of a motion to `to` (PostOptions::keep_motions): its end point and, when it
-// changed, the state it is made with (motion.cc).
-void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid);
+// changed, the state it is made with (motion.cc). `from_pos`: the motion starts where s.pos
+// is (a GOTO), so it stays put when `to` is there; false for a hole's retract, which follows the
+// hole's own moves.
+void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool from_pos = true);
 
 }  // namespace clpost

@@ -220,15 +220,14 @@ PathReport verify_path(const ClPath& cl, const Toolpath& path, const Machine& m,
   PathCheck k(cl, path, m, options, nc_diags, shown + 1e-9);
   const std::vector<Move> moves = all_moves(path);
   size_t next = 0;
-  const ClMotion* previous = nullptr;
   for (const ClMotion& c : cl.motions) {
     // A motion to where the tool already is moves nothing, and a program need not write it (a
-    // full circle does move).
-    const bool stays = previous != nullptr && c.arc == ArcSense::kNone &&
-                       near(previous->to, c.to, k.tol) && next > 0 &&
-                       near(moves[next - 1].to, c.to, k.tol);
-    previous = &c;
-    if (stays) continue;
+    // full circle does move): it is the program's next move only when that one ends there.
+    if (c.stays && c.arc == ArcSense::kNone) {
+      if (next < moves.size() && near(moves[next].to, c.to, k.tol) && same_kind(c, moves[next]))
+        check_state(k, c, moves[next++]);
+      continue;
+    }
     const size_t j = check_end_point(k, moves, next, c);
     if (j >= moves.size()) continue;
     next = j + 1;
