@@ -244,6 +244,22 @@ TEST(WholePathGoldens, AGotoToAnEarlierHolesRPlaneIsItsOwnBlock) {
   }
 }
 
+// A tap with no clearance plane written as moves (haas-st's G84 has no dwell) feeds back out to
+// where it started: the hole leaves the tool there by a feed, which verify accepts for the hole's
+// exit (a cycle's exit is a rapid). Found by the round-trip fuzzer.
+TEST(WholePathGoldens, ATapWrittenAsMovesLeavesByAFeed) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/t.cl",
+             "UNITS/MM\nLOADTL/4,ADJUST,4\nSPINDL/300,RPM,CLW\nRAPID\nGOTO/0,0,2\n"
+             "CYCLE/TAP,DEPTH,16,PITCH,1.5,DWELL,0.5\nGOTO/0,0,0\nCYCLE/OFF\nRAPID\n"
+             "GOTO/20,0,2\nFINI\n");
+  const RunResult r = run(quote(clpost_bin()) + " -m haas-st " + quote(dir + "/t.cl") +
+                          " --verify -o " + quote(dir + "/t.nc"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_file(dir + "/t.nc").find("G1 Z-16. G99 F1.5\nG4 P0.5\nG97 S300 M4\nZ2.\n"),
+            std::string::npos);
+}
+
 // LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
 // outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
 // feed the CL says, by hand from the CL files:

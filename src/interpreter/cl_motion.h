@@ -40,7 +40,8 @@ struct ClMotion {
   uint32_t line = 0;  // the CL line
   Vec2 to;
   bool rapid = false;
-  bool stays = false;  // the tool is already there: nothing moves, the program need not say it
+  bool stays = false;      // the tool is already there: nothing moves, the program need not say it
+  bool hole_exit = false;  // where a hole leaves the tool: by a rapid, or a tap's feed out
   ArcSense arc = ArcSense::kNone;
   Vec2 center;         // arcs only
   uint32_t state = 0;  // index into ClPath::states

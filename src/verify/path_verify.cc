@@ -179,7 +179,7 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
 // moves.size() (reported).
 size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next,
                        const ClMotion& c) {
-  const size_t j = find_move(moves, next, c, k.tol, true);
+  const size_t j = find_move(moves, next, c, k.tol, !c.hole_exit);
   if (j < moves.size()) return j;
   const size_t other = find_move(moves, next, c, k.tol, false);
   const Move* mv = other < moves.size() ? &moves[other] : next > 0 ? &moves[next - 1] : nullptr;
@@ -231,7 +231,7 @@ PathReport verify_path(const ClPath& cl, const Toolpath& path, const Machine& m,
     const size_t j = check_end_point(k, moves, next, c);
     if (j >= moves.size()) continue;
     next = j + 1;
-    if (same_kind(c, moves[j])) check_arc(k, c, moves[j]);
+    if (!c.hole_exit && same_kind(c, moves[j])) check_arc(k, c, moves[j]);
     check_state(k, c, moves[j]);
   }
   r.problems = k.problems;
