@@ -260,6 +260,25 @@ TEST(WholePathGoldens, ATapWrittenAsMovesLeavesByAFeed) {
             std::string::npos);
 }
 
+// A drill whose R plane is where it starts (Z2), then a tap from there: the tap's exit at Z2 is
+// matched after the tap reaches its bottom, not with the drill's rapid to its R plane at Z2
+// (under the first tool). Found by the round-trip fuzzer; on every machine.
+TEST(WholePathGoldens, AHoleExitIsMatchedAfterItsBottom) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/h.cl",
+             "UNITS/MM\nLOADTL/1,ADJUST,1\nSPINDL/800,RPM,CLW\nRAPID\nGOTO/16,0,2\n"
+             "CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,2,DWELL,0.5\nGOTO/0,0,0\nCYCLE/OFF\n"
+             "LOADTL/4,ADJUST,4\nSPINDL/300,RPM,CLW\n"
+             "CYCLE/TAP,DEPTH,16,PITCH,1.5,MMPM,450,CLEAR,5\nGOTO/0,0,0\nCYCLE/OFF\nRAPID\n"
+             "GOTO/20,0,2\nFINI\n");
+  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
+                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/h.cl") +
+                            " --verify -o " + quote(dir + "/h.nc"));
+    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
+  }
+}
+
 // LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
 // outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
 // feed the CL says, by hand from the CL files:

@@ -42,6 +42,7 @@ struct ClMotion {
   bool rapid = false;
   bool stays = false;      // the tool is already there: nothing moves, the program need not say it
   bool hole_exit = false;  // where a hole leaves the tool: by a rapid, or a tap's feed out
+  double hole_bottom = 0;  // hole_exit: the hole's bottom Z, which the tool reaches first
   ArcSense arc = ArcSense::kNone;
   Vec2 center;         // arcs only
   uint32_t state = 0;  // index into ClPath::states

@@ -118,6 +118,7 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   if (s.opts.keep_motions && r) {
     record_motion(s, st, Vec2{0, h.retract}, true, false);
     s.cl_path.motions.back().hole_exit = true;
+    s.cl_path.motions.back().hole_bottom = h.bottom;
   }
   if (r) s.holes.push_back(std::move(h));
   s.rapid_next = false;

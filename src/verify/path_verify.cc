@@ -179,6 +179,15 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
 // moves.size() (reported).
 size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next,
                        const ClMotion& c) {
+  if (c.hole_exit) {
+    // After the feed that reaches the hole's bottom: the hole's own moves pass its exit point
+    // on the way in (its R plane may be there).
+    ClMotion bottom = c;
+    bottom.to = {0, c.hole_bottom};
+    bottom.rapid = false;
+    const size_t b = find_move(moves, next, bottom, k.tol, true);
+    if (b < moves.size()) next = b + 1;
+  }
   const size_t j = find_move(moves, next, c, k.tol, !c.hole_exit);
   if (j < moves.size()) return j;
   const size_t other = find_move(moves, next, c, k.tol, false);
