@@ -129,9 +129,9 @@ TEST_P(WholePath, AnEditedWordFailsAtItsLine) {
 
 INSTANTIATE_TEST_SUITE_P(Edits, WholePath, ::testing::ValuesIn(kEdits));
 
-// The goldens as written pass, and the report says what was compared: the part's 17 GOTOs and
-// its 3 holes' retracts (20 end points), 6 states (a tool change each); the bushing's 6 motions,
-// its one arc, and 2 states (its first motion, a rapid, comes before its FEDRAT).
+// The goldens as written pass, and the report says what was compared: the part's 17 GOTOs, its
+// 3 holes' exits and its thread's (21 end points), 6 states (a tool change each); the bushing's 6
+// motions, its one arc, and 2 states (its first motion, a rapid, comes before its FEDRAT).
 TEST(WholePathGoldens, EveryGoldenCutsTheCl) {
   struct Case {
     const char* machine;
@@ -157,7 +157,7 @@ TEST(WholePathGoldens, EveryGoldenCutsTheCl) {
       EXPECT_NE(r.out.find(expected), std::string::npos) << c.machine << "\n" << r.out;
     };
     check("part-turned.apt",
-          std::string("motions: 20 CL end points, every one reached in order, within ") +
+          std::string("motions: 21 CL end points, every one reached in order, within ") +
               c.tolerance +
               "; 0 arcs by their centre; feed, spindle and tool as the CL (6 states)" + tail);
     check("bushing-creo.ncl",
@@ -275,6 +275,28 @@ TEST(WholePathGoldens, AHoleExitIsMatchedAfterItsBottom) {
                         "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
     const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/h.cl") +
                             " --verify -o " + quote(dir + "/h.nc"));
+    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
+  }
+}
+
+// Two undercuts and two threads from the same point (X30 Z5), then a tool change and a GOTO
+// there: where each cycle leaves the tool is a point of the path, so the GOTO after the tool
+// change is matched with its own block, not with the first undercut's return to X30 Z5 (under
+// the first tool). Found by the round-trip fuzzer; on every machine.
+TEST(WholePathGoldens, WhereACycleLeavesTheToolIsAPointOfThePath) {
+  const std::string dir = temp_dir();
+  write_file(
+      dir + "/u.cl",
+      "UNITS/MM\nLOADTL/1\nSPINDL/400,RPM,CLW\nFEDRAT/0.15,MMPR\nRAPID\nGOTO/15,0,5\nCYCLE/"
+      "UNDCUT,DIAM,24,AT,-36,FORM,A\nRAPID\nGOTO/15,0,5\nTHREAD/"
+      "ON,MMPR,3,DEPTH,1.84,CUTS,6,FINCUT,2,0.05,OPTION,1\nGOTO/12,0,2\nGOTO/12,0,-30\nTHREAD/"
+      "OFF\nCYCLE/UNDCUT,DIAM,24,AT,-36,FORM,A\nRAPID\nGOTO/15,0,5\nTHREAD/"
+      "ON,MMPR,3,DEPTH,1.84,CUTS,6,FINCUT,2,0.05,OPTION,1\nGOTO/12,0,2\nGOTO/12,0,-30\nTHREAD/"
+      "OFF\nLOADTL/3\nSPINDL/400,RPM,CLW\nRAPID\nGOTO/15,0,5\nRAPID\nGOTO/30,0,5\nFINI\n");
+  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
+                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/u.cl") +
+                            " --verify -o " + quote(dir + "/u.nc"));
     EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
   }
 }

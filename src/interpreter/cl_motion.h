@@ -6,6 +6,7 @@
 // same CutState back from the program (simulator/toolpath.h). Lathe frame (x a radius), CL units.
 // Collected only when PostOptions::keep_motions asks.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "planner/thread_plan.h"
@@ -40,9 +41,12 @@ struct ClMotion {
   uint32_t line = 0;  // the CL line
   Vec2 to;
   bool rapid = false;
-  bool stays = false;      // the tool is already there: nothing moves, the program need not say it
-  bool hole_exit = false;  // where a hole leaves the tool: by a rapid, or a tap's feed out
-  double hole_bottom = 0;  // hole_exit: the hole's bottom Z, which the tool reaches first
+  bool stays = false;  // the tool is already there: nothing moves, the program need not say it
+  // Where a cycle the CL names (a hole, a thread, an undercut) leaves the tool, by whatever move
+  // its control takes (a rapid, a tap's feed out, a synchronized pull-out): the cycle's own moves
+  // lie before it and are compared on their own.
+  bool exit = false;
+  std::optional<double> hole_bottom;  // a hole's exit: its bottom Z, which the tool reaches first
   ArcSense arc = ArcSense::kNone;
   Vec2 center;         // arcs only
   uint32_t state = 0;  // index into ClPath::states

@@ -115,11 +115,7 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   if (s.feed_given) s.prog.set_feed(s.feed, s.feed_mode);
   s.pos = cl_point(s, Vec2{0, h.retract});
   // The hole leaves the tool at its retract plane: a rapid there, as verify sees it.
-  if (s.opts.keep_motions && r) {
-    record_motion(s, st, Vec2{0, h.retract}, true, false);
-    s.cl_path.motions.back().hole_exit = true;
-    s.cl_path.motions.back().hole_bottom = h.bottom;
-  }
+  if (r) record_exit(s, st.loc.line, Vec2{0, h.retract}, h.bottom);
   if (r) s.holes.push_back(std::move(h));
   s.rapid_next = false;
 }

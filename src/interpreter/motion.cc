@@ -78,11 +78,32 @@ CutState cut_state(const PostState& s) {
 
 }  // namespace
 
-void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool from_pos) {
+namespace {
+// The state index of a motion recorded at CL line `line`: a new state when it changed.
+uint32_t state_at(PostState& s, uint32_t line) {
   ClPath& path = s.cl_path;
   const CutState c = cut_state(s);
   if (path.states.empty() || !(path.states.back().state == c))
-    path.states.push_back({c, st.loc.line, s.tool_line, s.feed_line, s.spindle_line});
+    path.states.push_back({c, line, s.tool_line, s.feed_line, s.spindle_line});
+  return static_cast<uint32_t>(path.states.size() - 1);
+}
+}  // namespace
+
+void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hole_bottom) {
+  if (!s.opts.keep_motions) return;
+  ClMotion mo;
+  mo.line = line;
+  mo.to = at;
+  mo.rapid = true;
+  mo.exit = true;
+  mo.hole_bottom = hole_bottom;
+  mo.state = state_at(s, line);
+  s.cl_path.motions.push_back(mo);
+}
+
+void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool from_pos) {
+  ClPath& path = s.cl_path;
+  const uint32_t state = state_at(s, st.loc.line);
   ClMotion mo;
   mo.line = st.loc.line;
   mo.to = to;
@@ -91,7 +112,7 @@ void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool 
     const Vec2 at = cl2(s, *s.pos);
     mo.stays = std::fabs(at.x - to.x) < 1e-9 && std::fabs(at.z - to.z) < 1e-9;
   }
-  mo.state = static_cast<uint32_t>(path.states.size() - 1);
+  mo.state = state;
   path.motions.push_back(mo);
 }
 

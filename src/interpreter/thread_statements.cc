@@ -104,7 +104,10 @@ void close_single(PostState& s) {
   const CutSite at{t.single.loc, t.single.lines.text(t.single.loc.line)};
   ensure_started(s);
   if (!begin_thread_spindle(s, std::max(std::abs(plan.p1.x), std::abs(plan.p2.x)), at)) return;
-  if (cut_path_move(s, plan, plan.passes.front(), 0, at)) thread_planned(s, plan);
+  if (cut_path_move(s, plan, plan.passes.front(), 0, at)) {
+    thread_planned(s, plan);
+    record_exit(s, plan.loc.line, plan.passes.front().to);
+  }
   end_thread_spindle(s);
 }
 
@@ -142,6 +145,7 @@ void close_couple(PostState& s) {
   ThreadPlan plan;
   if (!t.couple.finish(plan, s.diags)) return;
   thread_planned(s, plan);
+  if (!plan.path.empty()) record_exit(s, plan.loc.line, plan.path.back());
   end_thread_spindle(s);
 }
 

@@ -276,6 +276,7 @@ void undercut_contour(PostState& s, const Statement& st, const UndercutWords& u,
   s.prog.arc(lp(c.fillet_end), lp(c.fillet_center), c.fillet_ccw);
   s.prog.linear(lp(c.end));
   s.prog.rapid(lp(here));
+  record_exit(s, st.loc.line, here);
   s.stats.motions += c.to_fillet.size() + 4;
 }
 

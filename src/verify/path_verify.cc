@@ -179,16 +179,16 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
 // moves.size() (reported).
 size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next,
                        const ClMotion& c) {
-  if (c.hole_exit) {
+  if (c.hole_bottom) {
     // After the feed that reaches the hole's bottom: the hole's own moves pass its exit point
     // on the way in (its R plane may be there).
     ClMotion bottom = c;
-    bottom.to = {0, c.hole_bottom};
+    bottom.to = {0, *c.hole_bottom};
     bottom.rapid = false;
     const size_t b = find_move(moves, next, bottom, k.tol, true);
     if (b < moves.size()) next = b + 1;
   }
-  const size_t j = find_move(moves, next, c, k.tol, !c.hole_exit);
+  const size_t j = find_move(moves, next, c, k.tol, !c.exit);
   if (j < moves.size()) return j;
   const size_t other = find_move(moves, next, c, k.tol, false);
   const Move* mv = other < moves.size() ? &moves[other] : next > 0 ? &moves[next - 1] : nullptr;
@@ -240,7 +240,7 @@ PathReport verify_path(const ClPath& cl, const Toolpath& path, const Machine& m,
     const size_t j = check_end_point(k, moves, next, c);
     if (j >= moves.size()) continue;
     next = j + 1;
-    if (!c.hole_exit && same_kind(c, moves[j])) check_arc(k, c, moves[j]);
+    if (!c.exit && same_kind(c, moves[j])) check_arc(k, c, moves[j]);
     check_state(k, c, moves[j]);
   }
   r.problems = k.problems;
