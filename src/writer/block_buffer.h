@@ -20,6 +20,7 @@ class BlockBuffer {
   void commit(const char* end) { size_ = static_cast<size_t>(end - data_.get()); }
 
   void append(std::string_view s) {
+    if (s.empty()) return;  // memcpy to a buffer not yet allocated (null) is undefined
     std::memcpy(room(s.size()), s.data(), s.size());
     size_ += s.size();
   }
