@@ -301,6 +301,27 @@ TEST(WholePathGoldens, WhereACycleLeavesTheToolIsAPointOfThePath) {
   }
 }
 
+// Three threads from the same start point, the third after a tool change: a thread cycle returns
+// to its start after every pass, so where a thread leaves the tool is looked for after its
+// synchronized cuts, and the third thread's exit is not matched inside the second's cycle (under
+// the first tool). Found by the round-trip fuzzer; on every machine.
+TEST(WholePathGoldens, AThreadsExitComesAfterItsCuts) {
+  const std::string dir = temp_dir();
+  write_file(
+      dir + "/t.cl",
+      "UNITS/MM\nLOADTL/5\nSPINDL/800,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/10,0,5\nTHREAD/"
+      "ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/8,0,2\nGOTO/8,0,-20\nTHREAD/OFF\nRAPID\nGOTO/"
+      "10,0,5\nTHREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/8,0,2\nGOTO/8,0,-20\nTHREAD/"
+      "OFF\nLOADTL/1\nSPINDL/800,RPM,CLW\nTHREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/"
+      "8,0,2\nGOTO/8,0,-20\nTHREAD/OFF\nFINI\n");
+  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
+                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/t.cl") +
+                            " --verify -o " + quote(dir + "/t.nc"));
+    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
+  }
+}
+
 // LinuxCNC's own interpreter agrees with what verify reads back: every feed move of the goldens
 // outside spindle-synchronized motion (threads, the rigid tap) is made with the tool, spindle and
 // feed the CL says, by hand from the CL files:

@@ -47,6 +47,7 @@ struct ClMotion {
   // lie before it and are compared on their own.
   bool exit = false;
   std::optional<double> hole_bottom;  // a hole's exit: its bottom Z, which the tool reaches first
+  uint32_t thread_cuts = 0;           // a thread's exit: its synchronized cuts, which come first
   ArcSense arc = ArcSense::kNone;
   Vec2 center;         // arcs only
   uint32_t state = 0;  // index into ClPath::states

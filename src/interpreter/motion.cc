@@ -89,7 +89,8 @@ uint32_t state_at(PostState& s, uint32_t line) {
 }
 }  // namespace
 
-void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hole_bottom) {
+void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hole_bottom,
+                 uint32_t thread_cuts) {
   if (!s.opts.keep_motions) return;
   ClMotion mo;
   mo.line = line;
@@ -97,6 +98,7 @@ void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hol
   mo.rapid = true;
   mo.exit = true;
   mo.hole_bottom = hole_bottom;
+  mo.thread_cuts = thread_cuts;
   mo.state = state_at(s, line);
   s.cl_path.motions.push_back(mo);
 }

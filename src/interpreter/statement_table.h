@@ -118,6 +118,7 @@ void move_to(PostState& s, const Statement& st, Point3 p);
 void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool from_pos = true);
 // Verify's record of where a cycle of CL line `line` (a hole, a thread, an undercut) leaves the
 // tool (ClMotion::exit), when PostOptions::keep_motions asks.
-void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hole_bottom = {});
+void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hole_bottom = {},
+                 uint32_t thread_cuts = 0);
 
 }  // namespace clpost

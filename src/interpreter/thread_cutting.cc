@@ -114,7 +114,7 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
   time_thread(s, plan, s.thread.rpm);
   s.stats.motions += plan.passes.size() * 4;
   s.pos = cl_point(s, plan.end_position);  // where the plan leaves the tool
-  record_exit(s, plan.loc.line, plan.end_position);
+  record_exit(s, plan.loc.line, plan.end_position, {}, static_cast<uint32_t>(plan.passes.size()));
   end_thread_spindle(s);
 }
 

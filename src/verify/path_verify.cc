@@ -179,6 +179,16 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
 // moves.size() (reported).
 size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next,
                        const ClMotion& c) {
+  if (c.thread_cuts > 0) {
+    // After the thread's synchronized cuts (a run of synchronized moves each): a cycle returns
+    // to its exit point after every pass.
+    uint32_t runs = 0;
+    for (size_t i = next; i < moves.size() && runs < c.thread_cuts; ++i)
+      if (moves[i].kind == MoveKind::kThread &&
+          (i + 1 == moves.size() || moves[i + 1].kind != MoveKind::kThread) &&
+          ++runs == c.thread_cuts)
+        next = i + 1;
+  }
   if (c.hole_bottom) {
     // After the feed that reaches the hole's bottom: the hole's own moves pass its exit point
     // on the way in (its R plane may be there).
