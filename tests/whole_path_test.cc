@@ -188,6 +188,18 @@ TEST(WholePathGoldens, AToolChangeWithoutAToolWordIsNotCompared) {
       << v.out;
 }
 
+// Posts `cl` with --verify on every shipped machine: each posts and verifies (exit 0).
+void posts_and_verifies_everywhere(const std::string& cl) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/t.cl", cl);
+  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
+                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/t.cl") +
+                            " --verify -o " + quote(dir + "/t.nc"));
+    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
+  }
+}
+
 // A CL motion to where the tool already is writes no block (nothing moves; it used to write a
 // motionless "G0" alone), and verify takes it as reached there, whatever its kind. Found by the
 // round-trip fuzzer (a RAPID, GOTO to the point just reached).
@@ -264,19 +276,12 @@ TEST(WholePathGoldens, ATapWrittenAsMovesLeavesByAFeed) {
 // matched after the tap reaches its bottom, not with the drill's rapid to its R plane at Z2
 // (under the first tool). Found by the round-trip fuzzer; on every machine.
 TEST(WholePathGoldens, AHoleExitIsMatchedAfterItsBottom) {
-  const std::string dir = temp_dir();
-  write_file(dir + "/h.cl",
-             "UNITS/MM\nLOADTL/1,ADJUST,1\nSPINDL/800,RPM,CLW\nRAPID\nGOTO/16,0,2\n"
-             "CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,2,DWELL,0.5\nGOTO/0,0,0\nCYCLE/OFF\n"
-             "LOADTL/4,ADJUST,4\nSPINDL/300,RPM,CLW\n"
-             "CYCLE/TAP,DEPTH,16,PITCH,1.5,MMPM,450,CLEAR,5\nGOTO/0,0,0\nCYCLE/OFF\nRAPID\n"
-             "GOTO/20,0,2\nFINI\n");
-  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
-                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
-    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/h.cl") +
-                            " --verify -o " + quote(dir + "/h.nc"));
-    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
-  }
+  posts_and_verifies_everywhere(
+      "UNITS/MM\nLOADTL/1,ADJUST,1\nSPINDL/800,RPM,CLW\nRAPID\nGOTO/16,0,2\n"
+      "CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,2,DWELL,0.5\nGOTO/0,0,0\nCYCLE/OFF\n"
+      "LOADTL/4,ADJUST,4\nSPINDL/300,RPM,CLW\n"
+      "CYCLE/TAP,DEPTH,16,PITCH,1.5,MMPM,450,CLEAR,5\nGOTO/0,0,0\nCYCLE/OFF\nRAPID\n"
+      "GOTO/20,0,2\nFINI\n");
 }
 
 // Two undercuts and two threads from the same point (X30 Z5), then a tool change and a GOTO
