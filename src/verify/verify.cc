@@ -51,27 +51,38 @@ Frame frame_of(const ThreadPlan& plan) {
 // plan begins, so each is compared with its own.
 std::vector<NcCut> split_at_path_starts(const std::vector<NcCut>& cuts,
                                         const std::vector<ExpectedCut>& expected, double tol) {
-  const auto path_starts_at = [&](Vec2 p) {
-    return std::any_of(expected.begin(), expected.end(), [&](const ExpectedCut& e) {
-      return e.path && std::fabs(e.from.x - p.x) <= tol && std::fabs(e.from.z - p.z) <= tol;
+  std::vector<Vec2> starts;  // where the plan's coupled and single-pass threads begin
+  for (const ExpectedCut& e : expected)
+    if (e.path) starts.push_back(e.from);
+  const auto starts_at = [&](Vec2 p) {
+    return std::any_of(starts.begin(), starts.end(), [&](Vec2 s) {
+      return std::fabs(s.x - p.x) <= tol && std::fabs(s.z - p.z) <= tol;
     });
   };
   std::vector<NcCut> out;
   out.reserve(cuts.size());
   for (const NcCut& c : cuts) {
-    NcCut rest = c;
-    for (size_t k = 0; c.call < 0 && k + 1 < rest.chain.size(); ++k) {
-      if (!path_starts_at(rest.chain[k])) continue;
-      NcCut head = rest;
-      head.chain.resize(k + 1);
+    size_t begin = 0;  // the chain index the piece being built starts at
+    for (size_t k = 0; c.call < 0 && !starts.empty() && k + 1 < c.chain.size(); ++k) {
+      if (!starts_at(c.chain[k])) continue;
+      NcCut head = c;
+      if (begin > 0) head.from = c.chain[begin - 1];
+      head.chain.assign(c.chain.begin() + static_cast<long>(begin),
+                        c.chain.begin() + static_cast<long>(k) + 1);
+      head.to = head.chain.front();
       head.end = head.chain.back();
       head.linear_pullout.reset();
       out.push_back(std::move(head));
-      rest.from = rest.chain[k];
-      rest.chain.erase(rest.chain.begin(), rest.chain.begin() + static_cast<long>(k) + 1);
-      rest.to = rest.chain.front();
-      k = static_cast<size_t>(-1);  // the loop's ++k makes it 0
+      begin = k + 1;
     }
+    if (begin == 0) {
+      out.push_back(c);
+      continue;
+    }
+    NcCut rest = c;
+    rest.from = c.chain[begin - 1];
+    rest.chain.assign(c.chain.begin() + static_cast<long>(begin), c.chain.end());
+    rest.to = rest.chain.front();
     out.push_back(std::move(rest));
   }
   return out;
