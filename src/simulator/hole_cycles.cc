@@ -56,26 +56,17 @@ bool parse_call_line(std::string_view line, HoleLine& h) {
   return h.by_arg.count("z") > 0;
 }
 
-bool parse_word_line(std::string_view line, HoleLine& h) {
+bool parse_word_line(const Machine& m, std::string_view line, HoleLine& h) {
   bool fields_begun = false;
-  size_t i = 0;
-  while (i < line.size()) {
-    const size_t end = std::min(line.find(' ', i), line.size());
-    const std::string_view token = line.substr(i, end - i);
-    i = end + 1;
-    if (token.empty() || token[0] == '{') continue;
-    size_t a = 0;
-    while (a < token.size() && std::isalpha(static_cast<unsigned char>(token[a]))) ++a;
-    const std::string addr(token.substr(0, a));
-    const std::string f = field_in(token);
-    if (!f.empty()) {
+  for (const TemplateToken& w : template_tokens(m, line)) {
+    if (!w.fields.empty()) {
       fields_begun = true;
-      h.by_addr[addr] = f;
-      h.addresses.insert(addr);
-    } else if (addr == "G" || addr == "M") {
-      if (!fields_begun) h.code = parse_code(token);
+      h.by_addr[w.address] = w.fields.front().name;
+      h.addresses.insert(w.address);
+    } else if (w.code.address == "G" || w.code.address == "M") {
+      if (!fields_begun) h.code = w.code;
     } else {
-      h.addresses.insert(addr);  // a constant word ("Y0")
+      h.addresses.insert(w.code.address);  // a constant word ("Y0")
     }
   }
   return !h.code.empty();
@@ -94,7 +85,7 @@ std::optional<HoleLine> hole_line(const Machine& m, const TemplateSpec& t, HoleK
                       std::all_of(line.begin(), line.begin() + static_cast<long>(open), [](char c) {
                         return std::isalnum(static_cast<unsigned char>(c));
                       });
-    if (call ? parse_call_line(line, h) : parse_word_line(line, h)) return h;
+    if (call ? parse_call_line(line, h) : parse_word_line(m, line, h)) return h;
   }
   return std::nullopt;
 }

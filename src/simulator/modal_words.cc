@@ -15,60 +15,6 @@ namespace clpost::sim {
 
 namespace {
 
-// One word of a template line: a constant code ("G97", "M6") or an address with fields
-// ("S{rpm}", "T{tool:02}{offset:02}", "LIMS={max_rpm}"); a field alone ("{direction}") is
-// neither.
-struct TemplateToken {
-  std::string address;
-  std::vector<TemplateField> fields;
-  Code code;
-};
-
-// "{tool:02}{offset:02}" -> {tool, 2}, {offset, 2}; false when `text` is not only fields.
-bool parse_fields(std::string_view text, std::vector<TemplateField>& out) {
-  while (!text.empty()) {
-    if (text.front() != '{') return false;
-    const size_t close = text.find('}');
-    if (close == std::string_view::npos) return false;
-    const std::string_view inner = text.substr(1, close - 1);
-    const size_t colon = inner.find(':');
-    TemplateField f{std::string(inner.substr(0, colon)), 0};
-    if (colon != std::string_view::npos)
-      for (char c : inner.substr(colon + 1))
-        if (std::isdigit(static_cast<unsigned char>(c))) f.width = f.width * 10 + (c - '0');
-    out.push_back(std::move(f));
-    text.remove_prefix(close + 1);
-  }
-  return true;
-}
-
-std::vector<TemplateToken> template_tokens(const Machine& m, std::string_view line) {
-  std::vector<TemplateToken> out;
-  size_t i = 0;
-  while (i < line.size()) {
-    const size_t end = std::min(line.find(' ', i), line.size());
-    const std::string_view token = line.substr(i, end - i);
-    i = end + 1;
-    if (token.empty()) continue;
-    if (!m.comment_open.empty() && token.rfind(m.comment_open, 0) == 0) break;
-    size_t a = 0;
-    while (a < token.size() && std::isalpha(static_cast<unsigned char>(token[a]))) ++a;
-    if (a > 0 && a < token.size() && token[a] == '=') ++a;
-    TemplateToken t;
-    if (a < token.size() && token[a] == '{') {
-      if (a == 0 || !parse_fields(token.substr(a), t.fields)) continue;
-      for (size_t k = 0; k < a; ++k)
-        t.address += static_cast<char>(std::toupper(static_cast<unsigned char>(token[k])));
-    } else if (token.find('{') == std::string_view::npos) {
-      t.code = parse_code(token);
-    } else {
-      continue;
-    }
-    out.push_back(std::move(t));
-  }
-  return out;
-}
-
 const std::vector<std::string>* lines_of(const Machine& m, const TemplateSpec& t) {
   auto it = m.templates.find(std::string(t.name));
   return it == m.templates.end() ? nullptr : &it->second;

@@ -37,6 +37,17 @@ struct TemplateField {
   int width = 0;
 };
 
+// One word of a template line: a constant code ("G97", "M6") or an address with fields
+// ("S{rpm}", "T{tool:02}{offset:02}", "LIMS={max_rpm}"); a field alone ("{direction}") is
+// neither.
+struct TemplateToken {
+  std::string address;
+  std::vector<TemplateField> fields;
+  Code code;
+};
+// A template line's words (template_words.cc), up to a comment.
+std::vector<TemplateToken> template_tokens(const Machine& m, std::string_view line);
+
 // How the machine's program states the modal state verify compares (modal_words.cc): the
 // feed-mode and spindle codes and the words of its tool and spindle templates.
 struct ModalWords {
