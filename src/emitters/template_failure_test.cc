@@ -7,13 +7,13 @@
 
 #include <functional>
 
-#include "emitters/cycle98_emitter.h"
+#include "controls/fanuc/fanuc_emitter.h"
+#include "controls/haas/haas_emitter.h"
+#include "controls/heidenhain/heidenhain_emitter.h"
+#include "controls/linuxcnc/linuxcnc_emitter.h"
+#include "controls/sinumerik/cycle98_emitter.h"
+#include "controls/sinumerik/cycle99_emitter.h"
 #include "emitters/emitter_test_util.h"
-#include "emitters/fanuc_emitter.h"
-#include "emitters/haas_emitter.h"
-#include "emitters/heidenhain_emitter.h"
-#include "emitters/linuxcnc_emitter.h"
-#include "emitters/siemens_emitter.h"
 
 namespace clpost {
 namespace {

@@ -1,46 +1,12 @@
 // make_emitter: the machine's threading strategy with its fallback ("exact or fall back",
-// controllers.md). The cycle and loop emitters are listed in make_cycle_emitter /
-// make_loop_emitter below; add a new control's emitter there.
+// controllers.md). The controls' cycle and loop emitters come from the registry
+// (controls/registry_output.cc).
 #include <fmt/format.h>
 
-#include "emitters/cycle98_emitter.h"
 #include "emitters/emitter.h"
 #include "emitters/emulation_emitter.h"
-#include "emitters/fanuc_emitter.h"
-#include "emitters/haas_emitter.h"
-#include "emitters/heidenhain_emitter.h"
-#include "emitters/linuxcnc_emitter.h"
-#include "emitters/siemens_emitter.h"
 
 namespace clpost {
-
-std::unique_ptr<Emitter> make_cycle_emitter(ThreadCycle c) {
-  switch (c) {
-    case ThreadCycle::kNone:
-      return nullptr;
-    case ThreadCycle::kCycle99:
-      return std::make_unique<Cycle99Emitter>();
-    case ThreadCycle::kFanucG76:
-      return std::make_unique<FanucG76Emitter>();
-    case ThreadCycle::kHaasG76:
-      return std::make_unique<HaasG76Emitter>();
-    case ThreadCycle::kHeidenhainG31:
-      return std::make_unique<HeidenhainG31Emitter>();
-    case ThreadCycle::kLinuxcncG76:
-      return std::make_unique<LinuxcncG76Emitter>();
-  }
-  return nullptr;
-}
-
-std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l) {
-  switch (l) {
-    case ThreadLoop::kG33:
-      return std::make_unique<EmulationEmitter>("G33 loop");
-    case ThreadLoop::kG92:
-      return std::make_unique<G92Emitter>();
-  }
-  return nullptr;
-}
 
 PlannerSettings planner_settings(const Machine& m) {
   PlannerSettings s;
@@ -184,10 +150,8 @@ std::vector<std::unique_ptr<Emitter>> emitter_chain(const Machine& m) {
 }  // namespace
 
 std::unique_ptr<Emitter> make_emitter(const Machine& m) {
-  // A machine with a cycle98 template cuts chained threads with CYCLE98 where it is exact.
-  std::unique_ptr<Emitter> for_chains;
-  if (m.templates.count(std::string(tmpl::kCycle98.name)))
-    for_chains = std::make_unique<Cycle98Emitter>();
+  // A machine with a chain cycle's template cuts chained threads with it where it is exact.
+  std::unique_ptr<Emitter> for_chains = make_chain_emitter(m);
   return std::make_unique<ThreadOutput>(m, emitter_chain(m), std::move(for_chains),
                                         m.thread_fallback == ThreadFallback::kError);
 }

@@ -1,5 +1,5 @@
 // A thread posted whole: its lead as every output writes it, checked over the thread's turns
-// (emitters/written_value.h, lead_mismatch).
+// (laws/written_value.h, lead_mismatch).
 #include <gtest/gtest.h>
 
 #include "interpreter/post.h"

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "controls/control_id.h"
+
 namespace clpost {
 
 // How one address's numbers are written.
@@ -20,16 +22,8 @@ struct NumberFormat {
 
 enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
 enum class ThreadFallback : uint8_t { kLoop, kEmulate, kError };
-// The control's multi-pass threading cycle (threading.cycle) and single-pass loop block
-// (threading.loop); see docs/machines.md.
-enum class ThreadCycle : uint8_t {
-  kNone,
-  kCycle99,
-  kFanucG76,
-  kHaasG76,
-  kHeidenhainG31,
-  kLinuxcncG76
-};
+// The control's single-pass loop block (threading.loop); the multi-pass cycle (threading.cycle)
+// is a registered control's, controls/control_id.h. See docs/machines.md.
 enum class ThreadLoop : uint8_t { kG33, kG92 };
 // kAuto (cl.radial_axis only): the radial axis is found from the program (the one of the two
 // non-axial axes that is not constantly 0).

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <type_traits>
 
 #include "support/json_text.h"
@@ -19,8 +20,12 @@ constexpr Choice kRadialAxes[] = {{"x"}, {"y"}, {"z"}, {"auto"}};  // ClAxis ord
 constexpr Choice kLineEndings[] = {{"lf", "\n"}, {"crlf", "\r\n"}};
 constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};  // ThreadStrategy order
 constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};   // ThreadFallback order
-constexpr Choice kCycles[] = {{"none"},     {"cycle99"},        {"fanuc_g76"},
-                              {"haas_g76"}, {"heidenhain_g31"}, {"linuxcnc_g76"}};  // ThreadCycle
+// ThreadCycle order: the registered controls' cycles (controls/control_id.h).
+constexpr auto kCycles = [] {
+  std::array<Choice, kThreadCycleNames.size()> c{};
+  for (size_t i = 0; i < c.size(); ++i) c[i] = Choice{kThreadCycleNames[i]};
+  return c;
+}();
 constexpr Choice kLoops[] = {{"g33"}, {"g92"}};           // ThreadLoop order
 constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};  // false, true
 constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};  // false, true

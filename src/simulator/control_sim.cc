@@ -6,6 +6,7 @@
 
 #include "nc_reader/nc_lexer.h"
 #include "reader/number.h"
+#include "simulator/control_readback.h"
 #include "simulator/sim_state.h"
 
 namespace clpost {
@@ -148,6 +149,8 @@ struct Codes {
   Code rapid, linear, cw, ccw, thread, thread_inc, thread_dec, metric, inch, dwell;
   std::string metric_line, inch_line;  // codes written as comments: "[METRIC]"
   sim::ModalWords modal;
+  const sim::ControlReadback* control = nullptr;  // the machine's control (threading.cycle)
+  Code diameter_on, diameter_off;                 // its diameter-mode codes, if any
 };
 
 Codes codes_of(const Machine& m) {
@@ -163,6 +166,9 @@ Codes codes_of(const Machine& m) {
   c.inch = sim::parse_code(m.code("inch"));
   c.dwell = sim::template_code(m, "dwell");
   c.modal = sim::modal_words(m);
+  c.control = &sim::control_readback(m.thread_cycle);
+  c.diameter_on = sim::parse_code(c.control->diameter_on);
+  c.diameter_off = sim::parse_code(c.control->diameter_off);
   const std::string& open = m.comment_open;
   if (!open.empty() && m.code("metric").rfind(open, 0) == 0) c.metric_line = m.code("metric");
   if (!open.empty() && m.code("inch").rfind(open, 0) == 0) c.inch_line = m.code("inch");
@@ -236,13 +242,12 @@ void thread_move(State& s, const NcBlock& b, Vec2 to, const Code& code) {
 bool settings_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::has_code(b, c.metric)) s.out.units = LengthUnit::kMm;
   if (sim::has_code(b, c.inch)) s.out.units = LengthUnit::kInch;
-  if (sim::has_code(b, {"DIAMON", {}}) || sim::has_code(b, {"G", 7})) s.diameter = true;
-  if (sim::has_code(b, {"DIAMOF", {}}) || sim::has_code(b, {"G", 8})) s.diameter = false;
+  if (sim::has_code(b, c.diameter_on)) s.diameter = true;
+  if (sim::has_code(b, c.diameter_off)) s.diameter = false;
   if (sim::machine_position_block(s, b)) return true;
   for (const NcWord& w : b.words) {
     if ((w.address == "G" && w.has_value() && std::fabs(w.value - 91) < 1e-9) ||
-        ((w.address == "U" || w.address == "W") &&
-         s.m.thread_cycle != ThreadCycle::kHeidenhainG31)) {
+        ((w.address == "U" || w.address == "W") && !c.control->uw_are_cycle_words)) {
       s.error(w.col, fmt::format("'{}{}': incremental positions are not supported by verify "
                                  "(absolute G90 only)",
                                  w.address, w.text));
@@ -252,30 +257,18 @@ bool settings_block(State& s, const NcBlock& b, const Codes& c) {
   return sim::has_code(b, c.dwell);  // G4 X/P/F is a time, not a position
 }
 
-// A canned cycle (holes, threads); true when the block was one.
-bool cycle_block(State& s, const NcBlock& b) {
+// A canned cycle (holes, threads); true when the block was one. Calls (CYCLE99(…)) other than
+// the controls' thread calls (CYCLE96 undercuts) are not simulated.
+bool cycle_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::hole_cycle_block(s, b)) return true;
   if (!b.calls.empty()) {
-    if (!sim::cycle99_call(s, b)) sim::cycle98_call(s, b);
-    return true;  // other calls (CYCLE96 undercuts) are not simulated
+    for (const sim::ControlReadback* r : sim::control_readbacks())
+      if (r->call != nullptr && r->call(s, b)) break;
+    return true;
   }
-  switch (s.m.thread_cycle) {
-    case ThreadCycle::kFanucG76:
-      if (sim::fanuc_g76(s, b)) return true;
-      break;
-    case ThreadCycle::kHaasG76:
-      if (sim::haas_g76(s, b)) return true;
-      break;
-    case ThreadCycle::kLinuxcncG76:
-      if (sim::linuxcnc_g76(s, b)) return true;
-      break;
-    case ThreadCycle::kHeidenhainG31:
-      if (sim::heidenhain_g31(s, b)) return true;
-      break;
-    default:
-      break;
-  }
-  return s.m.thread_loop == ThreadLoop::kG92 && sim::g92_cycle(s, b);
+  if (c.control->cycle != nullptr && c.control->cycle(s, b)) return true;
+  const sim::CycleReader loop = sim::loop_reader(s.m.thread_loop);
+  return loop != nullptr && loop(s, b);
 }
 
 // The block's modal motion code, if it has one (s.motion set).
@@ -339,9 +332,9 @@ void modal_move(State& s, const NcBlock& b, const Codes& c, const Code* motion_c
 }
 
 void run_block(State& s, const NcBlock& b, const Codes& c) {
-  // Heidenhain: G31's contour blocks and G80 belong to the cycle.
-  if (s.g31.set) {
-    sim::heidenhain_g31(s, b);
+  // A cycle that takes the blocks up to its closing one (G31's contour and G80).
+  if (s.pending.set && s.pending.takes_blocks) {
+    c.control->cycle(s, b);
     return;
   }
   if (!c.metric_line.empty() && s.line_text.find(c.metric_line) != std::string_view::npos)
@@ -351,7 +344,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   sim::hole_comment(s, b);
   if (b.words.empty() && b.calls.empty()) return;
   sim::read_modal_words(s, b, c.modal);
-  if (settings_block(s, b, c) || cycle_block(s, b)) return;
+  if (settings_block(s, b, c) || cycle_block(s, b, c)) return;
   const Code* motion_code = motion_of(s, b, c);
   if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);
   const NcWord* x = b.find("X");
@@ -411,9 +404,9 @@ bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, 
       return false;
     }
   }
-  if (s.g31.set) {
-    diags.error(SourceLoc{s.g31.line, s.g31.col}, s.g31.line_text,
-                "G31 has no G80: the thread cycle's contour is not closed");
+  if (s.pending.set && s.pending.takes_blocks) {
+    diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
+                std::string(codes.control->unclosed));
     s.ok = false;
   }
   out.path.units = out.units;

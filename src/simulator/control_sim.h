@@ -1,7 +1,7 @@
 #pragma once
 // Runs an NC program the way its control would (machine m's dialect): modal motion, units,
 // diameter mode, and every threading cycle clpost writes expanded with the control's documented
-// law (emitters/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
+// law (controls/*/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
 // cuts (for `clpost verify`).
 #include <optional>
 #include <string>

@@ -12,7 +12,7 @@
 #include <map>
 #include <set>
 
-#include "emitters/hole_output.h"
+#include "laws/hole_law.h"
 #include "reader/number.h"
 #include "simulator/sim_state.h"
 

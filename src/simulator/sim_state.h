@@ -1,12 +1,12 @@
 #pragma once
-// The control simulation's state while it runs a program (control_sim.cc) and the cycle
-// readers that share it (fanuc_cycles.cc, other_cycles.cc). Internal to simulator/.
+// The control simulation's state while it runs a program (control_sim.cc) and the controls'
+// cycle read-backs that share it (src/controls/*/*_readback.cc, through control_readback.h).
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "emitters/cut_pass.h"
+#include "laws/cut_pass.h"
 #include "nc_reader/nc_block.h"
 #include "planner/thread_words.h"
 #include "simulator/control_sim.h"
@@ -76,16 +76,12 @@ enum class Motion {
   kG92
 };
 
-// Words of a Fanuc G76 first block, waiting for the second.
-struct FanucFirstBlock {
+// A cycle whose words span several blocks, as its control's read-back has read it so far: the
+// first block of a two-block cycle (a G76 P… Q… R…), or a cycle waiting for its contour and its
+// closing block (G31 … G80), which takes every block while `takes_blocks`.
+struct PendingCycle {
   bool set = false;
-  std::string p;  // "mmrraa"
-  double q = 0, r = 0;
-};
-
-// Heidenhain G31 ... G80: the cycle's words and its contour, waiting for G80.
-struct PendingG31 {
-  bool set = false;
+  bool takes_blocks = false;
   uint32_t line = 0, col = 0;
   std::string line_text;
   NcBlock block;
@@ -117,8 +113,7 @@ struct State {
   std::optional<double> lead_register;  // when the lead word is not F
   bool last_was_thread = false;         // the previous move was synchronized
   bool pullout_open = false;            // the previous move ended a synchronized cut
-  FanucFirstBlock fanuc_first;
-  PendingG31 g31;
+  PendingCycle pending;                 // a multi-block cycle being read (its control's read-back)
   G92Modal g92;
   bool hole_open = false;  // out.holes.back() is followed move by move (a "hole at" comment)
   CutState cut;            // feed mode, spindle and tool as the program last stated them
@@ -140,14 +135,6 @@ struct State {
                   bool keep_start_index);
 };
 
-// Cycle readers: each returns true when the block was its cycle (handled, errors reported).
-bool fanuc_g76(State& s, const NcBlock& b);
-bool haas_g76(State& s, const NcBlock& b);
-bool g92_cycle(State& s, const NcBlock& b);
-bool linuxcnc_g76(State& s, const NcBlock& b);
-bool heidenhain_g31(State& s, const NcBlock& b);  // G31, its contour, G80
-bool cycle99_call(State& s, const NcBlock& b);
-bool cycle98_call(State& s, const NcBlock& b);
 // Holes (hole_cycles.cc): a "hole at CL line N" comment opens a hole followed move by move;
 // a block of one of the machine's hole_* templates is that hole's cycle, expanded.
 void hole_comment(State& s, const NcBlock& b);

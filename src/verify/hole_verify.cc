@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "emitters/cut_pass.h"
+#include "laws/cut_pass.h"
 
 namespace clpost {
 

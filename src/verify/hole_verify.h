@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "emitters/hole_output.h"
+#include "laws/hole_law.h"
 #include "simulator/control_sim.h"
 #include "support/diagnostics.h"
 #include "verify/verify.h"

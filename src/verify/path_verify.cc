@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "emitters/cut_pass.h"
-#include "emitters/written_value.h"
+#include "laws/cut_pass.h"
+#include "laws/written_value.h"
 
 namespace clpost {
 

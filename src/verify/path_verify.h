@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "emitters/hole_output.h"
 #include "interpreter/cl_motion.h"
+#include "laws/hole_law.h"
 #include "simulator/toolpath.h"
 #include "support/diagnostics.h"
 #include "verify/verify.h"

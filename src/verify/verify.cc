@@ -6,8 +6,8 @@
 #include <cmath>
 #include <map>
 
-#include "emitters/cut_pass.h"
-#include "emitters/written_value.h"
+#include "laws/cut_pass.h"
+#include "laws/written_value.h"
 #include "planner/vec2_math.h"
 #include "verify/cut_alignment.h"
 #include "verify/expected_cuts.h"

@@ -1,0 +1,18 @@
+#pragma once
+// Fanuc's threading cycles read back (simulator/): G76 in two blocks and the G92 box cycle with
+// its modal continuation blocks, expanded with their laws (fanuc_law.h). Each returns true when
+// the block was its cycle (handled, errors reported).
+#include <string_view>
+
+#include "nc_reader/nc_block.h"
+
+namespace clpost::sim {
+
+struct State;
+
+bool fanuc_g76(State& s, const NcBlock& b);
+bool g92_cycle(State& s, const NcBlock& b);
+// The format of G76's P/Q depth words (µm in mm programs, 0.1 µm in inch ones); Haas's G76 too.
+std::string_view g76_depth_format(const State& s);
+
+}  // namespace clpost::sim

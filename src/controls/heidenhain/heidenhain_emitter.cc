@@ -1,0 +1,151 @@
+#include "controls/heidenhain/heidenhain_emitter.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "laws/written_value.h"
+#include "planner/vec2_math.h"
+#include "writer/number_format.h"
+
+namespace clpost {
+
+namespace {
+
+using namespace vec2_math;
+
+constexpr const char* kTemplate = tmpl::kHeidenhainG31.name.data();
+
+Vec2 clear_start(const ThreadPlan& plan) {
+  return plan.end_position;  // the clear line above the thread start
+}
+
+}  // namespace
+
+std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& plan,
+                                                             const Machine& m, std::string& why) {
+  auto no = [&](std::string reason) {
+    why = std::move(reason);
+    return std::nullopt;
+  };
+  if (plan.form == ThreadForm::kChain)
+    return no("a chained thread: clpost writes G31 for one straight thread line only");
+  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
+    return no("G31 cuts multi-pass threads only");
+  if (plan.pitch.lead_change != 0)
+    return no("G31 cuts a constant pitch; the CL gives a variable lead, INCR/DECR");
+  if (plan.pitch.starts > 1)
+    return no(
+        fmt::format("G31's multi-start order and spacing, D and C, are not documented; "
+                    "the thread has {} starts",
+                    plan.pitch.starts));
+  if (plan.option == 0)
+    return no("G31 has no infeed type for OPTION 0, steps decreasing by a constant amount");
+  if (std::fmod(std::fabs(plan.cutang), 90.0) > 1e-9)
+    return no(
+        fmt::format("G31 feeds in radially or by its flank offset H; CUTANG {} is not "
+                    "mapped",
+                    plan.cutang));
+  if (plan.pullout)
+    return no("G31's run-out K geometry is not documented; the plan has a pull-out");
+  if (!m.templates.count(kTemplate))
+    return no(fmt::format("machine '{}' has no template '{}'", m.name, kTemplate));
+  if (std::string why = lead_word_mismatch(m, plan, "F", "F", cut_tolerance(m)); !why.empty())
+    return no(why);
+
+  double d_max = 0;
+  for (const ThreadPass& p : plan.passes) d_max = std::max(d_max, p.depth);
+  if (d_max <= 0) return no("G31 needs a thread depth U > 0; the plan cuts on the contour");
+  size_t first_full = 0;
+  while (plan.passes[first_full].depth < d_max - 1e-9) ++first_full;
+
+  const G31FlankCodes codes = g31_flank_codes(m);
+  const double dm = m.diameter_output ? 2 : 1;
+  HeidenhainG31 w;
+  w.f = as_read(m, "F", plan.pitch.pitch);
+  w.u = as_read(m, "U", d_max);
+  w.ic = static_cast<int>(first_full) + 1;
+  w.q = static_cast<int>(plan.passes.size() - first_full) - 1;
+  w.v = plan.option <= 2 ? 0 : 1;
+  const Vec2 t = plan.p2 - plan.p1;
+  const bool face = std::fabs(t.x) > std::fabs(t.z);
+  const double toward = face ? t.x : t.z;
+  if (plan.option == 2 || plan.option == 4)
+    w.h = codes.alternating;
+  else
+    w.h = toward < 0 ? codes.toward_minus : codes.toward_plus;
+  w.a = as_read(m, "A", plan.tool_angle / 2);
+  w.d = 1;
+  w.c = 0;
+  w.bd = plan.side == ThreadSide::kInternal ? 1 : 0;
+  w.b = as_read(m, "B", m.run_in);
+  w.p = 0;
+  w.k = 0;
+  w.from = {as_read(m, "X", dm * plan.p1.x) / dm, as_read(m, "Z", plan.p1.z)};
+  w.to = {as_read(m, "X", dm * plan.p2.x) / dm, as_read(m, "Z", plan.p2.z)};
+  return w;
+}
+
+Fit HeidenhainG31Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
+  Fit f;
+  std::optional<HeidenhainG31> w = words_for(plan, m, f.mismatch);
+  if (!w) return f;
+  std::string refused;
+  std::vector<Cut> cuts = expand_heidenhain_g31(*w, g31_flank_codes(m), &refused);
+  std::string diff = refused.empty()
+                         ? compare_cuts(cuts, plan_cuts(plan), {cut_tolerance(m), false})
+                         : "the G31 law does not cover the words: " + refused;
+  if (diff.empty()) {
+    f.notes.push_back("G31 infeed law and flank offsets as clpost assumes them, unverified");
+    return f;
+  }
+  const bool finish = std::any_of(plan.passes.begin(), plan.passes.end(),
+                                  [](const ThreadPass& p) { return p.kind == PassKind::kFinish; });
+  f.mismatch = finish
+                   ? "G31 has no finish allowance, FINCUT: " + diff
+                   : fmt::format("G31's V{} law does not give the planned depths: {}", w->v, diff);
+  return f;
+}
+
+bool HeidenhainG31Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {
+  const Machine& m = prog.machine();
+  std::string why;
+  std::optional<HeidenhainG31> w = words_for(plan, m, why);
+  if (!w) {
+    return unfit_error(plan, ctx, m, "G31", why);
+  }
+  const double dm = m.diameter_output ? 2 : 1;
+  // To the clear line above the thread start, then the cycle with its contour.
+  if (plan.feed_approach)
+    prog.linear(lp(clear_start(plan)));
+  else
+    prog.rapid(lp(clear_start(plan)));
+  TemplateFill<tmpl::kHeidenhainG31> a;
+  a.text<"f">(prog.num("F", w->f));
+  a.text<"u">(prog.num("U", w->u));
+  a.text<"ic">(fmt::format("{}", w->ic));
+  a.text<"v">(fmt::format("{}", w->v));
+  a.text<"h">(fmt::format("{}", w->h));
+  a.text<"a">(prog.num("A", w->a));
+  a.text<"d">(fmt::format("{}", w->d));
+  a.text<"q">(fmt::format("{}", w->q));
+  a.text<"c">(prog.num("C", w->c));
+  a.text<"bd">(fmt::format("{}", w->bd));
+  a.text<"b">(prog.num("B", w->b));
+  a.text<"p">(prog.num("P", w->p));
+  a.text<"k">(prog.num("K", w->k));
+  a.text<"x1">(prog.num("X", dm * w->from.x));
+  a.text<"z1">(prog.num("Z", w->from.z));
+  a.text<"x2">(prog.num("X", dm * w->to.x));
+  a.text<"z2">(prog.num("Z", w->to.z));
+  if (TemplateWrite r = prog.write_template(a); !r) return template_failed(plan, ctx, m, r);
+  // Where the cycle leaves the tool is not documented: take it as unknown and go to the
+  // thread's end position with both axes written.
+  prog.cycle_ended_at(lp(clear_start(plan)));
+  prog.rapid(lp(plan.end_position));
+  return true;
+}
+
+}  // namespace clpost

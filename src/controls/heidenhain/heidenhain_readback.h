@@ -1,0 +1,12 @@
+#pragma once
+// HEIDENHAIN DIN's G31 read back (simulator/): G31, its contour blocks and G80, expanded with its
+// law (heidenhain_law.h). True when the block belonged to the cycle (handled, errors reported).
+#include "nc_reader/nc_block.h"
+
+namespace clpost::sim {
+
+struct State;
+
+bool heidenhain_g31(State& s, const NcBlock& b);
+
+}  // namespace clpost::sim

@@ -1,0 +1,12 @@
+#pragma once
+// LinuxCNC's G76 read back (simulator/), expanded with its law (linuxcnc_law.h). True when the
+// block was the cycle (handled, errors reported).
+#include "nc_reader/nc_block.h"
+
+namespace clpost::sim {
+
+struct State;
+
+bool linuxcnc_g76(State& s, const NcBlock& b);
+
+}  // namespace clpost::sim

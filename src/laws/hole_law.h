@@ -1,0 +1,47 @@
+#pragma once
+// A hole on the spindle axis as the controls' drilling cycles define it: where each feed into the
+// hole ends (the pecks measured from the R plane, as a G83 does). The emitters write holes by it
+// (emitters/hole_output.h) and the simulator expands a hole cycle's words with it.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "writer/nc_program.h"
+
+namespace clpost {
+
+enum class HoleKind : uint8_t { kDrill, kDeep, kChipBreak, kTap, kBore, kReam };
+
+// "drilling", "peck drilling", …
+std::string_view hole_kind_name(HoleKind k);
+
+// A hole in the lathe frame, output units. The tool drills from `top` toward `top + dir·depth`.
+struct Hole {
+  HoleKind kind = HoleKind::kDrill;
+  std::string name;                 // "hole at CL line 12", for comments and diagnostics
+  uint32_t cl_line = 0;             // the hole's GOTO
+  double start = 0;                 // Z of the tool before the hole (the cycle's initial level)
+  double top = 0;                   // Z of the hole's top (the CL hole point)
+  double r = 0;                     // Z of the R plane (top plus the clearance)
+  double bottom = 0;                // Z of the hole's bottom
+  double retract = 0;               // Z the tool leaves the hole to
+  double dir = -1;                  // -1: drilling toward -Z
+  double first_peck = 0, peck = 0;  // 0: no pecks; measured from the R plane
+  double dwell = 0;                 // seconds at the bottom
+  double feed = 0;                  // a tap: its lead per revolution
+  FeedMode feed_mode = FeedMode::kPerMinute;
+  double lead = 0;  // taps
+  double rpm = 0;   // taps and dwells (0: unknown)
+  SpindleDir spindle = SpindleDir::kCw;
+};
+
+// The most pecks of one hole (a peck of 1e-6 into a deep hole is refused, not written).
+inline constexpr size_t kMaxHolePecks = 1000;
+
+// Where each feed into the hole ends (Z, in order; the last is the bottom): the pecks from the R
+// plane, first_peck then peck; one feed without pecks.
+std::vector<double> hole_feed_ends(const Hole& h);
+
+}  // namespace clpost
