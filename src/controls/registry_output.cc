@@ -6,6 +6,7 @@
 #include "controls/linuxcnc/linuxcnc_emitter.h"
 #include "controls/sinumerik/cycle98_emitter.h"
 #include "controls/sinumerik/cycle99_emitter.h"
+#include "controls/sinumerik/sinumerik_templates.h"
 #include "emitters/emitter.h"
 #include "emitters/emulation_emitter.h"
 

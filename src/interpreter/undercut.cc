@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "controls/sinumerik/sinumerik_templates.h"
 #include "interpreter/statement_table.h"
 #include "planner/number_text.h"
 

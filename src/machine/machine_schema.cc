@@ -6,6 +6,7 @@
 #include <array>
 #include <type_traits>
 
+#include "controls/registry_templates.h"
 #include "support/json_text.h"
 
 namespace clpost {
@@ -263,23 +264,27 @@ const NameSpec kFormats[] = {
     {"hole_peck", "peck depth of the hole templates (Fanuc Q: 0.001 mm, decimals 0, scale 1000)"},
 };
 
-const TemplateSpec* const kTemplates[] = {
-    &tmpl::kProgramStart,  &tmpl::kProgramEnd,
-    &tmpl::kToolChange,    &tmpl::kSpindleRpm,
-    &tmpl::kSpindleCss,    &tmpl::kSpindleStop,
-    &tmpl::kDwell,         &tmpl::kCycle99,
-    &tmpl::kCycle98,       &tmpl::kCycle96,
-    &tmpl::kFanucG76,      &tmpl::kHaasG76,
-    &tmpl::kG92,           &tmpl::kG92Next,
-    &tmpl::kLinuxcncG76,   &tmpl::kLinuxcncG76Taper,
-    &tmpl::kHeidenhainG31, &tmpl::kHoleDrill,
-    &tmpl::kHoleDwell,     &tmpl::kHolePeck,
-    &tmpl::kHoleChipBreak, &tmpl::kHoleTap,
-    &tmpl::kHoleTapRigid,  &tmpl::kHoleBore,
-    &tmpl::kHome,          &tmpl::kToolChangePosition,
-    &tmpl::kAuxfun,        &tmpl::kPrefun,
-    &tmpl::kSelctl,        &tmpl::kProgramHeader,
-};
+// Every template: the program's own, the controls' (the registry's), then the holes' and the
+// CL words'.
+constexpr const TemplateSpec* kCommonTemplates[] = {
+    &tmpl::kProgramStart, &tmpl::kProgramEnd,  &tmpl::kToolChange, &tmpl::kSpindleRpm,
+    &tmpl::kSpindleCss,   &tmpl::kSpindleStop, &tmpl::kDwell};
+constexpr const TemplateSpec* kLaterTemplates[] = {
+    &tmpl::kHoleDrill,     &tmpl::kHoleDwell, &tmpl::kHolePeck,
+    &tmpl::kHoleChipBreak, &tmpl::kHoleTap,   &tmpl::kHoleTapRigid,
+    &tmpl::kHoleBore,      &tmpl::kHome,      &tmpl::kToolChangePosition,
+    &tmpl::kAuxfun,        &tmpl::kPrefun,    &tmpl::kSelctl,
+    &tmpl::kProgramHeader};
+constexpr auto kTemplates = [] {
+  std::array<const TemplateSpec*, std::size(kCommonTemplates) + std::size(tmpl::kControlTemplates) +
+                                      std::size(kLaterTemplates)>
+      all{};
+  size_t n = 0;
+  for (const TemplateSpec* t : kCommonTemplates) all[n++] = t;
+  for (const TemplateSpec* t : tmpl::kControlTemplates) all[n++] = t;
+  for (const TemplateSpec* t : kLaterTemplates) all[n++] = t;
+  return all;
+}();
 
 template <typename T, typename N>
 const T* find_by(std::span<const T> list, std::string_view name, N T::*field) {

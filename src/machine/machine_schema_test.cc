@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "controls/fanuc/fanuc_templates.h"
 #include "machine/machine_loader.h"
 #include "machine/schema_markdown.h"
 

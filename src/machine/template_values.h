@@ -3,8 +3,8 @@
 // formatting of a template line with them. The loader formats every line with stand-in values
 // when it loads (so a line fmt cannot format is caught there); NcProgram with the real ones.
 //
-//   TemplateFill<tmpl::kFanucG76> a;
-//   a.text<"lead">(prog.num("F", lead));  // a name fanuc_g76 does not declare does not compile
+//   TemplateFill<tmpl::kProgramStart> a;
+//   a.text<"program_name">(name);  // a name program_start does not declare does not compile
 #include <cstddef>
 #include <string>
 #include <string_view>

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "controls/fanuc/fanuc_templates.h"
 #include "planner/vec2_math.h"
 #include "writer/number_format.h"
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "controls/fanuc/fanuc_emitter.h"
+#include "controls/haas/haas_templates.h"
 #include "writer/number_format.h"
 
 namespace clpost {

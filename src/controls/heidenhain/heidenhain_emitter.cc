@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "controls/heidenhain/heidenhain_templates.h"
 #include "laws/written_value.h"
 #include "planner/vec2_math.h"
 #include "writer/number_format.h"

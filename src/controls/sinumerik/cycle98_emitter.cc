@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "controls/sinumerik/cycle99_emitter.h"
+#include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
 #include "planner/number_text.h"
 #include "planner/vec2_math.h"
@@ -33,7 +34,8 @@ std::string cycle98_shape(const ThreadPlan& plan, const Machine& m) {
   if (plan.points.size() > 4)
     return fmt::format("{} segments: CYCLE98 cuts at most 3", plan.points.size() - 1);
   if (plan.option == 0)
-    return "OPTION 0, steps shrinking by a constant amount: CYCLE98 cuts constant infeed (VARI 1, "
+    return "OPTION 0, steps shrinking by a constant amount: CYCLE98 cuts constant infeed (VARI "
+           "1, "
            "2) or constant cross-section (VARI 3, 4)";
   if (plan.option == 2 || plan.option == 4)
     return fmt::format("OPTION {} alternates the flanks: CYCLE98 infeeds along one flank (IANG)",

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
 #include "planner/number_text.h"
 #include "planner/vec2_math.h"
@@ -73,7 +74,8 @@ std::string frame_words(const ThreadPlan& plan, const Machine& m, Cycle99Frame& 
     w.psys = 10;
     f.a_in = {0, -1};
     if (f.n.z >= 0)
-      return "CYCLE99 cuts a face thread toward -Z (unverified); this one's infeed goes toward +Z";
+      return "CYCLE99 cuts a face thread toward -Z (unverified); this one's infeed goes toward "
+             "+Z";
   } else {
     if (!plan.lead_along_z)
       return fmt::format(

@@ -6,6 +6,7 @@
 
 #include "controls/sinumerik/cycle98_law.h"
 #include "controls/sinumerik/cycle99_law.h"
+#include "controls/sinumerik/sinumerik_templates.h"
 #include "simulator/cycle_words.h"
 #include "simulator/sim_state.h"
 
