@@ -1,6 +1,7 @@
 #pragma once
-// One interface for every threading output style: plain G1/G33 emulation, G33 / G92 loops, and
-// the controls' cycles (CYCLE99, G76, G31 …). The machine file picks the implementation
+// The threading outputs: plain G1/G33 emulation, G33 / G92 loops, and the controls' cycles
+// (each control's folder, src/controls/), on the one "exact or fall back" interface
+// (cycle_output.h). The machine file picks the implementation
 // (threading.strategy / cycle / loop / fallback); make_emitter() wires the choice with its
 // fallback (thread_output.cc).
 #include <memory>
@@ -8,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "emitters/cycle_output.h"
 #include "machine/machine.h"
 #include "planner/planner.h"
 #include "planner/thread_plan.h"
@@ -25,35 +27,11 @@ inline LathePoint lp(Vec2 v) {
   return LathePoint{v.x, v.z};
 }
 
-struct EmitContext {
-  Diagnostics& diags;
-  const SavedLines& lines;  // the thread's CL statement, for diagnostics
-  double rpm = 0;           // spindle speed during the thread
-  double feed = 0;          // feed in force (for linear pull-outs), output units
-  FeedMode feed_mode = FeedMode::kPerMinute;
-};
-
-// Whether an output style cuts exactly a plan. The rule (controllers.md, "exact or fall
-// back"): a cycle is written only when the passes the control will cut from the words we would
-// write — its own law, its rounding — equal the plan's passes.
-struct Fit {
-  std::string mismatch;            // empty: exact; else why not, one line with the numbers
-  std::vector<std::string> notes;  // accepted differences, written as NC comments before it
-  bool exact() const { return mismatch.empty(); }
-};
-
-class Emitter {
- public:
-  virtual ~Emitter() = default;
-  // What the NC comments and diagnostics call it: "CYCLE99", "G76", "G33 loop", ...
-  virtual std::string_view name() const = 0;
-  // Would this output cut `plan` exactly on machine `m`? Cycle emitters expand the words they
-  // would write with the control's law and compare (cut_pass.h). Loops and emulation cut every
-  // planned pass as written, so they fit unless the plan needs something they cannot say.
-  virtual Fit fit(const ThreadPlan& plan, const Machine& m) const = 0;
-  // Writes a multi-pass thread that fits. Returns false (with a diagnostic) when it cannot.
-  virtual bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) = 0;
-};
+// The thread outputs: CycleOutput<ThreadPlan> (cycle_output.h). Cycle emitters expand the
+// words they would write with the control's law and compare (laws/cut_pass.h); loops and
+// emulation cut every planned pass as written, so they fit unless the plan needs something they
+// cannot say.
+using Emitter = CycleOutput<ThreadPlan>;
 
 // For emit() handed a plan that does not fit (make_emitter's chain asks fit() first, so this is a
 // defence): the error "machine 'm': <emitter> cannot cut this thread: <why>" at the thread's

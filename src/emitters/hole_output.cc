@@ -132,23 +132,63 @@ TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
   return dwell;
 }
 
-TemplateWrite write_hole(NcProgram& prog, const Hole& h) {
+namespace {
+
+bool template_written(const TemplateWrite& r, const Machine& m, const EmitContext& ctx) {
+  if (!r) ctx.diags.error(ctx.loc, ctx.lines.text(ctx.loc.line), template_error(m, r));
+  return static_cast<bool>(r);
+}
+
+// The machine's canned cycle for the hole, through its hole_* template.
+class HoleCycleOutput : public CycleOutput<Hole> {
+ public:
+  explicit HoleCycleOutput(const TemplateSpec& t) : t_(t) {}
+  std::string_view name() const override { return t_.name; }
+  Fit fit(const Hole& h, const Machine& m) const override {
+    Fit f;
+    f.mismatch = hole_misfit(m, h);
+    return f;
+  }
+  bool emit(const Hole& h, NcProgram& prog, const EmitContext& ctx) override {
+    if (!prog.position() || std::fabs(prog.position()->r) > 1e-12 ||
+        std::fabs(prog.position()->z - h.start) > 1e-12)
+      prog.rapid({0, h.start});
+    if (!template_written(write_cycle(prog, h, t_), prog.machine(), ctx)) return false;
+    prog.cycle_ended_at({0, h.start});
+    if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid({0, h.retract});
+    return true;
+  }
+
+ private:
+  const TemplateSpec& t_;
+};
+
+// The hole as G0/G1/G4 moves (expand_hole): any hole, any machine.
+class HoleMovesOutput : public CycleOutput<Hole> {
+ public:
+  std::string_view name() const override { return "moves"; }
+  Fit fit(const Hole&, const Machine&) const override { return {}; }
+  bool emit(const Hole& h, NcProgram& prog, const EmitContext& ctx) override {
+    return template_written(expand_hole(prog, h), prog.machine(), ctx);
+  }
+};
+
+}  // namespace
+
+bool write_hole(NcProgram& prog, const Hole& h, const EmitContext& ctx) {
   const Machine& m = prog.machine();
   const TemplateSpec& t = hole_template(m, h);
   prog.comment(
       fmt::format("{}: {} to Z{}", h.name, hole_kind_name(h.kind), prog.num("Z", h.bottom)));
-  if (const std::string why = hole_misfit(m, h); !why.empty()) {
-    if (m.templates.count(std::string(t.name)) > 0)
-      prog.comment(fmt::format("{} not used: {}. moves instead", t.name, why));
-    return expand_hole(prog, h);
-  }
-  if (!prog.position() || std::fabs(prog.position()->r) > 1e-12 ||
-      std::fabs(prog.position()->z - h.start) > 1e-12)
-    prog.rapid({0, h.start});
-  if (TemplateWrite r = write_cycle(prog, h, t); !r) return r;
-  prog.cycle_ended_at({0, h.start});
-  if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid({0, h.retract});
-  return {};
+  HoleCycleOutput cycle(t);
+  HoleMovesOutput moves;
+  std::vector<CycleOutput<Hole>*> order;
+  if (m.templates.count(std::string(t.name)) > 0) order.push_back(&cycle);
+  order.push_back(&moves);
+  Fit fit;
+  std::vector<Unfit> unfit;
+  CycleOutput<Hole>* used = first_exact<Hole>(order, h, m, false, fit, unfit);
+  return emit_after_fallback(*used, fit, unfit, h, prog, ctx);
 }
 
 }  // namespace clpost

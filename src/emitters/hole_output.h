@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "emitters/cycle_output.h"
 #include "laws/hole_law.h"
 #include "writer/nc_program.h"
 
@@ -21,9 +22,10 @@ const TemplateSpec& hole_template(const Machine& m, const Hole& h);
 // peck word, dwell or retract say what the CL says).
 std::string hole_misfit(const Machine& m, const Hole& h);
 
-// Writes `h`: the template when it fits, else moves (with a comment saying why). A template that
-// cannot be written is returned (an error at the hole's CL line); the moves always are.
-[[nodiscard]] TemplateWrite write_hole(NcProgram& prog, const Hole& h);
+// Writes `h` with the first of its outputs that fits: the machine's cycle (its hole_* template),
+// else moves, a comment saying why. False, with an error at ctx.loc, when a template cannot be
+// written.
+bool write_hole(NcProgram& prog, const Hole& h, const EmitContext& ctx);
 
 // The hole as G0/G1/G4 moves, pecks expanded (a tap: G1 at its lead per revolution in, the
 // spindle reversed, G1 out). Returns the dwell's write (kWritten when there is none).

@@ -18,6 +18,25 @@ PlannerSettings planner_settings(const Machine& m) {
   return s;
 }
 
+std::string fallback_comment(const Unfit& first, std::string_view used) {
+  return fmt::format("{} not used: {}. {} instead", first.name, first.reason, used);
+}
+
+std::string unfit_reasons(const std::vector<Unfit>& unfit) {
+  std::vector<std::pair<std::string, std::string>> merged;  // names, reason
+  for (const Unfit& u : unfit) {
+    if (!merged.empty() && merged.back().second == u.reason) {
+      merged.back().first += fmt::format(", {}", u.name);
+    } else {
+      merged.emplace_back(u.name, u.reason);
+    }
+  }
+  std::string all;
+  for (const auto& [names, reason] : merged)
+    all += fmt::format("{}{} not used: {}", all.empty() ? "" : "; ", names, reason);
+  return all;
+}
+
 bool unfit_error(const ThreadPlan& plan, const EmitContext& ctx, const Machine& m,
                  std::string_view emitter, std::string_view why) {
   ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
@@ -49,46 +68,29 @@ class ThreadOutput : public Emitter {
 
   Fit fit(const ThreadPlan& plan, const Machine& m) const override {
     const std::vector<Emitter*> order = order_for(plan);
-    for (Emitter* e : order) {
-      Fit f = e->fit(plan, m);
-      if (f.exact() || error_fallback_) return f;
-    }
+    Fit f;
+    std::vector<Unfit> unfit;
+    if (first_exact<ThreadPlan>(order, plan, m, error_fallback_, f, unfit) || error_fallback_)
+      return f;
     return order.back()->fit(plan, m);
   }
 
   bool emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) override {
-    std::string why;                                         // the first emitter's reason
-    std::vector<std::pair<std::string, std::string>> unfit;  // every one's: names, reason
     const std::vector<Emitter*> order = order_for(plan);
-    for (size_t i = 0; i < order.size(); ++i) {
-      Emitter& e = *order[i];
-      Fit f = e.fit(plan, m_);
-      if (!f.exact()) {
-        if (error_fallback_) {
-          ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
-                          fmt::format("machine '{}': {} would not cut the planned passes: {} "
-                                      "(threading.fallback is 'error')",
-                                      m_.name, e.name(), f.mismatch));
-          return false;
-        }
-        if (why.empty()) why = fmt::format("{} not used: {}", e.name(), f.mismatch);
-        if (!unfit.empty() && unfit.back().second == f.mismatch) {
-          unfit.back().first += fmt::format(", {}", e.name());
-        } else {
-          unfit.emplace_back(std::string(e.name()), f.mismatch);
-        }
-        continue;
-      }
-      if (!why.empty()) prog.comment(fmt::format("{}. {} instead", why, e.name()));
-      for (const std::string& n : f.notes) prog.comment(n);
-      return e.emit(plan, prog, ctx);
+    Fit f;
+    std::vector<Unfit> unfit;
+    if (Emitter* e = first_exact<ThreadPlan>(order, plan, m_, error_fallback_, f, unfit))
+      return emit_after_fallback(*e, f, unfit, plan, prog, ctx);
+    if (error_fallback_) {
+      ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
+                      fmt::format("machine '{}': {} would not cut the planned passes: {} "
+                                  "(threading.fallback is 'error')",
+                                  m_.name, unfit.back().name, unfit.back().reason));
+      return false;
     }
-    std::string all;
-    for (const auto& [names, reason] : unfit)
-      all += fmt::format("{}{} not used: {}", all.empty() ? "" : "; ", names, reason);
-    ctx.diags.error(
-        plan.loc, ctx.lines.text(plan.loc.line),
-        fmt::format("machine '{}': no threading output can cut this thread: {}", m_.name, all));
+    ctx.diags.error(plan.loc, ctx.lines.text(plan.loc.line),
+                    fmt::format("machine '{}': no threading output can cut this thread: {}",
+                                m_.name, unfit_reasons(unfit)));
     return false;
   }
 

@@ -109,9 +109,10 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   if (!make_hole(s, st, p, h)) return;
   ensure_started(s);
   ++s.stats.motions;
-  const TemplateWrite r = write_hole(s.prog, h);
+  const SavedLines lines = SavedLines::of(st);
+  const bool r =
+      write_hole(s.prog, h, EmitContext{.diags = s.diags, .lines = lines, .loc = st.loc});
   time_hole(s, h);
-  if (!r) error(s, st, st.loc, template_error(s.m, r));
   if (s.feed_given) s.prog.set_feed(s.feed, s.feed_mode);
   s.pos = cl_point(s, Vec2{0, h.retract});
   // The hole leaves the tool at its retract plane: a rapid there, as verify sees it.

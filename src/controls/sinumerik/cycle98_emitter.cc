@@ -142,7 +142,7 @@ Cycle98Call cycle98_call(const ThreadPlan& plan, const Machine& m) {
 }
 
 Fit Cycle98Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
-  return Fit{cycle98_call(plan, m).mismatch, {}};
+  return Fit{cycle98_call(plan, m).mismatch, {}, {}};
 }
 
 bool Cycle98Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext& ctx) {

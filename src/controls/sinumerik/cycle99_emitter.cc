@@ -280,7 +280,7 @@ Cycle99Call cycle99_call(const ThreadPlan& plan, const Machine& m) {
 
 Fit Cycle99Emitter::fit(const ThreadPlan& plan, const Machine& m) const {
   Cycle99Call c = cycle99_call(plan, m);
-  return Fit{c.mismatch, c.notes};
+  return Fit{c.mismatch, c.notes, {}};
 }
 
 LathePoint go_to_cycle_start(const ThreadPlan& plan, NcProgram& prog) {
