@@ -4,11 +4,13 @@
 #include "controls/haas/haas_emitter.h"
 #include "controls/heidenhain/heidenhain_emitter.h"
 #include "controls/linuxcnc/linuxcnc_emitter.h"
+#include "controls/sinumerik/cycle96_emitter.h"
 #include "controls/sinumerik/cycle98_emitter.h"
 #include "controls/sinumerik/cycle99_emitter.h"
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "emitters/emitter.h"
 #include "emitters/emulation_emitter.h"
+#include "emitters/undercut_output.h"
 
 namespace clpost {
 
@@ -43,6 +45,12 @@ std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l) {
 std::unique_ptr<Emitter> make_chain_emitter(const Machine& m) {
   if (m.templates.count(std::string(tmpl::kCycle98.name)))
     return std::make_unique<Cycle98Emitter>();
+  return nullptr;
+}
+
+std::unique_ptr<CycleOutput<Undercut>> make_undercut_cycle(const Machine& m) {
+  if (m.templates.count(std::string(tmpl::kCycle96.name)))
+    return std::make_unique<Cycle96Emitter>();
   return nullptr;
 }
 

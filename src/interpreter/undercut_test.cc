@@ -1,6 +1,6 @@
 // CYCLE/UNDCUT: CYCLE96 on sinumerik-840d with the control's checks, the DIN 76-1 contour on a
 // machine without CYCLE96, and the rows clpost does not carry.
-#include "interpreter/undercut.h"
+#include "laws/din76_undercut.h"
 
 #include <gtest/gtest.h>
 
@@ -197,13 +197,13 @@ TEST(Undercut, ShortFormsAreRefusedWithoutCycle96) {
   EXPECT_EQ(error_of(m, cl_with("CYCLE/UNDCUT,DIAM,20,AT,-30,FORM,B")),
             "t.cl:6:34: error: CYCLE/UNDCUT: no DIN 76-1 row for form B (external, short), pitch "
             "2.5 (M20) in clpost's table: only the normal forms A and C are carried (cited in "
-            "src/interpreter/undercut.cc); use FORM,A or a machine with CYCLE96\n"
+            "src/laws/din76_undercut.cc); use FORM,A or a machine with CYCLE96\n"
             "  CYCLE/UNDCUT,DIAM,20,AT,-30,FORM,B\n"
             "                                   ^\n");
   EXPECT_EQ(error_of(m, cl_with("CYCLE/UNDCUT,DIAM,20,AT,-30,FORM,D")),
             "t.cl:6:34: error: CYCLE/UNDCUT: no DIN 76-1 row for form D (internal, short), pitch "
             "2.5 (M20) in clpost's table: only the normal forms A and C are carried (cited in "
-            "src/interpreter/undercut.cc); use FORM,C or a machine with CYCLE96\n"
+            "src/laws/din76_undercut.cc); use FORM,C or a machine with CYCLE96\n"
             "  CYCLE/UNDCUT,DIAM,20,AT,-30,FORM,D\n"
             "                                   ^\n");
   EXPECT_EQ(error_of(m, cl_with("CYCLE/UNDCUT,DIAM,20,AT,5,FORM,A")),

@@ -1,9 +1,8 @@
 #pragma once
-// Thread undercuts: CL `CYCLE/UNDCUT,DIAM,d,AT,z,FORM,A|B|C|D`. On a machine with a `cycle96`
-// template (SINUMERIK) it becomes one CYCLE96(DIATH, AXSA, FORM) call with the checks the
-// control makes (seed 001_…); elsewhere the DIN 76-1 undercut is cut as a contour from the table
-// below, or refused where the table has no row. The statement handler is undercut_stmt
-// (statement_table.h, undercut.cc).
+// DIN 76-1 thread undercuts for ISO metric coarse threads M3 ... M68: the table (diameter step,
+// width, radius per pitch, forms A and C) and the undercut's contour. What a control's undercut
+// cycle cuts (SINUMERIK CYCLE96, controls/sinumerik/) and what clpost cuts as moves where the
+// machine has none (emitters/undercut_output.h).
 #include <optional>
 #include <vector>
 
@@ -44,5 +43,10 @@ UndercutContour din76_contour(double d, double at, char form, int side, const Di
 
 // Safety clearance of the contour's start and end beyond the thread diameter, mm.
 constexpr double kUndercutClearance = 1.0;
+
+// Forms C and D are internal (a bore), A and B external.
+bool internal_form(char form);
+// "A (external, normal)", ...
+const char* form_name(char form);
 
 }  // namespace clpost
