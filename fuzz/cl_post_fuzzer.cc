@@ -1,14 +1,13 @@
 // libFuzzer target: arbitrary bytes as a CL file, through the reader, the interpreter, the
-// thread planner, the emitters and the NC writer, on generic-lathe (read from memory) or
-// linuxcnc-lathe (read through a FILE*, so both LineSource paths are covered): the first byte's
-// second bit picks one, so each input costs one post (twice the inputs per second of posting
-// both).
+// thread planner, the emitters and the NC writer, on one of the shipped machines (picked by the
+// first byte's high bits), read from memory or through a FILE* (the first byte's second bit), so
+// both LineSource paths are covered: each input costs one post.
 //
 // With CLPOST_FUZZ_ROUND_TRIP=1 in the environment (scripts/fuzz.sh --round-trip), the first
-// byte's third bit asks for the round trip instead: the file posted on one of the
-// shipped machines (picked by the byte's high bits) and, when it posts without an error, its
-// program read back through the control simulation and verified against the CL — its threads,
-// holes, motions, arcs, tool, feed and spindle. A program clpost wrote without an error that does
+// byte's third bit asks for the round trip instead: the file posted on the machine the byte's
+// high bits pick and, when it posts without an error, its program read back through the control
+// simulation and verified against the CL — its threads, holes, motions, arcs, tool, feed and
+// spindle. A program clpost wrote without an error that does
 // not verify is a bug in one or the other: the run stops on it, with both sides' words. (A file
 // that passes the user's own words to the program, INSERT, AUXFUN or PREFUN, is not verified:
 // those words may stop the spindle or change the feed mode, as the user meant.)
@@ -24,13 +23,8 @@
 
 namespace {
 
-const clpost::Machine* g_generic = nullptr;
-const clpost::Machine* g_linuxcnc = nullptr;
-std::vector<clpost::Machine>* g_all = nullptr;  // the round trip's machines, when asked for
-
-constexpr const char* kMachines[] = {"generic-lathe", "linuxcnc-lathe", "sinumerik-840d",
-                                     "fanuc-0i-t",    "haas-st",        "heidenhain-pilot",
-                                     "nct-2000t"};
+std::vector<clpost::Machine>* g_machines = nullptr;  // every shipped machine
+bool g_round_trip = false;                           // CLPOST_FUZZ_ROUND_TRIP=1
 
 // The words whose text clpost passes to the program as the user wrote it (INSERT, AUXFUN's M
 // code, PREFUN's G code): what they do to the control is the user's, not the post's to know.
@@ -71,13 +65,9 @@ void round_trip(std::string_view text, const clpost::Machine& m, bool strict) {
 // The machines are loaded once, before the first input (a machine that does not load stops the
 // run here, not in the middle of it).
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  g_generic = new clpost::Machine(clpost::fuzz::shipped_machine("generic-lathe"));
-  g_linuxcnc = new clpost::Machine(clpost::fuzz::shipped_machine("linuxcnc-lathe"));
+  g_machines = new std::vector<clpost::Machine>(clpost::fuzz::shipped_machines());
   const char* round_trip = std::getenv("CLPOST_FUZZ_ROUND_TRIP");
-  if (round_trip != nullptr && std::string_view(round_trip) == "1") {
-    g_all = new std::vector<clpost::Machine>();
-    for (const char* name : kMachines) g_all->push_back(clpost::fuzz::shipped_machine(name));
-  }
+  g_round_trip = round_trip != nullptr && std::string_view(round_trip) == "1";
   return 0;
 }
 
@@ -87,18 +77,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // The first byte's low bit picks --strict (the text still starts at byte 0).
   PostOptions opts;
   opts.strict = size > 0 && (data[0] & 1) != 0;
-  if (g_all != nullptr && size > 0 && (data[0] & 4) != 0) {
-    round_trip(text, (*g_all)[(data[0] >> 3) % g_all->size()], opts.strict);
+  const Machine& m = (*g_machines)[size > 0 ? (data[0] >> 3) % g_machines->size() : 0];
+  if (g_round_trip && size > 0 && (data[0] & 4) != 0) {
+    round_trip(text, m, opts.strict);
   } else if (size == 0 || (data[0] & 2) == 0) {
     Diagnostics diags("fuzz.cl");
     ClReader reader(text, diags);
-    fuzz::post(reader, diags, *g_generic, opts);
+    fuzz::post(reader, diags, m, opts);
   } else {
     std::FILE* f = fmemopen(const_cast<uint8_t*>(data), size, "rb");
     if (f != nullptr) {
       Diagnostics diags("fuzz.cl");
       ClReader reader(f, diags);
-      fuzz::post(reader, diags, *g_linuxcnc, opts);
+      fuzz::post(reader, diags, m, opts);
       std::fclose(f);
     }
   }

@@ -2,6 +2,7 @@
 // What the fuzz targets share: posting CL text on a machine through post() (interpreter/post.h),
 // as `clpost` does, into memory.
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "interpreter/post.h"
 #include "machine/machine.h"
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 #include "planner/plan_format.h"
 #include "reader/cl_reader.h"
 #include "support/diagnostics.h"
@@ -26,6 +28,19 @@ inline Machine shipped_machine(const char* name) {
     std::abort();
   }
   return m;
+}
+
+// Every shipped machine, sorted by name (the listing `clpost machines` uses), loaded; aborts when
+// there is none or one does not load. A target's input picks one by index into it.
+inline std::vector<Machine> shipped_machines() {
+  std::vector<Machine> out;
+  for (const std::string& name : testing::shipped_machine_names())
+    out.push_back(shipped_machine(name.c_str()));
+  if (out.empty()) {
+    std::fprintf(stderr, "fuzz: no shipped machines in %s/machines\n", CLPOST_SOURCE_DIR);
+    std::abort();
+  }
+  return out;
 }
 
 // Reads CL from `reader` and posts it on `m` through post(): the NC program, the rendered

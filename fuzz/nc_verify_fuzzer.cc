@@ -14,9 +14,6 @@
 
 namespace {
 
-constexpr const char* kMachines[] = {"generic-lathe", "linuxcnc-lathe", "sinumerik-840d",
-                                     "fanuc-0i-t",    "haas-st",        "heidenhain-pilot",
-                                     "nct-2000t"};
 constexpr const char* kPlan =
     "UNITS/MM\nLOADTL/1\nSPINDL/600,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/10,0,5\n"
     "THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/8,0,2\nGOTO/8,0,-20\nTHREAD/OFF\n"
@@ -33,9 +30,9 @@ std::vector<std::unique_ptr<Target>>* g_targets = nullptr;
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   g_targets = new std::vector<std::unique_ptr<Target>>();
-  for (const char* name : kMachines) {
+  for (clpost::Machine& m : clpost::fuzz::shipped_machines()) {
     auto t = std::make_unique<Target>();
-    t->machine = clpost::fuzz::shipped_machine(name);
+    t->machine = std::move(m);
     clpost::PostOptions opts;
     opts.keep_motions = true;
     clpost::PostedText posted = clpost::post_text(kPlan, t->machine, "plan.cl", opts);
@@ -49,7 +46,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace clpost;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  // The first byte picks the machine (the text still starts at byte 0).
+  // The first byte picks the shipped machine (the text still starts at byte 0).
   const Target& t = *(*g_targets)[size > 0 ? data[0] % g_targets->size() : 0];
   Diagnostics diags("fuzz.nc");
   reader::LineSource src(text);

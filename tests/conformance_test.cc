@@ -47,9 +47,11 @@ struct Case {
   bool linear_pullout = false;  // at 20 or 90 deg to the thread: fed with G1, not threaded
 };
 
-const char* const kMachines[] = {"fanuc-0i-t",       "generic-lathe",  "haas-st",
-                                 "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t",
-                                 "sinumerik-840d"};
+// The matrix's machines: every shipped one.
+const std::vector<std::string>& machines() {
+  static const std::vector<std::string> v = shipped_machine_names();
+  return v;
+}
 
 // An M20x2.5 external thread 32 mm long (radius 10, Z2 to Z-30, the tool waiting at X15 Z5)
 // unless a case says otherwise; DEPTH 1.534 = 0.61343 x 2.5.
@@ -246,8 +248,8 @@ struct Refusal {
 
 std::vector<Refusal> refusals() {
   std::vector<Refusal> v;
-  for (const char* m : kMachines) {
-    if (std::string(m) == "sinumerik-840d") continue;  // G34: cut, and verified
+  for (const std::string& m : machines()) {
+    if (shipped_machine(m).variable_lead) continue;  // G34: cut, and verified
     v.push_back({m, "variable_lead",
                  "error: variable lead (INCR 0.01 per revolution, CL line " +
                      std::to_string(kThreadLine) + ") cannot be cut on machine '" + m +
@@ -350,8 +352,8 @@ const std::string kOk = "ok: every pass is cut as planned, within ";
 
 // ---------------------------------------------------------------------------------------------
 
-// The matrix names every shipped machine, and the cases say (and the plans confirm) what they
-// cover.
+// The matrix runs on every machine `clpost machines` lists, and the cases say (and the plans
+// confirm) what they cover.
 TEST(Conformance, MatrixCoversEveryShippedMachine) {
   RunResult r = run(quote(clpost_bin()) + " machines");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -363,8 +365,17 @@ TEST(Conformance, MatrixCoversEveryShippedMachine) {
     std::string name;
     if (l >> name) listed.insert(name);
   }
-  EXPECT_EQ(listed, std::set<std::string>(std::begin(kMachines), std::end(kMachines)))
-      << "a machine was added or removed: add it to kMachines (and its cycle edit below)";
+  ASSERT_FALSE(listed.empty()) << r.out;
+  EXPECT_EQ(listed, std::set<std::string>(machines().begin(), machines().end()))
+      << "the tests' listing of the shipped machines (shipped_machine_names) is not clpost's";
+}
+
+// A shipped machine that plans every case: one that cuts variable leads too (G34/G35).
+std::string machine_planning_every_case() {
+  for (const std::string& m : machines())
+    if (shipped_machine(m).variable_lead) return m;
+  ADD_FAILURE() << "no shipped machine declares variable-lead threading (G34/G35)";
+  return "";
 }
 
 TEST(Conformance, CasesCoverTheReference) {
@@ -373,10 +384,11 @@ TEST(Conformance, CasesCoverTheReference) {
   ASSERT_LE(cases().size(), 60u);
   std::set<std::string> names;
   std::map<std::string, int> seen;  // feature -> cases
+  const std::string planner = machine_planning_every_case();
+  ASSERT_NE(planner, "");
   for (const Case& c : cases()) {
     EXPECT_TRUE(names.insert(c.name).second) << "two cases named " << c.name;
-    // sinumerik-840d plans every case (it cuts variable leads too).
-    const std::string json = plan_json(w, c, "sinumerik-840d");
+    const std::string json = plan_json(w, c, planner);
     SCOPED_TRACE(c.name + "\n" + json);
     EXPECT_EQ(json_string(json, "units"), c.inch ? "in" : "mm");
     EXPECT_EQ(json_string(json, "form"), "multi");
@@ -652,55 +664,72 @@ TEST_P(ConformanceMatrix, DroppedPassIsReported) {
   EXPECT_NE(r.out.find("5 passes planned, 4 cut"), std::string::npos) << r.out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Machines, ConformanceMatrix,
-                         ::testing::ValuesIn(std::vector<std::string>(std::begin(kMachines),
-                                                                      std::end(kMachines))),
+INSTANTIATE_TEST_SUITE_P(Machines, ConformanceMatrix, ::testing::ValuesIn(machines()),
                          [](const ::testing::TestParamInfo<std::string>& i) {
                            std::string n = i.param;
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });
 
-// A depth word of a control's own cycle, edited in opt1_cuts (a cycle on these five machines):
-// every pass moves, and verify names each with its depth. `deeper` is how the edit moves pass
-// i's depth d (plan) to the program's: by 0.1 everywhere when the thread's bottom word moves, or
-// in proportion when the total depth word grows by 0.1 (these laws scale with it).
+// A depth word of a control's own cycle, edited in opt1_cuts (a cycle on every machine that
+// threads with its control's cycle): every pass moves, and verify names each with its depth.
+// `deeper` is how the edit moves pass i's depth d (plan) to the program's: by 0.1 everywhere when
+// the thread's bottom word moves, or in proportion when the total depth word grows by 0.1 (these
+// laws scale with it).
 struct CycleEdit {
-  std::string machine;
-  std::string cycle;  // the word that must be in the program once
-  std::regex word;    // group 1: the number to change
-  double by;          // added to it
-  bool proportional;  // false: every depth + 0.1; true: every depth x (D + 0.1) / D
+  ThreadCycle thread_cycle;  // the machine's threading.cycle
+  std::string cycle;         // the word that must be in the program once
+  std::regex word;           // group 1: the number to change
+  double by;                 // added to it
+  bool proportional;         // false: every depth + 0.1; true: every depth x (D + 0.1) / D
 };
 
 std::vector<CycleEdit> cycle_edits() {
   return {
       // Fanuc's second G76 block: X is the thread bottom (diameter); P the height stays, so the
       // crest moves with it.
-      {"fanuc-0i-t", "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
-      {"haas-st", "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
+      {ThreadCycle::kFanucG76, "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
+      {ThreadCycle::kHaasG76, "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
       // LinuxCNC: I is the crest's offset from the drive line (diameter mode).
-      {"linuxcnc-lathe", "G76 P", std::regex(R"re(G76 P[0-9.]+ Z[-0-9.]+ I(-[0-9.]+) )re"), -0.2,
-       false},
+      {ThreadCycle::kLinuxcncG76, "G76 P", std::regex(R"re(G76 P[0-9.]+ Z[-0-9.]+ I(-[0-9.]+) )re"),
+       -0.2, false},
       // CYCLE99's 7th argument TDEP; HEIDENHAIN G31 U: the thread depth.
-      {"sinumerik-840d", "CYCLE99(", std::regex(R"re(CYCLE99\((?:[^,]+, ){6}([0-9.]+), )re"), 0.1,
+      {ThreadCycle::kCycle99, "CYCLE99(", std::regex(R"re(CYCLE99\((?:[^,]+, ){6}([0-9.]+), )re"),
+       0.1, true},
+      {ThreadCycle::kHeidenhainG31, "G31 F", std::regex(R"re(G31 F[0-9.]+ U([0-9.]+) )re"), 0.1,
        true},
-      {"heidenhain-pilot", "G31 F", std::regex(R"re(G31 F[0-9.]+ U([0-9.]+) )re"), 0.1, true},
   };
 }
 
-class CycleDepthWord : public ::testing::TestWithParam<size_t> {};
+// The shipped machines that thread with their control's own cycle.
+std::vector<std::string> cycle_machines() {
+  std::vector<std::string> v;
+  for (const std::string& m : machines())
+    if (shipped_machine(m).thread_strategy == ThreadStrategy::kCycle) v.push_back(m);
+  return v;
+}
+
+class CycleDepthWord : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CycleDepthWord, EditIsReportedPassByPass) {
-  const CycleEdit e = cycle_edits()[GetParam()];
+  const std::string machine = GetParam();
+  const ThreadCycle thread_cycle = shipped_machine(machine).thread_cycle;
+  const std::vector<CycleEdit> edits = cycle_edits();
+  const auto edit = std::find_if(edits.begin(), edits.end(), [&](const CycleEdit& e) {
+    return e.thread_cycle == thread_cycle;
+  });
+  ASSERT_NE(edit, edits.end()) << "machine " << machine
+                               << " threads with a cycle that has no depth word in cycle_edits(): "
+                                  "add one";
+  const CycleEdit& e = *edit;
   Workspace w;
   const Case& c = case_named("opt1_cuts");
-  const std::string json = plan_json(w, c, e.machine);
+  const std::string json = plan_json(w, c, machine);
   const std::vector<PlanPass> passes = plan_passes(json);
   ASSERT_EQ(passes.size(), 5u);
-  RunResult post = post_verified(w, c, e.machine);
+  RunResult post = post_verified(w, c, machine);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  std::string nc = read_file(w.out(c, e.machine));
+  std::string nc = read_file(w.out(c, machine));
   ASSERT_EQ(nc.find(e.cycle), nc.rfind(e.cycle)) << nc;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(nc, m, e.word)) << nc;
@@ -710,7 +739,7 @@ TEST_P(CycleDepthWord, EditIsReportedPassByPass) {
   nc.replace(at, before.size(), after);
   const std::string edited = w.dir + "/edited.nc";
   write_file(edited, nc);
-  RunResult r = verify(e.machine, edited, w.cl(c));
+  RunResult r = verify(machine, edited, w.cl(c));
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   const double depth = json_number(json, "depth");
   std::vector<Reported> got = reported(r.out, "depth");
@@ -729,10 +758,9 @@ TEST_P(CycleDepthWord, EditIsReportedPassByPass) {
   EXPECT_NE(r.err.find("pass 5: depth "), std::string::npos) << r.err;
 }
 
-INSTANTIATE_TEST_SUITE_P(Machines, CycleDepthWord,
-                         ::testing::Range<size_t>(0, cycle_edits().size()),
-                         [](const ::testing::TestParamInfo<size_t>& i) {
-                           std::string n = cycle_edits()[i.param].machine;
+INSTANTIATE_TEST_SUITE_P(Machines, CycleDepthWord, ::testing::ValuesIn(cycle_machines()),
+                         [](const ::testing::TestParamInfo<std::string>& i) {
+                           std::string n = i.param;
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });

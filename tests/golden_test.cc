@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <set>
-#include <sstream>
 
 #include "test_util.h"
 
@@ -20,19 +19,11 @@ struct ShippedMachine {
   std::string name, ext;
 };
 
-// From `clpost machines`: name, extension, ...
+// Every shipped machine with its output extension.
 std::vector<ShippedMachine> shipped_machines() {
-  RunResult r = run(quote(clpost_bin()) + " machines");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
   std::vector<ShippedMachine> out;
-  std::istringstream in(r.out);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream l(line);
-    ShippedMachine m;
-    l >> m.name >> m.ext;
-    if (!m.name.empty()) out.push_back(m);
-  }
+  for (const std::string& name : shipped_machine_names())
+    out.push_back({name, shipped_machine(name).extension});
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "test_util.h"
@@ -11,16 +12,22 @@
 namespace clpost::test {
 namespace {
 
+namespace fs = std::filesystem;
+
 const std::string kPart = "samples/part-turned.apt";
 
 struct Golden {
-  std::string machine, file;
+  std::string machine, file;  // file: under samples/golden/<machine>/
 };
-const Golden kGoldens[] = {
-    {"generic-lathe", "part-turned.nc"},    {"fanuc-0i-t", "part-turned.nc"},
-    {"haas-st", "part-turned.nc"},          {"sinumerik-840d", "part-turned.mpf"},
-    {"heidenhain-pilot", "part-turned.nc"}, {"linuxcnc-lathe", "part-turned.ngc"},
-    {"nct-2000t", "part-turned.nc"}};
+
+// The part's golden on every shipped machine.
+std::vector<Golden> goldens() {
+  std::vector<Golden> out;
+  for (const std::string& name : shipped_machine_names())
+    out.push_back({name, fs::path(golden_path(shipped_machine(name), kPart)).filename().string()});
+  EXPECT_FALSE(out.empty()) << "no shipped machines found";
+  return out;
+}
 
 // The golden with the first line holding `needle` changed by `edit`, verified against the part.
 RunResult verify_edited(const Golden& g, const std::string& needle,
@@ -49,7 +56,7 @@ std::string first_error(const RunResult& r) {
 }
 
 TEST(Holes, EveryGoldenDrillsItsHoles) {
-  for (const Golden& g : kGoldens) {
+  for (const Golden& g : goldens()) {
     RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " +
                       g.machine + " samples/golden/" + g.machine + "/" + g.file + " --cl " + kPart);
     EXPECT_EQ(r.exit_code, 0) << g.machine << "\n" << r.out << r.err;
@@ -64,7 +71,7 @@ TEST(Holes, EveryGoldenDrillsItsHoles) {
 // The peck hole (CL line 37) ends at Z-22: written one deeper, Z-21, on every machine — in the
 // cycle's Z word (G83 Z-22., CYCLE83(…, -22, …), G74 Z-22.) or in the last feed of the moves.
 TEST(Holes, AnEditedDepthWordFailsNamingTheHole) {
-  for (const Golden& g : kGoldens) {
+  for (const Golden& g : goldens()) {
     std::string p;
     RunResult r = verify_edited(
         g, "-22",
@@ -86,7 +93,7 @@ TEST(Holes, AnEditedDepthWordFailsNamingTheHole) {
 
 // The tap (CL line 45, to Z-16) dropped: its cycle block, or the feed into the hole.
 TEST(Holes, ADroppedTapFailsNamingTheHole) {
-  for (const Golden& g : kGoldens) {
+  for (const Golden& g : goldens()) {
     std::string p;
     RunResult r = verify_edited(
         g, "-16", [](const std::string&) { return std::string(); }, p);
@@ -105,7 +112,7 @@ TEST(Holes, ADroppedTapFailsNamingTheHole) {
 TEST(Holes, AnEditedPeckWordFails) {
   std::string p;
   RunResult r = verify_edited(
-      kGoldens[1], "Q5000",
+      {"fanuc-0i-t", "part-turned.nc"}, "Q5000",
       [](const std::string& l) {
         std::string s = l;
         s.replace(s.find("Q5000"), 5, "Q4000");

@@ -1,5 +1,6 @@
 #include "test_util.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +11,18 @@
 #include <sstream>
 
 namespace clpost::test {
+
+Machine shipped_machine(const std::string& name) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(load_machine(name, {source_dir()}, {}, m, errors)) << errors;
+  return m;
+}
+
+std::string golden_path(const Machine& m, const std::string& sample) {
+  const std::string stem = std::filesystem::path(sample).stem().string();
+  return "samples/golden/" + m.name + "/" + stem + m.extension;
+}
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -3,7 +3,19 @@
 #include <string>
 #include <vector>
 
+#include "machine/machine.h"
+#include "machine/machine_test_util.h"
+
 namespace clpost::test {
+
+// Every shipped machine's name, sorted, as `clpost machines` lists them: a test that runs on every
+// machine takes them from here and names none.
+using ::clpost::testing::shipped_machine_names;
+// Shipped machine `name` as clpost loads it (a machine that does not load fails the test).
+Machine shipped_machine(const std::string& name);
+// The reviewed golden of `sample` (a CL file under samples/) on shipped machine `m`, relative to
+// the source tree: samples/golden/<machine>/<sample's stem><the machine's extension>.
+std::string golden_path(const Machine& m, const std::string& sample);
 
 struct RunResult {
   int exit_code = -1;  // 128 + signal when killed by a signal

@@ -4,6 +4,7 @@
 // reviewed golden and expects the exact first error: the NC line, the CL line and both values.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -135,24 +136,37 @@ INSTANTIATE_TEST_SUITE_P(Edits, WholePath, ::testing::ValuesIn(kEdits));
 TEST(WholePathGoldens, EveryGoldenCutsTheCl) {
   struct Case {
     const char* machine;
-    const char* ext;
     const char* tolerance;
     bool offset;  // the tool_change template writes the offset
   };
-  const Case cases[] = {
-      {"generic-lathe", "nc", "0.001", true},     {"fanuc-0i-t", "nc", "0.005", true},
-      {"haas-st", "nc", "0.005", true},           {"sinumerik-840d", "mpf", "0.001", true},
-      {"heidenhain-pilot", "nc", "0.001", false}, {"linuxcnc-lathe", "ngc", "1e-05", false},
-      {"nct-2000t", "nc", "0.001", true}};
+  // What each machine's report says (a shipped machine needs its row: checked below).
+  const std::vector<Case> cases = {
+      {"generic-lathe", "0.001", true},     {"fanuc-0i-t", "0.005", true},
+      {"haas-st", "0.005", true},           {"sinumerik-840d", "0.001", true},
+      {"heidenhain-pilot", "0.001", false}, {"linuxcnc-lathe", "1e-05", false},
+      {"nct-2000t", "0.001", true}};
+  const std::vector<std::string> machines = shipped_machine_names();
+  ASSERT_FALSE(machines.empty());
+  for (const Case& c : cases)
+    EXPECT_NE(std::find(machines.begin(), machines.end(), c.machine), machines.end())
+        << "machine " << c.machine << " is not shipped: remove its row";
   const std::string not_compared =
       "; not compared: the offset (template tool_change has no {offset})";
-  for (const Case& c : cases) {
+  for (const std::string& name : machines) {
+    const auto row =
+        std::find_if(cases.begin(), cases.end(), [&](const Case& c) { return c.machine == name; });
+    if (row == cases.end()) {
+      ADD_FAILURE() << "machine " << name
+                    << " has no expected tolerance and offset in EveryGoldenCutsTheCl: add one";
+      continue;
+    }
+    const Case& c = *row;
+    const Machine m = shipped_machine(name);
     const std::string tail = c.offset ? "\n" : not_compared + "\n";
     const auto check = [&](const std::string& sample, const std::string& expected) {
-      const std::string stem = sample.substr(0, sample.find('.'));
-      const RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
-                              " verify -m " + c.machine + " samples/golden/" + c.machine + "/" +
-                              stem + "." + c.ext + " --cl samples/" + sample);
+      const RunResult r =
+          run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " +
+              c.machine + " " + golden_path(m, sample) + " --cl samples/" + sample);
       EXPECT_EQ(r.exit_code, 0) << c.machine << " " << sample << "\n" << r.out << r.err;
       EXPECT_NE(r.out.find(expected), std::string::npos) << c.machine << "\n" << r.out;
     };
@@ -192,8 +206,7 @@ TEST(WholePathGoldens, AToolChangeWithoutAToolWordIsNotCompared) {
 void posts_and_verifies_everywhere(const std::string& cl) {
   const std::string dir = temp_dir();
   write_file(dir + "/t.cl", cl);
-  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
-                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+  for (const std::string& m : shipped_machine_names()) {
     const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/t.cl") +
                             " --verify -o " + quote(dir + "/t.nc"));
     EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
@@ -245,8 +258,7 @@ TEST(WholePathGoldens, AGotoToAnEarlierHolesRPlaneIsItsOwnBlock) {
              "LOADTL/4,ADJUST,4\nSPINDL/300,RPM,CLW\nRAPID\nGOTO/0,0,10\n"
              "CYCLE/TAP,DEPTH,16,PITCH,1.5,MMPM,450,CLEAR,5\nGOTO/0,0,0\nCYCLE/OFF\nRAPID\n"
              "GOTO/0,0,2\nRAPID\nGOTO/20,0,2\nFINI\n");
-  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
-                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+  for (const std::string& m : shipped_machine_names()) {
     const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/h.cl") +
                             " --verify -o " + quote(dir + "/h.nc"));
     EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
@@ -298,8 +310,7 @@ TEST(WholePathGoldens, WhereACycleLeavesTheToolIsAPointOfThePath) {
       "OFF\nCYCLE/UNDCUT,DIAM,24,AT,-36,FORM,A\nRAPID\nGOTO/15,0,5\nTHREAD/"
       "ON,MMPR,3,DEPTH,1.84,CUTS,6,FINCUT,2,0.05,OPTION,1\nGOTO/12,0,2\nGOTO/12,0,-30\nTHREAD/"
       "OFF\nLOADTL/3\nSPINDL/400,RPM,CLW\nRAPID\nGOTO/15,0,5\nRAPID\nGOTO/30,0,5\nFINI\n");
-  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
-                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+  for (const std::string& m : shipped_machine_names()) {
     const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/u.cl") +
                             " --verify -o " + quote(dir + "/u.nc"));
     EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
@@ -319,8 +330,7 @@ TEST(WholePathGoldens, AThreadsExitComesAfterItsCuts) {
       "10,0,5\nTHREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/8,0,2\nGOTO/8,0,-20\nTHREAD/"
       "OFF\nLOADTL/1\nSPINDL/800,RPM,CLW\nTHREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,6,OPTION,1\nGOTO/"
       "8,0,2\nGOTO/8,0,-20\nTHREAD/OFF\nFINI\n");
-  for (const char* m : {"generic-lathe", "fanuc-0i-t", "haas-st", "sinumerik-840d",
-                        "heidenhain-pilot", "linuxcnc-lathe", "nct-2000t"}) {
+  for (const std::string& m : shipped_machine_names()) {
     const RunResult r = run(quote(clpost_bin()) + " -m " + m + " " + quote(dir + "/t.cl") +
                             " --verify -o " + quote(dir + "/t.nc"));
     EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;

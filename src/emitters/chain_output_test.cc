@@ -3,9 +3,11 @@
 // one straight line falling back with their reason in a comment.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "emitters/emitter_test_util.h"
+#include "machine/machine_test_util.h"
 
 namespace clpost {
 namespace {
@@ -40,11 +42,13 @@ TEST(ChainOutput, G33BlockPerSegmentInEmulation) {
 TEST(ChainOutput, CyclesFallBackWithTheirReason) {
   struct Case {
     const char* machine;
-    const char* comment;  // the fallback comment
+    const char* comment;  // the fallback comment ("" for a machine with no cycle)
     const char* first;    // the first synchronized block
     const char* second;   // the second
   };
-  const Case cases[] = {
+  // Every shipped machine needs its row (checked below).
+  const std::vector<Case> cases = {
+      {"generic-lathe", "", "G33 Z-10. F1.5", "X31. Z-20. F1.5"},
       {"fanuc-0i-t",
        "(G76 NOT USED: A CHAINED THREAD: G76 CUTS ONE STRAIGHT THREAD LINE. EMULATION INSTEAD)",
        "G32 Z-10. F1.5", "X31. Z-20. F1.5"},
@@ -65,7 +69,19 @@ TEST(ChainOutput, CyclesFallBackWithTheirReason) {
        "G33 Z-10 K1.5", "X31 Z-20 K1.5"},
       {"nct-2000t", "", "G33 Z-10. F1.5", "X31. Z-20. F1.5"},
   };
-  for (const Case& c : cases) {
+  const std::vector<std::string> machines = testing::shipped_machine_names();
+  ASSERT_FALSE(machines.empty());
+  for (const Case& c : cases)
+    EXPECT_NE(std::find(machines.begin(), machines.end(), c.machine), machines.end())
+        << "machine " << c.machine << " is not shipped: remove its row";
+  for (const std::string& name : machines) {
+    const auto row =
+        std::find_if(cases.begin(), cases.end(), [&](const Case& c) { return c.machine == name; });
+    if (row == cases.end()) {
+      ADD_FAILURE() << "machine " << name << " has no expected chained-thread blocks: add them";
+      continue;
+    }
+    const Case& c = *row;
     const std::string nc = emitted(c.machine);
     SCOPED_TRACE(c.machine);
     EXPECT_NE(nc.find(c.comment), std::string::npos) << nc;
