@@ -145,10 +145,18 @@ struct Compared {
   double accepted = 0;  // a fixed pass end accepted (threading.accept_pass_end): how far
 };
 
+// `r` becomes a difference of the same cut (cost 1); `why` formats it, only when `explain`.
+template <typename Why>
+Compared& differ(Compared& r, bool explain, Why&& why) {
+  r.cost = 1;
+  if (explain) r.why = why();
+  return r;
+}
+
 class Comparer {
  public:
   Comparer(const std::vector<ThreadPlan>& plans, const Machine& m, double tol)
-      : plans_(plans), m_(m), tol_(tol) {
+      : plans_(plans), m_(m), tol_(tol), limit_(tol + 1e-9) {
     for (const ThreadPlan& p : plans) frames_.push_back(frame_of(p));
   }
 
@@ -172,86 +180,114 @@ class Comparer {
   // its band, so it must not format text).
   Compared compare(const ExpectedCut& e, const NcCut& c, bool explain = true) const {
     const ThreadPlan& plan = plans_[e.thread];
-    const Frame& f = frames_[e.thread];
-    Compared r;
-    auto differ = [&](auto&& why) {
-      r.cost = 1;
-      if (explain) r.why = why();
-      return r;
-    };
-    const double tol = tol_ + 1e-9;
     if (plan.lead <= 0 || std::fabs(c.lead - plan.lead) > 0.05 * plan.lead) {
+      Compared r;
       r.cost = 2;
       if (explain) r.why = fmt::format("lead {:.6g}, plan {:.6g}", c.lead, plan.lead);
       return r;
     }
-    if (std::fabs(c.lead - plan.lead) * f.turns > tol)
-      return differ([&] {
+    Compared r = compare_lead(e, c, explain);
+    if (r.cost != 0) return r;
+    if (plan.form != ThreadForm::kMulti) return compare_path(e, c, explain);
+    r = compare_pass(e, c, explain);
+    if (r.cost != 0) return r;
+    return compare_pass_ends(e, c, explain);
+  }
+
+ private:
+  // The lead over the thread's turns, its change, the start and its angle: every form.
+  Compared compare_lead(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    const ThreadPlan& plan = plans_[e.thread];
+    const Frame& f = frames_[e.thread];
+    Compared r;
+    if (std::fabs(c.lead - plan.lead) * f.turns > limit_)
+      return differ(r, explain, [&] {
         return fmt::format(
             "lead {:.6f}, plan {:.6f}: {:.4f} off over the thread's {:.1f} "
             "turns (tolerance {:g})",
             c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns, tol_);
       });
     if (std::fabs(c.lead_change - plan.pitch.lead_change) > 1e-9)
-      return differ([&] {
+      return differ(r, explain, [&] {
         return fmt::format("lead change {:g} per revolution, plan {:g}", c.lead_change,
                            plan.pitch.lead_change);
       });
     if (plan.pitch.starts > 1 && c.start >= 0 && c.start != e.start)
-      return differ(
-          [&] { return fmt::format("start {}, plan start {}", c.start + 1, e.start + 1); });
+      return differ(r, explain, [&] {
+        return fmt::format("start {}, plan start {}", c.start + 1, e.start + 1);
+      });
     if (c.start_angle) {
       const double want = plan.starts_by_angle ? e.start_angle : 0;
       if (angle_diff(*c.start_angle, want) > 0.01)
-        return differ([&] {
+        return differ(r, explain, [&] {
           return fmt::format("start angle {:g} deg, plan {:g} deg", *c.start_angle, want);
         });
     }
-    if (plan.form != ThreadForm::kMulti) {
-      if (length(c.from - e.from) > tol)
-        return differ([&] {
-          return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
-                             tol_);
-        });
-      for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
-        if (length(c.chain[i] - e.chain[i]) > tol)
-          return differ([&] {
-            return fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
-                               point(c.chain[i]), point(e.chain[i]), tol_);
-          });
-      if (c.chain.size() != e.chain.size())
-        return differ([&] {
-          return fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size());
-        });
-      if (plan.form == ThreadForm::kChain && plan.pullout && plan.pullout_linear &&
-          (!c.linear_pullout || length(*c.linear_pullout - e.end) > tol))
-        return differ([&] {
-          return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})",
-                             c.linear_pullout ? point(*c.linear_pullout) : "(none)", point(e.end),
-                             tol_);
-        });
-      return r;
-    }
-    const SectionPass at = measure(e, c);
-    const double depth = at.depth;
-    if (std::fabs(depth - e.depth) > tol)
-      return differ([&] {
-        return fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_);
-      });
-    const double shift = at.shift;
-    if (std::fabs(shift - e.shift) > tol)
-      return differ([&] {
-        return fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_);
-      });
-    if (length(c.from - e.from) > tol)
-      return differ([&] {
+    return r;
+  }
+
+  // A thread cut along its path (single-pass, coupled, chained): the path's points one by one,
+  // then a chain's linear pull-out.
+  Compared compare_path(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    const ThreadPlan& plan = plans_[e.thread];
+    Compared r;
+    if (length(c.from - e.from) > limit_)
+      return differ(r, explain, [&] {
         return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
                            tol_);
       });
+    for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
+      if (length(c.chain[i] - e.chain[i]) > limit_)
+        return differ(r, explain, [&] {
+          return fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
+                             point(c.chain[i]), point(e.chain[i]), tol_);
+        });
+    if (c.chain.size() != e.chain.size())
+      return differ(r, explain, [&] {
+        return fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size());
+      });
+    if (plan.form == ThreadForm::kChain && plan.pullout && plan.pullout_linear &&
+        (!c.linear_pullout || length(*c.linear_pullout - e.end) > limit_))
+      return differ(r, explain, [&] {
+        return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})",
+                           c.linear_pullout ? point(*c.linear_pullout) : "(none)", point(e.end),
+                           tol_);
+      });
+    return r;
+  }
+
+  // One pass of a multi-pass thread: its depth and shift in the plan's frame, where it starts.
+  Compared compare_pass(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    Compared r;
+    const SectionPass at = measure(e, c);
+    const double depth = at.depth;
+    if (std::fabs(depth - e.depth) > limit_)
+      return differ(r, explain, [&] {
+        return fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_);
+      });
+    const double shift = at.shift;
+    if (std::fabs(shift - e.shift) > limit_)
+      return differ(r, explain, [&] {
+        return fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_);
+      });
+    if (length(c.from - e.from) > limit_)
+      return differ(r, explain, [&] {
+        return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
+                           tol_);
+      });
+    return r;
+  }
+
+  // Where a pass of a multi-pass thread ends, and its pull-out. A cycle that ends every pass at
+  // a fixed Z is accepted off the plan's end along the thread (threading.accept_pass_end), by
+  // how far `accepted` says; the distance is kept when the pull-out then differs.
+  Compared compare_pass_ends(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    const Frame& f = frames_[e.thread];
+    Compared r;
     const bool accept_end = c.fixed_end && m_.accept_pass_end;
-    if (length(c.to - e.to) > tol) {
-      if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > tol)
-        return differ([&] {
+    if (length(c.to - e.to) > limit_) {
+      if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > limit_)
+        return differ(r, explain, [&] {
           return fmt::format("ends at {}, plan {} (tolerance {:g})", point(c.to), point(e.to),
                              tol_);
         });
@@ -261,9 +297,9 @@ class Comparer {
     const bool planned_pullout = length(e.end - e.to) > 0;
     const Vec2 end =
         planned_pullout && c.chain.size() == 1 && c.linear_pullout ? *c.linear_pullout : c.end;
-    if (length(end - e.end) > tol) {
-      if (!accept_end || std::fabs(dot(end - e.end, f.n)) > tol)
-        return differ([&] {
+    if (length(end - e.end) > limit_) {
+      if (!accept_end || std::fabs(dot(end - e.end, f.n)) > limit_)
+        return differ(r, explain, [&] {
           return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})", point(end),
                              point(e.end), tol_);
         });
@@ -272,10 +308,10 @@ class Comparer {
     return r;
   }
 
- private:
   const std::vector<ThreadPlan>& plans_;
   const Machine& m_;
-  double tol_;
+  double tol_;    // as given, for the messages
+  double limit_;  // differences up to it are equal: the tolerance, and rounding
   std::vector<Frame> frames_;
 };
 
