@@ -341,7 +341,7 @@ struct Walk {
   const Comparer& cmp;
   const VerifyOptions& options;
   Diagnostics& nc_diags;
-  std::vector<ThreadAccumulator> threads;
+  std::vector<ThreadAccumulator> threads{};  // one per plan
   size_t problems = 0;
   // The thread an unmatched program cut is reported with: the last thread seen, else the next.
   size_t last_thread = 0;
@@ -390,8 +390,8 @@ void missing_cut(Walk& w, size_t k, const ExpectedCut& e) {
                       pass_name(w.plans[e.thread], e), e.depth, w.cmp.point(e.from)));
 }
 
-// A program cut the plan does not have (pair `k`): reported with the last thread seen, or, when
-// nothing was cut before it, with the next thread that is.
+// A program cut the plan does not have (pair `k`): reported with the last thread seen, else the
+// next; without a plan, on its own.
 void extra_cut(Walk& w, size_t k, const NcCut& c) {
   size_t t = w.last_thread;
   if (k == 0 || w.pairs[k - 1].a < 0)
@@ -412,6 +412,7 @@ void extra_cut(Walk& w, size_t k, const NcCut& c) {
   }
 }
 
+// Pair `k`: a pass the program cuts, a pass it does not cut, or a cut the plan does not have.
 void walk_pair(Walk& w, size_t k) {
   const AlignedPair& p = w.pairs[k];
   const ExpectedCut* e = p.a >= 0 ? &w.expected[static_cast<size_t>(p.a)] : nullptr;
@@ -465,9 +466,8 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
       expected.size(), order.size(),
       [&](size_t i, size_t j) { return cmp.compare(expected[i], cuts[order[j]], false).cost; });
 
-  Walk w{plans,   expected, cuts,
-         order,   pairs,    cmp,
-         options, nc_diags, std::vector<ThreadAccumulator>(plans.size())};
+  Walk w{plans, expected, cuts, order, pairs, cmp, options, nc_diags};
+  w.threads.resize(plans.size());
   for (size_t t = 0; t < plans.size(); ++t) w.threads[t].verdict.plan = t;
   for (const ExpectedCut& e : expected) ++w.threads[e.thread].verdict.planned;
   for (size_t k = 0; k < pairs.size(); ++k) walk_pair(w, k);
