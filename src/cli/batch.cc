@@ -172,76 +172,101 @@ void publish_group(const std::vector<PublishQueue::Entry>& group,
     if (!errors[k].empty()) publish_failed(results[group[k].index], errors[k]);
 }
 
+// What the workers and the publisher share while a batch runs.
+struct BatchRun {
+  BatchRun(const std::vector<BatchItem>& items, const Machine& machine,
+           const BatchSettings& settings, const std::function<void(const FileResult&)>& on_result)
+      : items(items),
+        machine(machine),
+        settings(settings),
+        on_result(on_result),
+        results(items.size()),
+        done(items.size(), 0) {
+    for (size_t i = 0; i < items.size(); ++i) results[i].item = items[i];
+  }
+
+  const std::vector<BatchItem>& items;
+  const Machine& machine;
+  const BatchSettings& settings;
+  const std::function<void(const FileResult&)>& on_result;
+  std::vector<FileResult> results;
+  std::vector<char> done;         // results[i] is final (posted and published, or failed)
+  std::atomic<size_t> next{0};    // the next item to post
+  std::atomic<bool> stop{false};  // a file failed (without --keep-going): post no more
+  std::mutex mu;                  // guards done, reported and the calls of on_result
+  size_t reported = 0;            // results[0, reported) were handed to on_result
+  PublishQueue queue;
+};
+
+// With `mu` held: the results now final, up to the first that is not, to on_result (in the
+// batch's order).
+void report_ready(BatchRun& run) {
+  while (run.reported < run.results.size() && run.done[run.reported]) {
+    if (run.on_result) run.on_result(run.results[run.reported]);
+    ++run.reported;
+  }
+}
+
+// The publisher thread: publishes what the workers wrote, a group at a time, until the queue is
+// closed and empty.
+void publish_loop(BatchRun& run) {
+  for (;;) {
+    std::vector<PublishQueue::Entry> group = run.queue.next_group();
+    if (group.empty()) return;
+    publish_group(group, run.results);  // the slow part, without the lock
+    std::lock_guard<std::mutex> lock(run.mu);
+    for (const PublishQueue::Entry& e : group) {
+      if (run.results[e.index].status == FileStatus::kError && !run.settings.keep_going)
+        run.stop.store(true);
+      run.done[e.index] = 1;
+    }
+    report_ready(run);
+  }
+}
+
+// A worker thread: posts the next item nobody has taken, until there is none or the batch stops.
+void work_loop(BatchRun& run) {
+  for (;;) {
+    if (run.stop.load()) return;
+    const size_t i = run.next.fetch_add(1);
+    if (i >= run.items.size()) return;
+    FileResult& r = run.results[i];
+    std::unique_ptr<OutputFile> written;
+    post_one(run.items[i], run.machine, run.settings, r, written);
+    if (written) {  // reported once published
+      run.queue.add(i, std::move(written));
+      continue;
+    }
+    if (r.status == FileStatus::kError && !run.settings.keep_going) run.stop.store(true);
+    std::lock_guard<std::mutex> lock(run.mu);
+    run.done[i] = 1;
+    report_ready(run);
+  }
+}
+
 }  // namespace
 
 std::vector<FileResult> run_batch(const std::vector<BatchItem>& items, const Machine& machine,
                                   const BatchSettings& settings,
                                   const std::function<void(const FileResult&)>& on_result) {
-  const size_t n = items.size();
-  std::vector<FileResult> results(n);
-  for (size_t i = 0; i < n; ++i) results[i].item = items[i];
-  std::vector<char> done(n, 0);
-  std::atomic<size_t> next{0};
-  std::atomic<bool> stop{false};
-  std::mutex mu;
-  size_t reported = 0;  // results[0, reported) were handed to on_result
-
-  auto report_ready = [&] {  // with `mu` held
-    while (reported < n && done[reported]) {
-      if (on_result) on_result(results[reported]);
-      ++reported;
-    }
-  };
-  PublishQueue queue;
-  auto publisher = [&] {
-    for (;;) {
-      std::vector<PublishQueue::Entry> group = queue.next_group();
-      if (group.empty()) return;
-      publish_group(group, results);  // the slow part, without the lock
-      std::lock_guard<std::mutex> lock(mu);
-      for (const PublishQueue::Entry& e : group) {
-        if (results[e.index].status == FileStatus::kError && !settings.keep_going) stop.store(true);
-        done[e.index] = 1;
-      }
-      report_ready();
-    }
-  };
-  auto worker = [&] {
-    for (;;) {
-      if (stop.load()) return;
-      const size_t i = next.fetch_add(1);
-      if (i >= n) return;
-      FileResult& r = results[i];
-      std::unique_ptr<OutputFile> written;
-      post_one(items[i], machine, settings, r, written);
-      if (written) {  // reported once published
-        queue.add(i, std::move(written));
-        continue;
-      }
-      if (r.status == FileStatus::kError && !settings.keep_going) stop.store(true);
-      std::lock_guard<std::mutex> lock(mu);
-      done[i] = 1;
-      report_ready();
-    }
-  };
-
-  const size_t jobs = std::clamp<size_t>(settings.jobs, 1, std::max<size_t>(n, 1));
-  std::thread publishing(publisher);  // mostly waiting on the disk: not one of the `jobs`
+  BatchRun run(items, machine, settings, on_result);
+  const size_t jobs = std::clamp<size_t>(settings.jobs, 1, std::max<size_t>(items.size(), 1));
+  std::thread publishing(publish_loop, std::ref(run));  // mostly waiting on the disk: not a job
   if (jobs == 1) {
-    worker();
+    work_loop(run);
   } else {
     std::vector<std::thread> threads;
     threads.reserve(jobs);
-    for (size_t t = 0; t < jobs; ++t) threads.emplace_back(worker);
+    for (size_t t = 0; t < jobs; ++t) threads.emplace_back(work_loop, std::ref(run));
     for (std::thread& t : threads) t.join();
   }
-  queue.close();
+  run.queue.close();
   publishing.join();
   // Items never started (the batch stopped after a failure) are reported as not posted.
-  std::lock_guard<std::mutex> lock(mu);
-  std::fill(done.begin(), done.end(), 1);
-  report_ready();
-  return results;
+  std::lock_guard<std::mutex> lock(run.mu);
+  std::fill(run.done.begin(), run.done.end(), 1);
+  report_ready(run);
+  return std::move(run.results);
 }
 
 BatchSummary summarize(const std::vector<FileResult>& results, double seconds) {

@@ -120,11 +120,40 @@ void add_batch_opts(CLI::App& app, BatchOpts& b) {
       ->type_name("FILE.json");
 }
 
+// The batch's output directory, created when missing; false (reported) when it cannot be
+// written to.
+bool make_output_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir, ec)) {
+    print_err(fmt::format("clpost: error: cannot create the output directory '{}': {}\n", dir,
+                          ec ? ec.message() : "not a directory"));
+    return false;
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    print_err(fmt::format("clpost: error: cannot write to the output directory '{}': {}\n", dir,
+                          std::strerror(errno)));
+    return false;
+  }
+  return true;
+}
+
+// The batch's --report; false (reported) when it cannot be written.
+bool write_report(const std::string& path, const std::string& json) {
+  std::string err;
+  OutputFile report;
+  if (!report.open(path, err) || (report.write(json), !report.commit(err))) {
+    print_err(fmt::format("clpost: error: cannot write the report: {}\n", err));
+    return false;
+  }
+  return true;
+}
+
 // Problems found before anything is posted (usage, the output directory) exit 2; failed files
 // exit 1.
 int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bool verify,
                       const std::vector<std::string>& args) {
-  namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
   Machine m;
   if (!load(mo, m)) return kExitUsage;
@@ -136,18 +165,7 @@ int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bo
     print_err(fmt::format("clpost: error: {}\n", err));
     return kExitUsage;
   }
-  std::error_code ec;
-  fs::create_directories(b.out_dir, ec);
-  if (ec || !fs::is_directory(b.out_dir, ec)) {
-    print_err(fmt::format("clpost: error: cannot create the output directory '{}': {}\n", b.out_dir,
-                          ec ? ec.message() : "not a directory"));
-    return kExitUsage;
-  }
-  if (::access(b.out_dir.c_str(), W_OK | X_OK) != 0) {
-    print_err(fmt::format("clpost: error: cannot write to the output directory '{}': {}\n",
-                          b.out_dir, std::strerror(errno)));
-    return kExitUsage;
-  }
+  if (!make_output_dir(b.out_dir)) return kExitUsage;
 
   BatchSettings settings;
   settings.jobs = b.jobs != 0 ? b.jobs : std::max(1u, std::thread::hardware_concurrency());
@@ -172,15 +190,10 @@ int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bo
   if (bar) print_err("\r\033[K");
   if (!b.quiet) print_err(summary_line(summary));
   int rc = summary.failed > 0 ? kExitInput : kExitOk;
-  if (!b.report.empty()) {
-    const std::string json =
-        batch_report_json(BatchReportInfo{m.name, b.out_dir, settings.jobs}, summary, results);
-    OutputFile report;
-    if (!report.open(b.report, err) || (report.write(json), !report.commit(err))) {
-      print_err(fmt::format("clpost: error: cannot write the report: {}\n", err));
-      rc = kExitInput;
-    }
-  }
+  if (!b.report.empty() &&
+      !write_report(b.report, batch_report_json(BatchReportInfo{m.name, b.out_dir, settings.jobs},
+                                                summary, results)))
+    rc = kExitInput;
   return rc;
 }
 

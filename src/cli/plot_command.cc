@@ -60,76 +60,110 @@ bool simulate_file(const std::string& path, const Machine& m, Simulation& sim,
   return ok;
 }
 
+// What a plot draws: the simulated program, its threads' sections, the picture's title.
+struct Drawing {
+  Simulation sim;
+  std::vector<ThreadSection> sections;
+  std::string title;
+};
+
+// A CL file: posted, its program simulated, its threads' sections as planned.
+bool draw_cl(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
+  const Machine& m = *req.machine;
+  Plans p = plans_of_cl(req.input, m);
+  diagnostics += p.diagnostics;
+  if (!p.ok) return false;
+  if (!simulate_text(p.program, "<program of " + display_name(req.input) + ">", m, d.sim,
+                     diagnostics))
+    return false;
+  for (const ThreadPlan& t : p.plans)
+    for (ThreadSection& s : sections_from_plan(t)) d.sections.push_back(std::move(s));
+  d.title = fmt::format("{} posted on {}", display_name(req.input), m.name);
+  return true;
+}
+
+// --cl: the program's threads, their passes measured against the CL file's plan (verify_cuts).
+bool sections_as_cut(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
+  const Machine& m = *req.machine;
+  Plans p = plans_of_cl(req.cl, m);
+  diagnostics += p.diagnostics;
+  if (!p.ok) return false;
+  Diagnostics diags(display_name(req.input));
+  VerifyOptions vo;
+  vo.plan_name = display_name(req.cl);
+  VerifyReport report;
+  verify_cuts(p.plans, d.sim, m, vo, diags, report);  // differences show in the pictures
+  for (const ThreadVerdict& v : report.threads) {
+    const ThreadPlan& t = p.plans[v.plan];
+    ThreadSection s = section_from_plan(
+        t, fmt::format("thread at {}:{} as {} cuts it",
+                       std::filesystem::path(req.cl).filename().string(), t.loc.line,
+                       std::filesystem::path(req.input).filename().string()));
+    s.passes = v.program_passes;
+    d.sections.push_back(std::move(s));
+  }
+  return true;
+}
+
+// An NC program: simulated; its threads' sections only with --cl, which they are measured by.
+bool draw_program(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
+  const Machine& m = *req.machine;
+  if (!simulate_file(req.input, m, d.sim, diagnostics)) return false;
+  d.title = fmt::format("{} on {}", display_name(req.input), m.name);
+  if (!req.cl.empty()) return sections_as_cut(req, d, diagnostics);
+  if (req.thread > 0) {
+    diagnostics +=
+        "clpost: error: the sections of a program are measured against its plan: give --cl\n";
+    return false;
+  }
+  return true;
+}
+
+// The picture: thread N's section (--thread N), else the backplot with every section.
+bool render_svg(const PlotRequest& req, const Drawing& d, std::string& svg,
+                std::string& diagnostics) {
+  if (req.thread <= 0) {
+    svg = backplot_svg(d.sim.path, &d.sections, d.title);
+    return true;
+  }
+  if (static_cast<size_t>(req.thread) > d.sections.size()) {
+    diagnostics +=
+        fmt::format("clpost: error: --thread {}: {} has {} thread{}\n", req.thread,
+                    display_name(req.input), d.sections.size(), d.sections.size() == 1 ? "" : "s");
+    return false;
+  }
+  svg = thread_section_svg(d.sections[static_cast<size_t>(req.thread - 1)]);
+  return true;
+}
+
+bool write_svg(const std::string& path, const std::string& svg, std::string& diagnostics) {
+  OutputFile file;
+  std::string err;
+  if (!file.open(path, err)) {
+    diagnostics += fmt::format("clpost: error: {}\n", err);
+    return false;
+  }
+  file.write(svg);
+  if (!file.commit(err)) {
+    diagnostics += fmt::format("clpost: error: {}\n", err);
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 PlotOutcome plot_file(const PlotRequest& req) {
   PlotOutcome out;
-  const Machine& m = *req.machine;
-  Simulation sim;
-  std::vector<ThreadSection> sections;
-  std::string title;
-  if (is_cl_file_name(req.input)) {
-    Plans p = plans_of_cl(req.input, m);
-    out.diagnostics += p.diagnostics;
-    if (!p.ok) return out;
-    if (!simulate_text(p.program, "<program of " + display_name(req.input) + ">", m, sim,
-                       out.diagnostics))
-      return out;
-    for (const ThreadPlan& t : p.plans)
-      for (ThreadSection& s : sections_from_plan(t)) sections.push_back(std::move(s));
-    title = fmt::format("{} posted on {}", display_name(req.input), m.name);
-  } else {
-    if (!simulate_file(req.input, m, sim, out.diagnostics)) return out;
-    title = fmt::format("{} on {}", display_name(req.input), m.name);
-    if (!req.cl.empty()) {
-      Plans p = plans_of_cl(req.cl, m);
-      out.diagnostics += p.diagnostics;
-      if (!p.ok) return out;
-      Diagnostics d(display_name(req.input));
-      VerifyOptions vo;
-      vo.plan_name = display_name(req.cl);
-      VerifyReport report;
-      verify_cuts(p.plans, sim, m, vo, d, report);  // differences show in the pictures
-      for (const ThreadVerdict& v : report.threads) {
-        const ThreadPlan& t = p.plans[v.plan];
-        ThreadSection s = section_from_plan(
-            t, fmt::format("thread at {}:{} as {} cuts it",
-                           std::filesystem::path(req.cl).filename().string(), t.loc.line,
-                           std::filesystem::path(req.input).filename().string()));
-        s.passes = v.program_passes;
-        sections.push_back(std::move(s));
-      }
-    } else if (req.thread > 0) {
-      out.diagnostics +=
-          "clpost: error: the sections of a program are measured against its plan: give --cl\n";
-      return out;
-    }
-  }
-  out.threads = sections.size();
-  out.moves = sim.path.moves.size();
+  Drawing d;
+  const bool drawn = is_cl_file_name(req.input) ? draw_cl(req, d, out.diagnostics)
+                                                : draw_program(req, d, out.diagnostics);
+  if (!drawn) return out;
+  out.threads = d.sections.size();
+  out.moves = d.sim.path.moves.size();
   std::string svg;
-  if (req.thread > 0) {
-    if (static_cast<size_t>(req.thread) > sections.size()) {
-      out.diagnostics +=
-          fmt::format("clpost: error: --thread {}: {} has {} thread{}\n", req.thread,
-                      display_name(req.input), sections.size(), sections.size() == 1 ? "" : "s");
-      return out;
-    }
-    svg = thread_section_svg(sections[static_cast<size_t>(req.thread - 1)]);
-  } else {
-    svg = backplot_svg(sim.path, &sections, title);
-  }
-  OutputFile file;
-  std::string err;
-  if (!file.open(req.output, err)) {
-    out.diagnostics += fmt::format("clpost: error: {}\n", err);
+  if (!render_svg(req, d, svg, out.diagnostics) || !write_svg(req.output, svg, out.diagnostics))
     return out;
-  }
-  file.write(svg);
-  if (!file.commit(err)) {
-    out.diagnostics += fmt::format("clpost: error: {}\n", err);
-    return out;
-  }
   out.ok = true;
   return out;
 }

@@ -37,6 +37,75 @@ class TeeSink : public Sink {
   Sink& to_;
   std::string& copy_;
 };
+
+// A file not posted: its input or its output could not be opened (the error is in `diags`).
+PostOutcome not_opened(const Diagnostics& diags) {
+  PostOutcome out;
+  out.errors = diags.error_count();
+  out.diagnostics = diags.render_all();
+  out.kept = diags.kept();
+  return out;
+}
+
+// Reads, interprets and writes the program to `sink`: what the post found goes into `out`, the
+// thread plans into `plans` when --verify will need them.
+void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& diags,
+             std::vector<ThreadPlan>& plans, PostOutcome& out) {
+  auto on_thread = [&](const ThreadPlan& p) {
+    if (req.on_thread) req.on_thread(p);
+    if (req.verify) plans.push_back(p);
+  };
+  ClReader reader(input, diags);
+  PostOptions options = req.options;
+  options.keep_motions = options.keep_motions || req.verify;
+  PostSummary summary = post(reader, *req.machine, sink, diags, options, on_thread);
+  out.holes = std::move(summary.holes);
+  out.path = std::move(summary.path);
+  out.cycle_time = std::move(summary.cycle_time);
+  out.stats = summary.stats;
+  out.units = summary.units;
+  out.bytes_in = summary.bytes_in;
+}
+
+// --verify: the program as written, read back through the control and compared with the plans.
+// The report goes into `out`, the program's diagnostics into `verify_diagnostics`. False when
+// the program does not cut the plan (one error on the CL file says so).
+bool verify_posted(const PostRequest& req, const std::string& program,
+                   const std::vector<ThreadPlan>& plans, Diagnostics& diags, PostOutcome& out,
+                   std::string& verify_diagnostics) {
+  reader::LineSource src{std::string_view(program)};
+  const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
+  const ClExpected expected{out.holes, out.path};
+  VerifyOutcome v = verify_program(src, name, plans, &expected, display_name(req.input),
+                                   *req.machine, req.verify_tolerance);
+  out.verify_report = std::move(v.report);
+  out.path = {};  // compared: a batch keeps every outcome
+  verify_diagnostics = std::move(v.diagnostics);
+  out.errors += v.errors;
+  // One line on the CL file too (a batch shows each file's first error).
+  if (!v.ok) diags.error({}, {}, "--verify: the program does not cut the plan: " + v.first_error);
+  return v.ok;
+}
+
+// The written program: dropped when `failed`, else committed, or finished and handed to
+// publish_later (a batch).
+void finish_output(const PostRequest& req, std::unique_ptr<OutputFile>& file, bool failed,
+                   Diagnostics& diags, PostOutcome& out) {
+  if (failed) {
+    file->abort();
+    return;
+  }
+  std::string err;
+  out.bytes_out = file->bytes();
+  if (!req.publish_later) {
+    if (!file->commit(err)) diags.error({}, {}, err);
+  } else if (file->finish(err)) {
+    req.publish_later(std::move(file));
+  } else {
+    diags.error({}, {}, err);
+  }
+}
+
 }  // namespace
 
 std::string display_name(const std::string& input) {
@@ -44,16 +113,12 @@ std::string display_name(const std::string& input) {
 }
 
 PostOutcome post_file(const PostRequest& req) {
-  PostOutcome out;
   Diagnostics diags(display_name(req.input));
   InputFile input;
   std::string open_error;
   if (!input.open(req.input, open_error)) {
     diags.error({}, {}, open_error);
-    out.errors = 1;
-    out.diagnostics = diags.render_all();
-    out.kept = diags.kept();
-    return out;
+    return not_opened(diags);
   }
   auto file = std::make_unique<OutputFile>();
   NullSink null_sink;
@@ -63,65 +128,22 @@ PostOutcome post_file(const PostRequest& req) {
     std::string err;
     if (!file->open(req.output, err)) {
       diags.error({}, {}, err);
-      out.errors = diags.error_count();
-      out.diagnostics = diags.render_all();
-      out.kept = diags.kept();
-      return out;
+      return not_opened(diags);
     }
     sink = file.get();
   }
+  PostOutcome out;
   std::string own_copy;  // --verify: the program as written
   std::string& program = req.program != nullptr ? *req.program : own_copy;
   std::vector<ThreadPlan> plans;
   TeeSink tee(*sink, program);
   if (req.verify || req.program != nullptr) sink = &tee;
-  {
-    auto on_thread = [&](const ThreadPlan& p) {
-      if (req.on_thread) req.on_thread(p);
-      if (req.verify) plans.push_back(p);
-    };
-    ClReader reader(input.get(), diags);
-    PostOptions options = req.options;
-    options.keep_motions = options.keep_motions || req.verify;
-    PostSummary summary = post(reader, *req.machine, *sink, diags, options, on_thread);
-    out.holes = std::move(summary.holes);
-    out.path = std::move(summary.path);
-    out.cycle_time = std::move(summary.cycle_time);
-    out.stats = summary.stats;
-    out.units = summary.units;
-    out.bytes_in = summary.bytes_in;
-  }
+  post_to(req, input.get(), *sink, diags, plans, out);
   std::string verify_diagnostics;
-  bool verify_failed = false;
-  if (req.verify && !diags.has_errors()) {
-    reader::LineSource src{std::string_view(program)};
-    const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
-    const ClExpected expected{out.holes, out.path};
-    VerifyOutcome v = verify_program(src, name, plans, &expected, display_name(req.input),
-                                     *req.machine, req.verify_tolerance);
-    out.verify_report = std::move(v.report);
-    out.path = {};  // compared: a batch keeps every outcome
-    verify_diagnostics = std::move(v.diagnostics);
-    verify_failed = !v.ok;
-    out.errors += v.errors;
-    // One line on the CL file too (a batch shows each file's first error).
-    if (verify_failed)
-      diags.error({}, {}, "--verify: the program does not cut the plan: " + v.first_error);
-  }
+  const bool verify_failed = req.verify && !diags.has_errors() &&
+                             !verify_posted(req, program, plans, diags, out, verify_diagnostics);
   if (writing) {
-    if (diags.has_errors() || verify_failed) {
-      file->abort();
-    } else {
-      std::string err;
-      out.bytes_out = file->bytes();
-      if (!req.publish_later) {
-        if (!file->commit(err)) diags.error({}, {}, err);
-      } else if (file->finish(err)) {
-        req.publish_later(std::move(file));
-      } else {
-        diags.error({}, {}, err);
-      }
-    }
+    finish_output(req, file, diags.has_errors() || verify_failed, diags, out);
   } else {
     out.bytes_out = null_sink.bytes;
   }

@@ -96,12 +96,8 @@ void draw_style(SvgWriter& w) {
          ".tick{font-size:12px;fill:#444444}");
 }
 
-void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
-  // One step on both axes (one scale), at most about 12 ticks and numbers at least 56 px apart;
-  // a flat plot gets finer X ticks, still at least 24 px apart.
-  const double step_z =
-      nice_step(std::max({(f.z_hi - f.z_lo) / 12, (f.x_hi - f.x_lo) / 12, 56 / f.k}));
-  const double step_x = std::min(step_z, nice_step(std::max((f.x_hi - f.x_lo) / 4, 24 / f.k)));
+// Grid lines every `step_z` along Z and `step_x` along X, with their numbers.
+void draw_grid_lines(SvgWriter& w, const Frame& f, double step_z, double step_x) {
   w.open("g", {{"class", "grid-lines"}});
   SvgPath grid;
   for (double z = std::ceil(f.z_lo / step_z) * step_z; z <= f.z_hi; z += step_z) {
@@ -128,6 +124,10 @@ void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
             {"text-anchor", "end"}},
            svg_num(std::fabs(x) < step_x * 1e-6 ? 0 : x, 6));
   w.close();
+}
+
+// The plot's border and the names of its axes.
+void draw_border(SvgWriter& w, const Frame& f, const char* unit) {
   w.empty("rect", {{"x", svg_num(f.ox)},
                    {"y", svg_num(f.oy)},
                    {"width", svg_num(f.w)},
@@ -144,22 +144,36 @@ void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
   w.text("text",
          {{"x", svg_num(f.ox)}, {"y", svg_num(f.oy - 8)}, {"font-size", "13"}, {"fill", "#333333"}},
          fmt::format("\u2191 X radius ({})", unit));
-  if (f.x_lo < 0 && f.x_hi > 0) {
-    w.empty("line", {{"class", "axis"},
-                     {"x1", svg_num(f.ox)},
-                     {"y1", svg_num(f.py(0))},
-                     {"x2", svg_num(f.ox + f.w)},
-                     {"y2", svg_num(f.py(0))},
-                     {"stroke", "#555555"},
-                     {"stroke-width", "1"},
-                     {"stroke-dasharray", "14 3 3 3"}});
-    w.text("text",
-           {{"x", svg_num(f.ox + 6)},
-            {"y", svg_num(f.py(0) - 5)},
-            {"font-size", "11"},
-            {"fill", "#555555"}},
-           "spindle axis");
-  }
+}
+
+// The spindle axis (X 0), drawn when the plot reaches across it.
+void draw_spindle_axis(SvgWriter& w, const Frame& f) {
+  if (!(f.x_lo < 0 && f.x_hi > 0)) return;
+  w.empty("line", {{"class", "axis"},
+                   {"x1", svg_num(f.ox)},
+                   {"y1", svg_num(f.py(0))},
+                   {"x2", svg_num(f.ox + f.w)},
+                   {"y2", svg_num(f.py(0))},
+                   {"stroke", "#555555"},
+                   {"stroke-width", "1"},
+                   {"stroke-dasharray", "14 3 3 3"}});
+  w.text("text",
+         {{"x", svg_num(f.ox + 6)},
+          {"y", svg_num(f.py(0) - 5)},
+          {"font-size", "11"},
+          {"fill", "#555555"}},
+         "spindle axis");
+}
+
+void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
+  // One step on both axes (one scale), at most about 12 ticks and numbers at least 56 px apart;
+  // a flat plot gets finer X ticks, still at least 24 px apart.
+  const double step_z =
+      nice_step(std::max({(f.z_hi - f.z_lo) / 12, (f.x_hi - f.x_lo) / 12, 56 / f.k}));
+  const double step_x = std::min(step_z, nice_step(std::max((f.x_hi - f.x_lo) / 4, 24 / f.k)));
+  draw_grid_lines(w, f, step_z, step_x);
+  draw_border(w, f, unit);
+  draw_spindle_axis(w, f);
 }
 
 struct Totals {

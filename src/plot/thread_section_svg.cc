@@ -342,19 +342,25 @@ void draw_depth_ruler(SvgWriter& w, const ThreadSection& s, const Frame& f, int 
          fmt::format("depth ({})", s.units == LengthUnit::kInch ? "in" : "mm"));
 }
 
-void draw_table(SvgWriter& w, const ThreadSection& s, const Layout& l) {
-  const double x = l.table_x, top = l.f.oy;
+// The pass table's number columns, each right-aligned at `right` from the table's left edge;
+// the pass kind follows, left-aligned at kKindX.
+struct TableCol {
+  const char* name;
+  double right;
+};
+constexpr TableCol kTableCols[] = {
+    {"pass", 36}, {"start", 84}, {"depth", 158}, {"step", 232}, {"shift", 306}};
+constexpr double kKindX = 320;
+
+// The table's title, its column names and the rule under them; returns the rule's y, where the
+// rows start.
+double draw_table_head(SvgWriter& w, double x, double top, const char* unit) {
   w.text(
       "text",
       {{"x", svg_num(x)}, {"y", svg_num(top + 10)}, {"font-size", "13"}, {"font-weight", "bold"}},
-      fmt::format("Passes in cutting order ({})", l.unit));
-  struct Col {
-    const char* name;
-    double right;  // right edge (numbers) or left edge (kind)
-  };
-  const Col cols[] = {{"pass", 36}, {"start", 84}, {"depth", 158}, {"step", 232}, {"shift", 306}};
+      fmt::format("Passes in cutting order ({})", unit));
   const double head_y = top + 34;
-  for (const Col& c : cols)
+  for (const TableCol& c : kTableCols)
     w.text("text",
            {{"x", svg_num(x + c.right)},
             {"y", svg_num(head_y)},
@@ -364,7 +370,7 @@ void draw_table(SvgWriter& w, const ThreadSection& s, const Layout& l) {
             {"fill", "#444444"}},
            c.name);
   w.text("text",
-         {{"x", svg_num(x + 320)},
+         {{"x", svg_num(x + kKindX)},
           {"y", svg_num(head_y)},
           {"font-size", "12"},
           {"font-weight", "bold"},
@@ -376,35 +382,46 @@ void draw_table(SvgWriter& w, const ThreadSection& s, const Layout& l) {
                    {"y2", svg_num(head_y + 5)},
                    {"stroke", "#888888"},
                    {"stroke-width", "1"}});
+  return head_y + 5;
+}
+
+// One pass's row, its top at `y`: its numbers, the step from `prev` (the depth of the pass
+// before it of the same start) and its kind; `shaded` on every other row.
+void draw_table_row(SvgWriter& w, const SectionPass& p, double prev, double x, double y,
+                    bool shaded, int decimals) {
+  if (shaded)
+    w.empty("rect", {{"x", svg_num(x)},
+                     {"y", svg_num(y)},
+                     {"width", svg_num(kTableW)},
+                     {"height", svg_num(kRowH)},
+                     {"fill", "#f1f3f6"}});
+  const double base = y + kRowH - 4.5;
+  const std::string cells[] = {fmt::format("{}", p.n), fmt::format("{}", p.start),
+                               fixed_text(p.depth, decimals), fixed_text(p.depth - prev, decimals),
+                               fixed_text(p.shift, decimals)};
+  w.open("g", {{"class", "pass-row"}, {"data-pass", fmt::format("{}", p.n)}});
+  for (size_t i = 0; i < 5; ++i)
+    w.text("text",
+           {{"x", svg_num(x + kTableCols[i].right)}, {"y", svg_num(base)}, {"text-anchor", "end"}},
+           cells[i]);
+  w.text("text",
+         {{"x", svg_num(x + kKindX)},
+          {"y", svg_num(base)},
+          {"fill", kind_colour(p.kind)},
+          {"font-weight", "bold"}},
+         pass_kind_name(p.kind));
+  w.close();
+}
+
+void draw_table(SvgWriter& w, const ThreadSection& s, const Layout& l) {
+  double y = draw_table_head(w, l.table_x, l.f.oy, l.unit);
   std::map<int, double> last;  // previous depth per start, for the step column
-  double y = head_y + 5;
   size_t row = 0;
   w.open("g", {{"class", "pass-table"}, {"font-family", kMono}, {"font-size", "12"}});
   for (const SectionPass& p : s.passes) {
     const double prev = last.count(p.start) ? last[p.start] : 0;
     last[p.start] = p.depth;
-    if (row++ % 2 == 0)
-      w.empty("rect", {{"x", svg_num(x)},
-                       {"y", svg_num(y)},
-                       {"width", svg_num(kTableW)},
-                       {"height", svg_num(kRowH)},
-                       {"fill", "#f1f3f6"}});
-    const double base = y + kRowH - 4.5;
-    const std::string cells[] = {
-        fmt::format("{}", p.n), fmt::format("{}", p.start), fixed_text(p.depth, l.decimals),
-        fixed_text(p.depth - prev, l.decimals), fixed_text(p.shift, l.decimals)};
-    w.open("g", {{"class", "pass-row"}, {"data-pass", fmt::format("{}", p.n)}});
-    for (size_t i = 0; i < 5; ++i)
-      w.text("text",
-             {{"x", svg_num(x + cols[i].right)}, {"y", svg_num(base)}, {"text-anchor", "end"}},
-             cells[i]);
-    w.text("text",
-           {{"x", svg_num(x + 320)},
-            {"y", svg_num(base)},
-            {"fill", kind_colour(p.kind)},
-            {"font-weight", "bold"}},
-           pass_kind_name(p.kind));
-    w.close();
+    draw_table_row(w, p, prev, l.table_x, y, row++ % 2 == 0, l.decimals);
     y += kRowH;
   }
   w.close();

@@ -42,6 +42,9 @@ struct ClReader::Impl {
   Impl(std::string_view text, Diagnostics& d) : src(text), diags(d), text(text) {}
 
   bool next(Statement& out);
+  bool read_statement(Statement& out);
+  bool skip_non_statement(const LineSource::Line& first, Status s);
+  bool lex_statement(Statement& out, bool is_text);
   bool read_continuations(const LineSource::Line& first, bool continues, bool is_text);
   void skip_comment(bool continues);
   void skip_statement(bool continues, bool is_text);
@@ -120,65 +123,85 @@ bool ClReader::Impl::next(Statement& out) {
         return true;
       }
     }
-    LineSource::Line first;
-    const Status s = src.next_line(kMaxStatementBytes, first);
-    if (s == Status::kEnd) {
-      done = true;
-      break;
-    }
-    if (s != Status::kLine && s != Status::kTooLong) {
-      fail(s);
-      break;
-    }
-    const std::string_view text = src.text(first);  // kTooLong: its first bytes
-    if (first.number == 1 && to_binary()) break;    // binary CLDATA that looks like text
-    if (at_start && s == Status::kLine) {
-      if (reader::is_blank_line(text)) continue;
-      at_start = false;
-      if (first.number <= 2 && text.starts_with(kNxHeader)) {
-        skip_header(first);
-        continue;
-      }
-    }
-    at_start = false;
-    if (reader::is_comment_line(text)) {
-      skip_comment(s == Status::kTooLong ? src.skip_line().comment_continues()
-                                         : reader::comment_continues(text));
-      continue;
-    }
-    if (s == Status::kTooLong) {
-      too_long(first);
-      continue;
-    }
-    if (reader::is_blank_line(text) || is_nx_trailer(text)) continue;
+    if (read_statement(out)) return true;
+  }
+  return false;
+}
 
-    out.first_line = first.number;
-    const bool is_text = StatementLexer::is_text_statement(text);
-    bool continues = false;
-    if (is_text) {
-      continues = reader::comment_continues(text);
-    } else {
-      reader::code_part(text, &continues);
-    }
-    if (!read_continuations(first, continues, is_text)) continue;
-    if (std::any_of(lines.begin(), lines.end(), [&](const auto& l) { return stray_nul(l); }))
-      continue;
-    out.lines.clear();
-    for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
-    if (is_text) {
-      lexer.lex_text(out);
+// The line by line path: the input's start, comments, continuation lines, errors. False when
+// what was read is no statement (skipped, reported, or the end of the input: `done`).
+bool ClReader::Impl::read_statement(Statement& out) {
+  LineSource::Line first;
+  const Status s = src.next_line(kMaxStatementBytes, first);
+  if (s == Status::kEnd) {
+    done = true;
+    return false;
+  }
+  if (s != Status::kLine && s != Status::kTooLong) {
+    fail(s);
+    return false;
+  }
+  if (skip_non_statement(first, s)) return false;
+  out.first_line = first.number;
+  const std::string_view text = src.text(first);
+  const bool is_text = StatementLexer::is_text_statement(text);
+  bool continues = false;
+  if (is_text) {
+    continues = reader::comment_continues(text);
+  } else {
+    reader::code_part(text, &continues);
+  }
+  if (!read_continuations(first, continues, is_text)) return false;
+  if (std::any_of(lines.begin(), lines.end(), [&](const auto& l) { return stray_nul(l); }))
+    return false;
+  return lex_statement(out, is_text);
+}
+
+// True when the first line starts no statement, and it (with what belongs to it) has been dealt
+// with: a blank line, binary CLDATA, the NX header or trailer, a comment and its continuations,
+// a statement too long (reported).
+bool ClReader::Impl::skip_non_statement(const LineSource::Line& first, Status s) {
+  const std::string_view text = src.text(first);      // kTooLong: its first bytes
+  if (first.number == 1 && to_binary()) return true;  // binary CLDATA that looks like text
+  if (at_start && s == Status::kLine) {
+    if (reader::is_blank_line(text)) return true;
+    at_start = false;
+    if (first.number <= 2 && text.starts_with(kNxHeader)) {
+      skip_header(first);
       return true;
     }
-    StatementLexer::Error err;
-    switch (lexer.lex_code(out, err)) {
-      case StatementLexer::Result::kOk:
-        return true;
-      case StatementLexer::Result::kEmpty:
-        break;
-      case StatementLexer::Result::kError:
-        error(err.loc, out.line_text(err.loc.line), std::move(err.message));
-        break;
-    }
+  }
+  at_start = false;
+  if (reader::is_comment_line(text)) {
+    skip_comment(s == Status::kTooLong ? src.skip_line().comment_continues()
+                                       : reader::comment_continues(text));
+    return true;
+  }
+  if (s == Status::kTooLong) {
+    too_long(first);
+    return true;
+  }
+  return reader::is_blank_line(text) || is_nx_trailer(text);
+}
+
+// The statement's lines (`lines`) lexed into `out`; false for an empty statement or an error
+// (reported).
+bool ClReader::Impl::lex_statement(Statement& out, bool is_text) {
+  out.lines.clear();
+  for (const LineSource::Line& l : lines) out.lines.push_back(src.text(l));
+  if (is_text) {
+    lexer.lex_text(out);
+    return true;
+  }
+  StatementLexer::Error err;
+  switch (lexer.lex_code(out, err)) {
+    case StatementLexer::Result::kOk:
+      return true;
+    case StatementLexer::Result::kEmpty:
+      break;
+    case StatementLexer::Result::kError:
+      error(err.loc, out.line_text(err.loc.line), std::move(err.message));
+      break;
   }
   return false;
 }

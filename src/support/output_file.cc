@@ -35,6 +35,64 @@ bool write_all(int fd, const char* data, size_t size, int& err) {
 bool is_system_path(const std::string& path) {
   return path.starts_with("/dev/") || path.starts_with("/proc/");
 }
+
+// Standard output is spooled to an anonymous temporary file until commit(): its descriptor in
+// `fd`.
+bool open_spool(int& fd, std::string& error) {
+  std::FILE* tmp = std::tmpfile();
+  if (tmp == nullptr) {
+    error = fmt::format("cannot create a temporary file: {}", std::strerror(errno));
+    return false;
+  }
+  fd = ::dup(fileno(tmp));
+  const int err = errno;
+  std::fclose(tmp);  // the anonymous file lives on through fd
+  if (fd < 0) {
+    error = fmt::format("cannot create a temporary file: {}", std::strerror(err));
+    return false;
+  }
+  return true;
+}
+
+// The file a path names: a symbolic link is followed, so that the file it points to is
+// replaced, not the link.
+std::string link_target(const std::string& path) {
+  std::string target = path;
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    if (char* real = ::realpath(path.c_str(), nullptr)) {
+      target = real;
+      std::free(real);
+    }
+  }
+  return target;
+}
+
+// A device, or anything else not a regular file, is opened for writing but never created: a
+// device that is not there is an error, not a new file in /dev.
+bool open_existing(const std::string& path, int& fd, std::string& error) {
+  fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) {
+    error = fmt::format("cannot open '{}': {}", path, std::strerror(errno));
+    return false;
+  }
+  return true;
+}
+
+// A temporary file in the directory of `target`, to be renamed over it: its descriptor in `fd`,
+// its path in `temp`. Errors name the path as given.
+bool create_temp_beside(const std::string& target, const std::string& path, int& fd,
+                        std::string& temp, std::string& error) {
+  std::filesystem::path p(target);
+  std::string dir = p.has_parent_path() ? p.parent_path().string() : ".";
+  temp = dir + "/." + p.filename().string() + ".XXXXXX";
+  fd = ::mkstemp(temp.data());
+  if (fd < 0) {
+    error = fmt::format("cannot write '{}': {}", path, std::strerror(errno));
+    return false;
+  }
+  return true;
+}
 }  // namespace
 
 OutputFile::~OutputFile() {
@@ -57,18 +115,7 @@ bool OutputFile::open_fd(const std::string& path, std::string& error) {
   bytes_ = 0;
   if (!buffer_) buffer_ = std::make_unique_for_overwrite<char[]>(kBufferSize);
   if (path == "-") {
-    std::FILE* tmp = std::tmpfile();
-    if (tmp == nullptr) {
-      error = fmt::format("cannot create a temporary file: {}", std::strerror(errno));
-      return false;
-    }
-    fd_ = ::dup(fileno(tmp));
-    const int err = errno;
-    std::fclose(tmp);  // the anonymous file lives on through fd_
-    if (fd_ < 0) {
-      error = fmt::format("cannot create a temporary file: {}", std::strerror(err));
-      return false;
-    }
+    if (!open_spool(fd_, error)) return false;
     owns_fd_ = true;
     mode_ = Mode::kSpool;
     return true;
@@ -79,38 +126,20 @@ bool OutputFile::open_fd(const std::string& path, std::string& error) {
     mode_ = Mode::kDirect;
     return true;
   }
-  // A symbolic link is followed, so that the file it points to is replaced, not the link.
-  std::string target = path;
+  const std::string target = link_target(path);
   struct stat st {};
-  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
-    if (char* real = ::realpath(path.c_str(), nullptr)) {
-      target = real;
-      std::free(real);
-    }
-  }
   const bool exists = ::stat(target.c_str(), &st) == 0;
   if ((exists && !S_ISREG(st.st_mode)) || is_system_path(path) || is_system_path(target)) {
-    // Never created: a device that is not there is an error, not a new file in /dev.
-    fd_ = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-    if (fd_ < 0) {
-      error = fmt::format("cannot open '{}': {}", path, std::strerror(errno));
-      return false;
-    }
+    if (!open_existing(path, fd_, error)) return false;
     owns_fd_ = true;
     mode_ = Mode::kDirect;
     return true;
   }
-  std::filesystem::path p(target);
-  std::string dir = p.has_parent_path() ? p.parent_path().string() : ".";
-  std::string templ = dir + "/." + p.filename().string() + ".XXXXXX";
-  fd_ = ::mkstemp(templ.data());
-  if (fd_ < 0) {
-    error = fmt::format("cannot write '{}': {}", path, std::strerror(errno));
-    return false;
-  }
+  std::string temp;
+  if (!create_temp_beside(target, path, fd_, temp, error)) return false;
   owns_fd_ = true;
   mode_ = Mode::kAtomic;
-  temp_ = templ;
+  temp_ = temp;
   target_ = target;
   // mkstemp makes 0600 files; give the program the permissions of the file it replaces, or the
   // usual ones for a new file.

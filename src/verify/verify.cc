@@ -145,10 +145,18 @@ struct Compared {
   double accepted = 0;  // a fixed pass end accepted (threading.accept_pass_end): how far
 };
 
+// `r` becomes a difference of the same cut (cost 1); `why` formats it, only when `explain`.
+template <typename Why>
+Compared& differ(Compared& r, bool explain, Why&& why) {
+  r.cost = 1;
+  if (explain) r.why = why();
+  return r;
+}
+
 class Comparer {
  public:
   Comparer(const std::vector<ThreadPlan>& plans, const Machine& m, double tol)
-      : plans_(plans), m_(m), tol_(tol) {
+      : plans_(plans), m_(m), tol_(tol), limit_(tol + 1e-9) {
     for (const ThreadPlan& p : plans) frames_.push_back(frame_of(p));
   }
 
@@ -172,86 +180,114 @@ class Comparer {
   // its band, so it must not format text).
   Compared compare(const ExpectedCut& e, const NcCut& c, bool explain = true) const {
     const ThreadPlan& plan = plans_[e.thread];
-    const Frame& f = frames_[e.thread];
-    Compared r;
-    auto differ = [&](auto&& why) {
-      r.cost = 1;
-      if (explain) r.why = why();
-      return r;
-    };
-    const double tol = tol_ + 1e-9;
     if (plan.lead <= 0 || std::fabs(c.lead - plan.lead) > 0.05 * plan.lead) {
+      Compared r;
       r.cost = 2;
       if (explain) r.why = fmt::format("lead {:.6g}, plan {:.6g}", c.lead, plan.lead);
       return r;
     }
-    if (std::fabs(c.lead - plan.lead) * f.turns > tol)
-      return differ([&] {
+    Compared r = compare_lead(e, c, explain);
+    if (r.cost != 0) return r;
+    if (plan.form != ThreadForm::kMulti) return compare_path(e, c, explain);
+    r = compare_pass(e, c, explain);
+    if (r.cost != 0) return r;
+    return compare_pass_ends(e, c, explain);
+  }
+
+ private:
+  // The lead over the thread's turns, its change, the start and its angle: every form.
+  Compared compare_lead(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    const ThreadPlan& plan = plans_[e.thread];
+    const Frame& f = frames_[e.thread];
+    Compared r;
+    if (std::fabs(c.lead - plan.lead) * f.turns > limit_)
+      return differ(r, explain, [&] {
         return fmt::format(
             "lead {:.6f}, plan {:.6f}: {:.4f} off over the thread's {:.1f} "
             "turns (tolerance {:g})",
             c.lead, plan.lead, std::fabs(c.lead - plan.lead) * f.turns, f.turns, tol_);
       });
     if (std::fabs(c.lead_change - plan.pitch.lead_change) > 1e-9)
-      return differ([&] {
+      return differ(r, explain, [&] {
         return fmt::format("lead change {:g} per revolution, plan {:g}", c.lead_change,
                            plan.pitch.lead_change);
       });
     if (plan.pitch.starts > 1 && c.start >= 0 && c.start != e.start)
-      return differ(
-          [&] { return fmt::format("start {}, plan start {}", c.start + 1, e.start + 1); });
+      return differ(r, explain, [&] {
+        return fmt::format("start {}, plan start {}", c.start + 1, e.start + 1);
+      });
     if (c.start_angle) {
       const double want = plan.starts_by_angle ? e.start_angle : 0;
       if (angle_diff(*c.start_angle, want) > 0.01)
-        return differ([&] {
+        return differ(r, explain, [&] {
           return fmt::format("start angle {:g} deg, plan {:g} deg", *c.start_angle, want);
         });
     }
-    if (plan.form != ThreadForm::kMulti) {
-      if (length(c.from - e.from) > tol)
-        return differ([&] {
-          return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
-                             tol_);
-        });
-      for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
-        if (length(c.chain[i] - e.chain[i]) > tol)
-          return differ([&] {
-            return fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
-                               point(c.chain[i]), point(e.chain[i]), tol_);
-          });
-      if (c.chain.size() != e.chain.size())
-        return differ([&] {
-          return fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size());
-        });
-      if (plan.form == ThreadForm::kChain && plan.pullout && plan.pullout_linear &&
-          (!c.linear_pullout || length(*c.linear_pullout - e.end) > tol))
-        return differ([&] {
-          return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})",
-                             c.linear_pullout ? point(*c.linear_pullout) : "(none)", point(e.end),
-                             tol_);
-        });
-      return r;
-    }
-    const SectionPass at = measure(e, c);
-    const double depth = at.depth;
-    if (std::fabs(depth - e.depth) > tol)
-      return differ([&] {
-        return fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_);
-      });
-    const double shift = at.shift;
-    if (std::fabs(shift - e.shift) > tol)
-      return differ([&] {
-        return fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_);
-      });
-    if (length(c.from - e.from) > tol)
-      return differ([&] {
+    return r;
+  }
+
+  // A thread cut along its path (single-pass, coupled, chained): the path's points one by one,
+  // then a chain's linear pull-out.
+  Compared compare_path(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    const ThreadPlan& plan = plans_[e.thread];
+    Compared r;
+    if (length(c.from - e.from) > limit_)
+      return differ(r, explain, [&] {
         return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
                            tol_);
       });
+    for (size_t i = 0; i < std::min(c.chain.size(), e.chain.size()); ++i)
+      if (length(c.chain[i] - e.chain[i]) > limit_)
+        return differ(r, explain, [&] {
+          return fmt::format("move {} ends at {}, plan {} (tolerance {:g})", i + 1,
+                             point(c.chain[i]), point(e.chain[i]), tol_);
+        });
+    if (c.chain.size() != e.chain.size())
+      return differ(r, explain, [&] {
+        return fmt::format("{} synchronized moves, plan {}", c.chain.size(), e.chain.size());
+      });
+    if (plan.form == ThreadForm::kChain && plan.pullout && plan.pullout_linear &&
+        (!c.linear_pullout || length(*c.linear_pullout - e.end) > limit_))
+      return differ(r, explain, [&] {
+        return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})",
+                           c.linear_pullout ? point(*c.linear_pullout) : "(none)", point(e.end),
+                           tol_);
+      });
+    return r;
+  }
+
+  // One pass of a multi-pass thread: its depth and shift in the plan's frame, where it starts.
+  Compared compare_pass(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    Compared r;
+    const SectionPass at = measure(e, c);
+    const double depth = at.depth;
+    if (std::fabs(depth - e.depth) > limit_)
+      return differ(r, explain, [&] {
+        return fmt::format("depth {:.4f}, plan {:.4f} (tolerance {:g})", depth, e.depth, tol_);
+      });
+    const double shift = at.shift;
+    if (std::fabs(shift - e.shift) > limit_)
+      return differ(r, explain, [&] {
+        return fmt::format("shift {:.4f}, plan {:.4f} (tolerance {:g})", shift, e.shift, tol_);
+      });
+    if (length(c.from - e.from) > limit_)
+      return differ(r, explain, [&] {
+        return fmt::format("starts at {}, plan {} (tolerance {:g})", point(c.from), point(e.from),
+                           tol_);
+      });
+    return r;
+  }
+
+  // Where a pass of a multi-pass thread ends, and its pull-out. A cycle that ends every pass at
+  // a fixed Z is accepted off the plan's end along the thread (threading.accept_pass_end), by
+  // how far `accepted` says; the distance is kept when the pull-out then differs.
+  Compared compare_pass_ends(const ExpectedCut& e, const NcCut& c, bool explain) const {
+    const Frame& f = frames_[e.thread];
+    Compared r;
     const bool accept_end = c.fixed_end && m_.accept_pass_end;
-    if (length(c.to - e.to) > tol) {
-      if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > tol)
-        return differ([&] {
+    if (length(c.to - e.to) > limit_) {
+      if (!accept_end || std::fabs(dot(c.to - e.to, f.n)) > limit_)
+        return differ(r, explain, [&] {
           return fmt::format("ends at {}, plan {} (tolerance {:g})", point(c.to), point(e.to),
                              tol_);
         });
@@ -261,9 +297,9 @@ class Comparer {
     const bool planned_pullout = length(e.end - e.to) > 0;
     const Vec2 end =
         planned_pullout && c.chain.size() == 1 && c.linear_pullout ? *c.linear_pullout : c.end;
-    if (length(end - e.end) > tol) {
-      if (!accept_end || std::fabs(dot(end - e.end, f.n)) > tol)
-        return differ([&] {
+    if (length(end - e.end) > limit_) {
+      if (!accept_end || std::fabs(dot(end - e.end, f.n)) > limit_)
+        return differ(r, explain, [&] {
           return fmt::format("pull-out ends at {}, plan {} (tolerance {:g})", point(end),
                              point(e.end), tol_);
         });
@@ -272,10 +308,10 @@ class Comparer {
     return r;
   }
 
- private:
   const std::vector<ThreadPlan>& plans_;
   const Machine& m_;
-  double tol_;
+  double tol_;    // as given, for the messages
+  double limit_;  // differences up to it are equal: the tolerance, and rounding
   std::vector<Frame> frames_;
 };
 
@@ -284,6 +320,133 @@ std::string pass_name(const ThreadPlan& plan, const ExpectedCut& e) {
     return "its synchronized path";
   return plan.pitch.starts > 1 ? fmt::format("pass {} (start {})", e.pass, e.start + 1)
                                : fmt::format("pass {}", e.pass);
+}
+
+// What verify_cuts gathers for one thread while it goes through the alignment.
+struct ThreadAccumulator {
+  ThreadVerdict verdict;
+  uint32_t first_line = 0;  // NC lines of the program cuts matched to the thread (0: none)
+  uint32_t last_line = 0;
+  std::vector<std::string> sources;  // the blocks that cut it ("G76", "G33"), first seen first
+  double accepted = 0;               // the farthest pass end accepted (threading.accept_pass_end)
+};
+
+// The alignment of the plan's passes with the program's cuts, gone through pair by pair.
+struct Walk {
+  const std::vector<ThreadPlan>& plans;
+  const std::vector<ExpectedCut>& expected;
+  const std::vector<NcCut>& cuts;
+  const std::vector<size_t>& order;  // the program's cuts in the plan's order
+  const std::vector<AlignedPair>& pairs;
+  const Comparer& cmp;
+  const VerifyOptions& options;
+  Diagnostics& nc_diags;
+  std::vector<ThreadAccumulator> threads{};  // one per plan
+  size_t problems = 0;
+  // The thread an unmatched program cut is reported with: the last thread seen, else the next.
+  size_t last_thread = 0;
+  const NcCut* last_cut = nullptr;
+};
+
+// The program cut at index `b` of the alignment; null for none (-1).
+const NcCut* program_cut(const Walk& w, long b) {
+  return b >= 0 ? &w.cuts[w.order[static_cast<size_t>(b)]] : nullptr;
+}
+
+// A problem of thread `t`, in its verdict and as an error at the NC block `at` (none: null).
+void problem(Walk& w, size_t t, const NcCut* at, std::string message) {
+  w.threads[t].verdict.problems.push_back(message);
+  ++w.problems;
+  w.nc_diags.error(
+      SourceLoc{at ? at->line : 0, at ? 1u : 0u}, at ? at->line_text : "",
+      fmt::format("thread at {}:{}: {}", w.options.plan_name, w.plans[t].loc.line, message));
+}
+
+// A pass the program cuts: compared, and counted in its thread's NC lines, blocks and accepted
+// pass ends.
+void matched_cut(Walk& w, const ExpectedCut& e, const NcCut& c) {
+  ThreadAccumulator& a = w.threads[e.thread];
+  ++a.verdict.cut;
+  a.first_line = a.first_line == 0 ? c.line : std::min(a.first_line, c.line);
+  a.last_line = std::max(a.last_line, c.line);
+  if (std::find(a.sources.begin(), a.sources.end(), c.source) == a.sources.end())
+    a.sources.push_back(c.source);
+  const Compared r = w.cmp.compare(e, c);
+  if (w.plans[e.thread].form == ThreadForm::kMulti)
+    a.verdict.program_passes.push_back(w.cmp.measure(e, c));
+  a.accepted = std::max(a.accepted, r.accepted);
+  if (r.cost != 0)
+    problem(w, e.thread, &c, fmt::format("{}: {}", pass_name(w.plans[e.thread], e), r.why));
+}
+
+// A pass the program does not cut (pair `k`): named at the block after which it should have been
+// cut.
+void missing_cut(Walk& w, size_t k, const ExpectedCut& e) {
+  const NcCut* near = w.last_cut;
+  for (size_t q = k + 1; near == nullptr && q < w.pairs.size(); ++q)
+    near = program_cut(w, w.pairs[q].b);
+  problem(w, e.thread, near,
+          fmt::format("{} (depth {:.4f}, from {}) is not cut by the program",
+                      pass_name(w.plans[e.thread], e), e.depth, w.cmp.point(e.from)));
+}
+
+// A program cut the plan does not have (pair `k`): reported with the last thread seen, else the
+// next; without a plan, on its own.
+void extra_cut(Walk& w, size_t k, const NcCut& c) {
+  size_t t = w.last_thread;
+  if (k == 0 || w.pairs[k - 1].a < 0)
+    for (size_t q = k + 1; q < w.pairs.size(); ++q)
+      if (w.pairs[q].a >= 0) {
+        if (w.last_cut == nullptr) t = w.expected[static_cast<size_t>(w.pairs[q].a)].thread;
+        break;
+      }
+  if (w.plans.empty()) {
+    ++w.problems;
+    w.nc_diags.error(SourceLoc{c.line, 1}, c.line_text,
+                     fmt::format("{} cuts a thread (from {} to {}) that the plan does not have",
+                                 c.source, w.cmp.point(c.from), w.cmp.point(c.to)));
+  } else {
+    problem(w, t, &c,
+            fmt::format("the program cuts a pass the plan does not have: {} from {} to {}",
+                        c.source, w.cmp.point(c.from), w.cmp.point(c.to)));
+  }
+}
+
+// Pair `k`: a pass the program cuts, a pass it does not cut, or a cut the plan does not have.
+void walk_pair(Walk& w, size_t k) {
+  const AlignedPair& p = w.pairs[k];
+  const ExpectedCut* e = p.a >= 0 ? &w.expected[static_cast<size_t>(p.a)] : nullptr;
+  const NcCut* c = program_cut(w, p.b);
+  if (e != nullptr) w.last_thread = e->thread;
+  if (e != nullptr && c != nullptr) {
+    matched_cut(w, *e, *c);
+    w.last_cut = c;
+  } else if (e != nullptr) {
+    missing_cut(w, k, *e);
+  } else if (c != nullptr) {
+    extra_cut(w, k, *c);
+    w.last_cut = c;
+  }
+}
+
+// The thread's verdict, finished: how the program cuts it, the pass ends accepted.
+ThreadVerdict verdict_of(ThreadAccumulator& a) {
+  ThreadVerdict& v = a.verdict;
+  std::string src;
+  for (const std::string& s : a.sources) src += (src.empty() ? "" : ", ") + s;
+  if (a.first_line == 0) {
+    v.how = "not cut";
+  } else if (a.first_line == a.last_line) {
+    v.how = fmt::format("{}, NC line {}", src, a.first_line);
+  } else {
+    v.how = fmt::format("{}, NC lines {}-{}", src, a.first_line, a.last_line);
+  }
+  if (a.accepted > 0)
+    v.notes.push_back(fmt::format(
+        "passes end up to {:.4f} from the plan's ends along the thread: the cycle ends every "
+        "pass at its Z (threading.accept_pass_end)",
+        a.accepted));
+  return std::move(v);
 }
 
 }  // namespace
@@ -297,102 +460,19 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
   const std::vector<size_t> order = cutting_order(cuts);
   report.planned_passes = expected.size();
   report.program_cuts = order.size();
-  for (size_t t = 0; t < plans.size(); ++t) {
-    ThreadVerdict v;
-    v.plan = t;
-    report.threads.push_back(v);
-  }
-  for (const ExpectedCut& e : expected) ++report.threads[e.thread].planned;
 
   const Comparer cmp(plans, m, report.tolerance);
-  std::vector<AlignedPair> pairs = align_sequences(
+  const std::vector<AlignedPair> pairs = align_sequences(
       expected.size(), order.size(),
       [&](size_t i, size_t j) { return cmp.compare(expected[i], cuts[order[j]], false).cost; });
 
-  auto thread_name = [&](size_t t) {
-    return fmt::format("thread at {}:{}", options.plan_name, plans[t].loc.line);
-  };
-  std::vector<double> accepted(plans.size(), 0);
-  std::vector<std::pair<uint32_t, uint32_t>> lines(plans.size(), {0, 0});
-  std::vector<std::vector<std::string>> sources(plans.size());
-  auto problem = [&](size_t t, const NcCut* at, std::string message) {
-    ThreadVerdict& v = report.threads[t];
-    v.problems.push_back(message);
-    ++report.problems;
-    nc_diags.error(SourceLoc{at ? at->line : 0, at ? 1u : 0u}, at ? at->line_text : "",
-                   fmt::format("{}: {}", thread_name(t), message));
-  };
-  // The thread an unmatched program cut is reported with: the last thread seen, else the next.
-  size_t last_thread = 0;
-  const NcCut* last_cut = nullptr;
-  for (size_t k = 0; k < pairs.size(); ++k) {
-    const AlignedPair& p = pairs[k];
-    if (p.a >= 0) last_thread = expected[static_cast<size_t>(p.a)].thread;
-    const NcCut* c = p.b >= 0 ? &cuts[order[static_cast<size_t>(p.b)]] : nullptr;
-    if (p.a >= 0 && c != nullptr) {
-      const ExpectedCut& e = expected[static_cast<size_t>(p.a)];
-      ThreadVerdict& v = report.threads[e.thread];
-      ++v.cut;
-      auto& l = lines[e.thread];
-      l.first = l.first == 0 ? c->line : std::min(l.first, c->line);
-      l.second = std::max(l.second, c->line);
-      auto& src = sources[e.thread];
-      if (std::find(src.begin(), src.end(), c->source) == src.end()) src.push_back(c->source);
-      const Compared r = cmp.compare(e, *c);
-      if (plans[e.thread].form == ThreadForm::kMulti)
-        v.program_passes.push_back(cmp.measure(e, *c));
-      accepted[e.thread] = std::max(accepted[e.thread], r.accepted);
-      if (r.cost != 0)
-        problem(e.thread, c, fmt::format("{}: {}", pass_name(plans[e.thread], e), r.why));
-      last_cut = c;
-    } else if (p.a >= 0) {
-      const ExpectedCut& e = expected[static_cast<size_t>(p.a)];
-      // Name the block after which the pass should have been cut.
-      const NcCut* near = last_cut;
-      for (size_t q = k + 1; near == nullptr && q < pairs.size(); ++q)
-        if (pairs[q].b >= 0) near = &cuts[order[static_cast<size_t>(pairs[q].b)]];
-      problem(e.thread, near,
-              fmt::format("{} (depth {:.4f}, from {}) is not cut by the program",
-                          pass_name(plans[e.thread], e), e.depth, cmp.point(e.from)));
-    } else if (c != nullptr) {
-      size_t t = last_thread;
-      if (k == 0 || pairs[k - 1].a < 0)
-        for (size_t q = k + 1; q < pairs.size(); ++q)
-          if (pairs[q].a >= 0) {
-            if (last_cut == nullptr) t = expected[static_cast<size_t>(pairs[q].a)].thread;
-            break;
-          }
-      if (plans.empty()) {
-        ++report.problems;
-        nc_diags.error(SourceLoc{c->line, 1}, c->line_text,
-                       fmt::format("{} cuts a thread (from {} to {}) that the plan does not have",
-                                   c->source, cmp.point(c->from), cmp.point(c->to)));
-      } else {
-        problem(t, c,
-                fmt::format("the program cuts a pass the plan does not have: {} from {} to {}",
-                            c->source, cmp.point(c->from), cmp.point(c->to)));
-      }
-      last_cut = c;
-    }
-  }
-  for (size_t t = 0; t < plans.size(); ++t) {
-    ThreadVerdict& v = report.threads[t];
-    std::string src;
-    for (const std::string& s : sources[t]) src += (src.empty() ? "" : ", ") + s;
-    const auto [first, last] = lines[t];
-    if (first == 0) {
-      v.how = "not cut";
-    } else if (first == last) {
-      v.how = fmt::format("{}, NC line {}", src, first);
-    } else {
-      v.how = fmt::format("{}, NC lines {}-{}", src, first, last);
-    }
-    if (accepted[t] > 0)
-      v.notes.push_back(fmt::format(
-          "passes end up to {:.4f} from the plan's ends along the thread: the cycle ends every "
-          "pass at its Z (threading.accept_pass_end)",
-          accepted[t]));
-  }
+  Walk w{plans, expected, cuts, order, pairs, cmp, options, nc_diags};
+  w.threads.resize(plans.size());
+  for (size_t t = 0; t < plans.size(); ++t) w.threads[t].verdict.plan = t;
+  for (const ExpectedCut& e : expected) ++w.threads[e.thread].verdict.planned;
+  for (size_t k = 0; k < pairs.size(); ++k) walk_pair(w, k);
+  for (ThreadAccumulator& a : w.threads) report.threads.push_back(verdict_of(a));
+  report.problems = w.problems;
   return report.problems == 0;
 }
 
