@@ -677,27 +677,25 @@ INSTANTIATE_TEST_SUITE_P(Machines, ConformanceMatrix, ::testing::ValuesIn(machin
 // the thread's bottom word moves, or in proportion when the total depth word grows by 0.1 (these
 // laws scale with it).
 struct CycleEdit {
-  ThreadCycle thread_cycle;  // the machine's threading.cycle
-  std::string cycle;         // the word that must be in the program once
-  std::regex word;           // group 1: the number to change
-  double by;                 // added to it
-  bool proportional;         // false: every depth + 0.1; true: every depth x (D + 0.1) / D
+  std::string_view thread_cycle;  // the machine's threading.cycle
+  std::string cycle;              // the word that must be in the program once
+  std::regex word;                // group 1: the number to change
+  double by;                      // added to it
+  bool proportional;              // false: every depth + 0.1; true: every depth x (D + 0.1) / D
 };
 
 std::vector<CycleEdit> cycle_edits() {
   return {
       // Fanuc's second G76 block: X is the thread bottom (diameter); P the height stays, so the
       // crest moves with it.
-      {ThreadCycle::kFanucG76, "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
-      {ThreadCycle::kHaasG76, "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
+      {"fanuc_g76", "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
+      {"haas_g76", "G76 X", std::regex(R"re(G76 X([0-9.]+) Z)re"), -0.2, false},
       // LinuxCNC: I is the crest's offset from the drive line (diameter mode).
-      {ThreadCycle::kLinuxcncG76, "G76 P", std::regex(R"re(G76 P[0-9.]+ Z[-0-9.]+ I(-[0-9.]+) )re"),
-       -0.2, false},
+      {"linuxcnc_g76", "G76 P", std::regex(R"re(G76 P[0-9.]+ Z[-0-9.]+ I(-[0-9.]+) )re"), -0.2,
+       false},
       // CYCLE99's 7th argument TDEP; HEIDENHAIN G31 U: the thread depth.
-      {ThreadCycle::kCycle99, "CYCLE99(", std::regex(R"re(CYCLE99\((?:[^,]+, ){6}([0-9.]+), )re"),
-       0.1, true},
-      {ThreadCycle::kHeidenhainG31, "G31 F", std::regex(R"re(G31 F[0-9.]+ U([0-9.]+) )re"), 0.1,
-       true},
+      {"cycle99", "CYCLE99(", std::regex(R"re(CYCLE99\((?:[^,]+, ){6}([0-9.]+), )re"), 0.1, true},
+      {"heidenhain_g31", "G31 F", std::regex(R"re(G31 F[0-9.]+ U([0-9.]+) )re"), 0.1, true},
   };
 }
 
@@ -713,7 +711,8 @@ class CycleDepthWord : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CycleDepthWord, EditIsReportedPassByPass) {
   const std::string machine = GetParam();
-  const ThreadCycle thread_cycle = shipped_machine(machine).thread_cycle;
+  const Machine shipped = shipped_machine(machine);
+  const std::string_view thread_cycle = shipped.control ? shipped.control->cycle : "none";
   const std::vector<CycleEdit> edits = cycle_edits();
   const auto edit = std::find_if(edits.begin(), edits.end(), [&](const CycleEdit& e) {
     return e.thread_cycle == thread_cycle;

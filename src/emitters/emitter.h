@@ -50,12 +50,9 @@ std::unique_ptr<Emitter> make_emitter(const Machine& m);
 // What make_emitter(m) tries, in order: "CYCLE99, else G33 loop" (for `clpost machines`).
 std::string threading_summary(const Machine& m);
 
-// The emitter of one cycle / loop style (nullptr for ThreadCycle::kNone), and the cycle that
-// cuts chained threads on machine `m` (nullptr when it has none): the registry's
-// (controls/registry_output.cc).
-std::unique_ptr<Emitter> make_cycle_emitter(ThreadCycle c);
+// The emitter of a loop style (controls/registry_output.cc); a machine's cycle is its control's
+// (controls/control.h).
 std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l);
-std::unique_ptr<Emitter> make_chain_emitter(const Machine& m);
 std::unique_ptr<Emitter> make_emulation_emitter();
 
 }  // namespace clpost

@@ -125,7 +125,7 @@ std::vector<std::unique_ptr<Emitter>> emitter_chain(const Machine& m) {
   // The strategy's own output; a style this build does not have degrades to the next simpler.
   switch (m.thread_strategy) {
     case ThreadStrategy::kCycle:
-      if (add(make_cycle_emitter(m.thread_cycle))) break;
+      if (add(m.control ? m.control->cycle_emitter() : nullptr)) break;
       [[fallthrough]];
     case ThreadStrategy::kLoop:
       if (add(make_loop_emitter(m.thread_loop))) break;
@@ -150,6 +150,15 @@ std::vector<std::unique_ptr<Emitter>> emitter_chain(const Machine& m) {
 }
 
 }  // namespace
+
+// The first chain cycle a control of the machine's set writes on it (CYCLE98 where the machine
+// has its template), or null.
+std::unique_ptr<Emitter> make_chain_emitter(const Machine& m) {
+  for (const Control* c : m.controls)
+    if (c->chain_emitter)
+      if (std::unique_ptr<Emitter> e = c->chain_emitter(m)) return e;
+  return nullptr;
+}
 
 std::unique_ptr<Emitter> make_emitter(const Machine& m) {
   // A machine with a chain cycle's template cuts chained threads with it where it is exact.

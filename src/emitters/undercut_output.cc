@@ -63,6 +63,13 @@ class Din76ContourOutput : public CycleOutput<Undercut> {
 
 }  // namespace
 
+std::unique_ptr<CycleOutput<Undercut>> make_undercut_cycle(const Machine& m) {
+  for (const Control* c : m.controls)
+    if (c->undercut_cycle)
+      if (std::unique_ptr<CycleOutput<Undercut>> u = c->undercut_cycle(m)) return u;
+  return nullptr;
+}
+
 bool write_undercut(NcProgram& prog, const Undercut& u, const EmitContext& ctx,
                     UndercutWritten& written) {
   const Machine& m = prog.machine();

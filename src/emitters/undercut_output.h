@@ -35,7 +35,8 @@ struct UndercutWritten {
 bool write_undercut(NcProgram& prog, const Undercut& u, const EmitContext& ctx,
                     UndercutWritten& written);
 
-// The undercut cycle of machine `m`, or null (controls/registry_output.cc).
+// The undercut cycle a control of the machine's set writes on it (CYCLE96 where the machine has
+// its template), or null.
 std::unique_ptr<CycleOutput<Undercut>> make_undercut_cycle(const Machine& m);
 
 }  // namespace clpost

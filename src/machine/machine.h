@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "controls/control_id.h"
+#include "controls/control.h"
 
 namespace clpost {
 
@@ -23,7 +23,7 @@ struct NumberFormat {
 enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
 enum class ThreadFallback : uint8_t { kLoop, kEmulate, kError };
 // The control's single-pass loop block (threading.loop); the multi-pass cycle (threading.cycle)
-// is a registered control's, controls/control_id.h. See docs/machines.md.
+// is a registered control's (controls/control.h). See docs/machines.md.
 enum class ThreadLoop : uint8_t { kG33, kG92 };
 // kAuto (cl.radial_axis only): the radial axis is found from the program (the one of the two
 // non-axial axes that is not constantly 0).
@@ -60,7 +60,10 @@ struct Machine {
   bool variable_lead = false;             // G34/G35 style variable lead
   std::string thread_lead_address = "F";  // G33 lead word (F, K, ...)
   std::string start_angle_address = "Q";  // when start_angle_word
-  ThreadCycle thread_cycle = ThreadCycle::kNone;
+  // The control threading.cycle selects (null: "none", plain ISO), from `controls`: the set the
+  // machine was loaded with (the registry's shipped_controls(), or a test's own).
+  const Control* control = nullptr;
+  ControlSet controls;
   ThreadLoop thread_loop = ThreadLoop::kG33;
   std::string thread_lead_address_x;  // lead word when the X travel dominates ("" = same)
   std::string tpi_address;            // threads-per-inch word used when the CL gave TPI ("" none)

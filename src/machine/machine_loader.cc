@@ -122,6 +122,19 @@ int get_choice(Ctx& c, const YAML::Node& n, std::string_view key, std::span<cons
   return -1;
 }
 
+// The control `n` names by its cycle in `set` ("none": null); false after an error naming the
+// set's cycles.
+bool get_control(Ctx& c, const YAML::Node& n, std::string_view key, ControlSet set,
+                 const Control*& out) {
+  if (n.IsScalar() && n.Scalar() == "none") return out = nullptr, true;
+  if (n.IsScalar())
+    if (const Control* ctl = find_control(set, n.Scalar())) return out = ctl, true;
+  std::vector<Choice> choices{{"none"}};
+  for (const Control* ctl : set) choices.push_back({ctl->cycle});
+  get_choice(c, n, key, choices);
+  return false;
+}
+
 bool get_list(Ctx& c, const YAML::Node& n, std::string_view key, std::vector<std::string>& out) {
   if (!n.IsSequence()) return c.error(n, fmt::format("'{}' must be a list", key)), false;
   out.clear();
@@ -148,13 +161,17 @@ bool set_member(Ctx& c, const YAML::Node& n, std::string_view path, KeyType type
       if constexpr (std::is_same_v<V, bool>) return get_bool(c, n, path, v);
       return false;
     }
-    const int i = get_choice(c, n, path, choices);
-    if (i < 0) return false;
-    if constexpr (std::is_same_v<V, std::string>)
-      v = std::string(choices[i].stored);
-    else
-      v = static_cast<V>(i);  // enums in choice order; bool: the second choice is true
-    return true;
+    if constexpr (std::is_same_v<V, const Control*>) {
+      return get_control(c, n, path, obj.controls, v);
+    } else {
+      const int i = get_choice(c, n, path, choices);
+      if (i < 0) return false;
+      if constexpr (std::is_same_v<V, std::string>)
+        v = std::string(choices[i].stored);
+      else
+        v = static_cast<V>(i);  // enums in choice order; bool: the second choice is true
+      return true;
+    }
   }
 }
 
@@ -551,7 +568,7 @@ bool apply_override(const std::string& ov, Machine& m, std::string& errors, KeyO
 
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
                   const std::vector<std::string>& overrides, Machine& out, std::string& errors,
-                  KeyOrigins* origins) {
+                  KeyOrigins* origins, ControlSet controls) {
   std::string path;
   if (!find_machine_file(name_or_path, data_dirs, path, errors)) return false;
   std::string machine_text;
@@ -561,12 +578,14 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
   }
   // The machine file names its post; read that first so the machine's keys override it.
   Machine probe;
+  probe.controls = controls;
   std::string probe_errors;
   if (!apply_machine_yaml(path, machine_text, false, probe, probe_errors)) {
     errors += probe_errors;
     return false;
   }
   Machine m;
+  m.controls = controls;
   m.name = fs::path(path).stem().string();
   m.source = path;
   if (!probe.post.empty() &&

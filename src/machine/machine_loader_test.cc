@@ -187,6 +187,7 @@ TEST(MachineLoader, EmptiedRequiredCodeIsAnError) {
 
 TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
   Machine m;
+  m.controls = shipped_controls();
   std::string errors;
   EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading: {cycle: g76}\n", false, m, errors));
   EXPECT_NE(errors.find("m.yaml:1:20: error: 'threading.cycle' must be one of"), std::string::npos)
@@ -198,7 +199,8 @@ TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
                                  "lead_address_x: I}\n",
                                  false, m, errors))
       << errors;
-  EXPECT_EQ(m.thread_cycle, ThreadCycle::kFanucG76);
+  ASSERT_NE(m.control, nullptr);
+  EXPECT_EQ(m.control->cycle, "fanuc_g76");
   EXPECT_EQ(m.thread_loop, ThreadLoop::kG92);
   EXPECT_DOUBLE_EQ(m.run_in, 2.5);
   EXPECT_DOUBLE_EQ(m.thread_tolerance, 0.005);

@@ -6,6 +6,7 @@
 #include <array>
 #include <type_traits>
 
+#include "controls/registry.h"
 #include "controls/registry_templates.h"
 #include "support/json_text.h"
 
@@ -21,10 +22,11 @@ constexpr Choice kRadialAxes[] = {{"x"}, {"y"}, {"z"}, {"auto"}};  // ClAxis ord
 constexpr Choice kLineEndings[] = {{"lf", "\n"}, {"crlf", "\r\n"}};
 constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};  // ThreadStrategy order
 constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};   // ThreadFallback order
-// ThreadCycle order: the registered controls' cycles (controls/control_id.h).
+// The shipped controls' cycles, as documented (a machine's own set decides what loads:
+// machine_loader.cc).
 constexpr auto kCycles = [] {
-  std::array<Choice, kThreadCycleNames.size()> c{};
-  for (size_t i = 0; i < c.size(); ++i) c[i] = Choice{kThreadCycleNames[i]};
+  std::array<Choice, kShippedCycles.size()> c{};
+  for (size_t i = 0; i < c.size(); ++i) c[i] = Choice{kShippedCycles[i]};
   return c;
 }();
 constexpr Choice kLoops[] = {{"g33"}, {"g92"}};           // ThreadLoop order
@@ -123,7 +125,7 @@ const KeySpec kKeys[] = {
      "what to try first: the control's multi-pass cycle, its single-pass loop block, or plain "
      "G1/G33 emulation",
      0, 0, kStrategies},
-    {"threading.cycle", kThr, kChoice, &M::thread_cycle,
+    {"threading.cycle", kThr, kChoice, &M::control,
      "which cycle `strategy: cycle` writes (it needs the template of that name)", 0, 0, kCycles},
     {"threading.loop", kThr, kChoice, &M::thread_loop,
      "the loop block: G33 chains (Siemens, NCT, LinuxCNC, Heidenhain) or Fanuc G92 (templates g92 "
@@ -364,6 +366,8 @@ std::string key_value_text(const KeySpec& k, const Machine& m) {
           return number_text(v);
         } else if constexpr (std::is_same_v<V, int>) {
           return fmt::format("{}", v);
+        } else if constexpr (std::is_same_v<V, const Control*>) {
+          return std::string(v != nullptr ? v->cycle : "none");
         } else {  // an enum: the choice of its index
           const size_t i = static_cast<size_t>(v);
           return i < k.choices.size() ? std::string(k.choices[i].name) : std::string("?");

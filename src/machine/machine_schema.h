@@ -27,7 +27,7 @@ struct Choice {
 using MachineMember =
     std::variant<std::string Machine::*, bool Machine::*, double Machine::*, int Machine::*,
                  std::vector<std::string> Machine::*, ThreadStrategy Machine::*,
-                 ThreadFallback Machine::*, ThreadCycle Machine::*, ThreadLoop Machine::*,
+                 ThreadFallback Machine::*, const Control * Machine::*, ThreadLoop Machine::*,
                  ClAxis Machine::*>;
 using FormatMember =
     std::variant<int NumberFormat::*, bool NumberFormat::*, double NumberFormat::*>;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "controls/fanuc/fanuc_templates.h"
+#include "controls/registry.h"
 #include "machine/machine_loader.h"
 #include "machine/schema_markdown.h"
 
@@ -74,7 +75,7 @@ TEST(MachineSchema, WhichTemplatesAMachineNeeds) {
   EXPECT_TRUE(template_required(tmpl::kProgramStart, m));
   EXPECT_FALSE(template_required(tmpl::kSpindleCss, m));  // only SPINDL/…,SMM reaches it
   EXPECT_FALSE(template_required(tmpl::kFanucG76, m));
-  m.thread_cycle = ThreadCycle::kFanucG76;
+  m.control = find_control(shipped_controls(), "fanuc_g76");
   EXPECT_TRUE(template_required(tmpl::kFanucG76, m));
   EXPECT_FALSE(template_required(tmpl::kG92, m));
   m.thread_loop = ThreadLoop::kG92;

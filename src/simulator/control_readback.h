@@ -1,11 +1,10 @@
 #pragma once
 // What a control contributes to the simulation (control_sim.cc): its cycles and calls read back
-// with its laws, and the dialect words whose meaning is its own. Each registered control has one
-// (controls/registry_readback.cc); control_sim.cc knows no control by name.
+// with its laws, and the dialect words whose meaning is its own. Each control has one, in its
+// folder (its Control's readback, controls/control.h); control_sim.cc knows no control by name.
 #include <span>
 #include <string_view>
 
-#include "controls/control_id.h"
 #include "machine/machine.h"
 #include "nc_reader/nc_block.h"
 
@@ -32,12 +31,8 @@ struct ControlReadback {
   bool uw_are_cycle_words = false;
 };
 
-// The read-back of the control threading.cycle `c` selects (controls/registry_readback.cc).
-const ControlReadback& control_readback(ThreadCycle c);
 // The reader of the loop block threading.loop `l` selects, when it is a cycle of its own (G92);
-// null for G33, read as moves.
+// null for G33, read as moves (controls/registry_readback.cc).
 CycleReader loop_reader(ThreadLoop l);
-// Every registered control's read-back, in ThreadCycle order.
-std::span<const ControlReadback* const> control_readbacks();
 
 }  // namespace clpost::sim

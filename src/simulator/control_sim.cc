@@ -166,7 +166,8 @@ Codes codes_of(const Machine& m) {
   c.inch = sim::parse_code(m.code("inch"));
   c.dwell = sim::template_code(m, "dwell");
   c.modal = sim::modal_words(m);
-  c.control = &sim::control_readback(m.thread_cycle);
+  static constexpr sim::ControlReadback kPlainIso{};
+  c.control = m.control && m.control->readback ? m.control->readback : &kPlainIso;
   c.diameter_on = sim::parse_code(c.control->diameter_on);
   c.diameter_off = sim::parse_code(c.control->diameter_off);
   const std::string& open = m.comment_open;
@@ -262,8 +263,8 @@ bool settings_block(State& s, const NcBlock& b, const Codes& c) {
 bool cycle_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::hole_cycle_block(s, b)) return true;
   if (!b.calls.empty()) {
-    for (const sim::ControlReadback* r : sim::control_readbacks())
-      if (r->call != nullptr && r->call(s, b)) break;
+    for (const Control* ctl : s.m.controls)
+      if (ctl->readback && ctl->readback->call && ctl->readback->call(s, b)) break;
     return true;
   }
   if (c.control->cycle != nullptr && c.control->cycle(s, b)) return true;

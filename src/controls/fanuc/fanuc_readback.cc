@@ -111,4 +111,6 @@ bool g92_cycle(State& s, const NcBlock& b) {
   return true;
 }
 
+const ControlReadback kFanucReadback{.cycle = fanuc_g76};
+
 }  // namespace clpost::sim

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "nc_reader/nc_block.h"
+#include "simulator/control_readback.h"
 
 namespace clpost::sim {
 
@@ -14,5 +15,8 @@ bool fanuc_g76(State& s, const NcBlock& b);
 bool g92_cycle(State& s, const NcBlock& b);
 // The format of G76's P/Q depth words (µm in mm programs, 0.1 µm in inch ones); Haas's G76 too.
 std::string_view g76_depth_format(const State& s);
+
+// What the control contributes to the simulation (its Control's readback).
+extern const ControlReadback kFanucReadback;
 
 }  // namespace clpost::sim

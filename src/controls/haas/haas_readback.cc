@@ -48,4 +48,6 @@ bool haas_g76(State& s, const NcBlock& b) {
   return true;
 }
 
+const ControlReadback kHaasReadback{.cycle = haas_g76};
+
 }  // namespace clpost::sim

@@ -2,11 +2,15 @@
 // Haas's one-block G76 read back (simulator/), expanded with its law (haas_law.h) and the
 // machine's settings. True when the block was the cycle (handled, errors reported).
 #include "nc_reader/nc_block.h"
+#include "simulator/control_readback.h"
 
 namespace clpost::sim {
 
 struct State;
 
 bool haas_g76(State& s, const NcBlock& b);
+
+// What the control contributes to the simulation (its Control's readback).
+extern const ControlReadback kHaasReadback;
 
 }  // namespace clpost::sim

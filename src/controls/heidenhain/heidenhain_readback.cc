@@ -89,4 +89,9 @@ bool heidenhain_g31(State& s, const NcBlock& b) {
   return true;
 }
 
+const ControlReadback kHeidenhainReadback{
+    .cycle = heidenhain_g31,
+    .unclosed = "G31 has no G80: the thread cycle's contour is not closed",
+    .uw_are_cycle_words = true};
+
 }  // namespace clpost::sim

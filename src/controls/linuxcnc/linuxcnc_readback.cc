@@ -53,4 +53,7 @@ bool linuxcnc_g76(State& s, const NcBlock& b) {
   return true;
 }
 
+const ControlReadback kLinuxcncReadback{
+    .cycle = linuxcnc_g76, .diameter_on = "G7", .diameter_off = "G8"};
+
 }  // namespace clpost::sim

@@ -109,4 +109,15 @@ bool cycle98_call(State& s, const NcBlock& b) {
   return true;
 }
 
+namespace {
+
+bool sinumerik_call(State& s, const NcBlock& b) {
+  return cycle99_call(s, b) || cycle98_call(s, b);
+}
+
+}  // namespace
+
+const ControlReadback kSinumerikReadback{
+    .call = sinumerik_call, .diameter_on = "DIAMON", .diameter_off = "DIAMOF"};
+
 }  // namespace clpost::sim

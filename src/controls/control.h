@@ -1,0 +1,46 @@
+#pragma once
+// A control clpost writes for and reads back: one folder of src/controls/ (its laws, emitters and
+// read-back), described by one Control in its <control>_control.cc and listed by the registry
+// (registry.h). A machine selects its control with threading.cycle; nothing outside the folder
+// and the registry names a control. docs/adding-a-control.md walks through adding one.
+#include <memory>
+#include <span>
+#include <string_view>
+
+namespace clpost {
+
+struct Machine;
+struct ThreadPlan;
+struct Undercut;
+template <class Job>
+class CycleOutput;
+namespace sim {
+struct ControlReadback;
+}
+
+struct Control {
+  std::string_view name;   // its folder: "fanuc"
+  std::string_view cycle;  // the threading.cycle value that selects it: "fanuc_g76"
+  // Its multi-pass thread cycle, written where it cuts the plan exactly (emitters/emitter.h).
+  std::unique_ptr<CycleOutput<ThreadPlan>> (*cycle_emitter)() = nullptr;
+  // Its cycle for chained threads on machine `m`, or null (m has not its template). Tried on
+  // every machine, whatever its threading.cycle.
+  std::unique_ptr<CycleOutput<ThreadPlan>> (*chain_emitter)(const Machine& m) = nullptr;
+  // Its thread undercut cycle on machine `m`, or null; tried on every machine.
+  std::unique_ptr<CycleOutput<Undercut>> (*undercut_cycle)(const Machine& m) = nullptr;
+  // How its programs read back (simulator/control_readback.h).
+  const sim::ControlReadback* readback = nullptr;
+};
+
+// The controls a machine may select: the registry's (shipped_controls()), or a test's own.
+using ControlSet = std::span<const Control* const>;
+
+// The control of `set` that threading.cycle `cycle` selects, or null ("none" selects none: plain
+// ISO, G33 loops and emulation).
+inline const Control* find_control(ControlSet set, std::string_view cycle) {
+  for (const Control* c : set)
+    if (c->cycle == cycle) return c;
+  return nullptr;
+}
+
+}  // namespace clpost

@@ -1,0 +1,15 @@
+// Fanuc (system A lathe): the two-block G76 (fanuc_emitter.h, fanuc_law.h) and its read-back.
+#include "controls/control.h"
+#include "controls/fanuc/fanuc_emitter.h"
+#include "controls/fanuc/fanuc_readback.h"
+
+namespace clpost {
+
+extern const Control kFanucControl{.name = "fanuc",
+                                   .cycle = "fanuc_g76",
+                                   .cycle_emitter = []() -> std::unique_ptr<Emitter> {
+                                     return std::make_unique<FanucG76Emitter>();
+                                   },
+                                   .readback = &sim::kFanucReadback};
+
+}  // namespace clpost

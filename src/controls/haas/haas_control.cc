@@ -1,0 +1,16 @@
+// Haas lathe: the one-block G76 (haas_emitter.h, haas_law.h) and its read-back; its G92 is
+// Fanuc's (threading.loop: g92).
+#include "controls/control.h"
+#include "controls/haas/haas_emitter.h"
+#include "controls/haas/haas_readback.h"
+
+namespace clpost {
+
+extern const Control kHaasControl{.name = "haas",
+                                  .cycle = "haas_g76",
+                                  .cycle_emitter = []() -> std::unique_ptr<Emitter> {
+                                    return std::make_unique<HaasG76Emitter>();
+                                  },
+                                  .readback = &sim::kHaasReadback};
+
+}  // namespace clpost
