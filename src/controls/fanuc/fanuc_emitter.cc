@@ -22,6 +22,62 @@ std::string describe_pullout(const ThreadPlan& plan) {
   return fmt::format("X {:.4g}, Z {:.4g}", plan.pullout->x, plan.pullout->z);
 }
 
+namespace {
+
+// The start's passes (heights, shifts, cuts) and the flank angle every one is shifted by, -1 when
+// they do not share one (alternating); "" when read, else why not.
+std::string read_passes(const ThreadPlan& plan, int start, CyclePlan& out) {
+  std::optional<double> flank;
+  bool one_angle = true;
+  for (const ThreadPass& p : plan.passes) {
+    if (p.start != start) continue;
+    out.heights.push_back(p.depth / out.cos_t);
+    out.shifts.push_back(p.shift);
+    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end, {}});
+    if (p.depth <= 1e-12) continue;
+    const double a = deg(std::atan(p.shift / p.depth));
+    if (flank && std::fabs(*flank - a) > 1e-6) one_angle = false;
+    if (!flank) flank = a;
+  }
+  if (out.heights.empty()) return fmt::format("start {} has no pass", start + 1);
+  out.flank = !one_angle ? -1 : flank.value_or(0);
+  return {};
+}
+
+// The plan's pull-out as the cycle's chamfer along the thread (length along Z and angle); "" when
+// read, else why it is not one.
+std::string read_chamfer(const ThreadPlan& plan, std::string_view cycle, CyclePlan& out) {
+  const double dirz = out.t.z < 0 ? -1 : 1;
+  const Vec2 v = *plan.pullout;
+  const double along = v.z * dirz, up = v.x * out.outward;
+  if (along <= 1e-9 || up <= 1e-9)
+    return fmt::format("pull-out ({}) is not a chamfer along the thread: {} has none",
+                       describe_pullout(plan), cycle);
+  out.chamfer = along;
+  out.chamfer_angle = deg(std::atan2(up, along));
+  return {};
+}
+
+// The cycle start: the clear line at the start's P1 Z (the first pass's start less its shift);
+// and its full-depth end, where the deepest pass ends.
+void set_start_and_end(const ThreadPlan& plan, int start, CyclePlan& out) {
+  const ThreadPass* first = nullptr;
+  const ThreadPass* deepest = nullptr;
+  for (const ThreadPass& p : plan.passes) {
+    if (p.start != start) continue;
+    if (!first) first = &p;
+    if (!deepest || p.depth >= deepest->depth - 1e-12) deepest = &p;
+  }
+  const double a_z = first->from.z - first->shift * out.t.z;
+  const Vec2 e = plan.end_position;
+  out.start = {e.x + out.slope * (a_z - e.z), a_z};
+  const double z_end = deepest->pullout_end.z;
+  const double h_max = deepest->depth / out.cos_t;
+  out.end = {plan.p1.x + out.slope * (z_end - plan.p1.z) - out.outward * h_max, z_end};
+}
+
+}  // namespace
+
 std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view cycle,
                             CyclePlan& out) {
   if (plan.form == ThreadForm::kChain)
@@ -42,45 +98,11 @@ std::string read_cycle_plan(const ThreadPlan& plan, int start, std::string_view 
         "CUTANG {:g}: {} infeeds from a radial line (along the flank at half the "
         "tool angle)",
         plan.cutang, cycle);
-  // The flank angle every pass is shifted by; -1 when the passes do not share one (alternating).
-  std::optional<double> flank;
-  bool one_angle = true;
-  for (const ThreadPass& p : plan.passes) {
-    if (p.start != start) continue;
-    out.heights.push_back(p.depth / out.cos_t);
-    out.shifts.push_back(p.shift);
-    out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end, {}});
-    if (p.depth <= 1e-12) continue;
-    const double a = deg(std::atan(p.shift / p.depth));
-    if (flank && std::fabs(*flank - a) > 1e-6) one_angle = false;
-    if (!flank) flank = a;
-  }
-  if (out.heights.empty()) return fmt::format("start {} has no pass", start + 1);
-  out.flank = !one_angle ? -1 : flank.value_or(0);
-  const double dirz = out.t.z < 0 ? -1 : 1;
+  if (std::string why = read_passes(plan, start, out); !why.empty()) return why;
   if (plan.pullout) {
-    const Vec2 v = *plan.pullout;
-    const double along = v.z * dirz, up = v.x * out.outward;
-    if (along <= 1e-9 || up <= 1e-9)
-      return fmt::format("pull-out ({}) is not a chamfer along the thread: {} has none",
-                         describe_pullout(plan), cycle);
-    out.chamfer = along;
-    out.chamfer_angle = deg(std::atan2(up, along));
+    if (std::string why = read_chamfer(plan, cycle, out); !why.empty()) return why;
   }
-  // The cycle start: the clear line at the start's P1 Z (the first pass's start less its shift).
-  const ThreadPass* first = nullptr;
-  const ThreadPass* deepest = nullptr;
-  for (const ThreadPass& p : plan.passes) {
-    if (p.start != start) continue;
-    if (!first) first = &p;
-    if (!deepest || p.depth >= deepest->depth - 1e-12) deepest = &p;
-  }
-  const double a_z = first->from.z - first->shift * out.t.z;
-  const Vec2 e = plan.end_position;
-  out.start = {e.x + out.slope * (a_z - e.z), a_z};
-  const double z_end = deepest->pullout_end.z;
-  const double h_max = deepest->depth / out.cos_t;
-  out.end = {plan.p1.x + out.slope * (z_end - plan.p1.z) - out.outward * h_max, z_end};
+  set_start_and_end(plan, start, out);
   return {};
 }
 

@@ -23,6 +23,31 @@ Vec2 clear_start(const ThreadPlan& plan) {
   return plan.end_position;  // the clear line above the thread start
 }
 
+// Why G31 cannot cut the plan's kind of thread ("" when it can): one straight, single-start
+// multi-pass thread of constant pitch, fed in radially or by the flank offset, without pull-out.
+std::string shape_mismatch(const ThreadPlan& plan) {
+  if (plan.form == ThreadForm::kChain)
+    return "a chained thread: clpost writes G31 for one straight thread line only";
+  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
+    return "G31 cuts multi-pass threads only";
+  if (plan.pitch.lead_change != 0)
+    return "G31 cuts a constant pitch; the CL gives a variable lead, INCR/DECR";
+  if (plan.pitch.starts > 1)
+    return fmt::format(
+        "G31's multi-start order and spacing, D and C, are not documented; "
+        "the thread has {} starts",
+        plan.pitch.starts);
+  if (plan.option == 0)
+    return "G31 has no infeed type for OPTION 0, steps decreasing by a constant amount";
+  if (std::fmod(std::fabs(plan.cutang), 90.0) > 1e-9)
+    return fmt::format(
+        "G31 feeds in radially or by its flank offset H; CUTANG {} is not "
+        "mapped",
+        plan.cutang);
+  if (plan.pullout) return "G31's run-out K geometry is not documented; the plan has a pull-out";
+  return {};
+}
+
 }  // namespace
 
 std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& plan,
@@ -31,26 +56,7 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
     why = std::move(reason);
     return std::nullopt;
   };
-  if (plan.form == ThreadForm::kChain)
-    return no("a chained thread: clpost writes G31 for one straight thread line only");
-  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
-    return no("G31 cuts multi-pass threads only");
-  if (plan.pitch.lead_change != 0)
-    return no("G31 cuts a constant pitch; the CL gives a variable lead, INCR/DECR");
-  if (plan.pitch.starts > 1)
-    return no(
-        fmt::format("G31's multi-start order and spacing, D and C, are not documented; "
-                    "the thread has {} starts",
-                    plan.pitch.starts));
-  if (plan.option == 0)
-    return no("G31 has no infeed type for OPTION 0, steps decreasing by a constant amount");
-  if (std::fmod(std::fabs(plan.cutang), 90.0) > 1e-9)
-    return no(
-        fmt::format("G31 feeds in radially or by its flank offset H; CUTANG {} is not "
-                    "mapped",
-                    plan.cutang));
-  if (plan.pullout)
-    return no("G31's run-out K geometry is not documented; the plan has a pull-out");
+  if (std::string reason = shape_mismatch(plan); !reason.empty()) return no(reason);
   if (!m.templates.count(kTemplate))
     return no(fmt::format("machine '{}' has no template '{}'", m.name, kTemplate));
   if (std::string why = lead_word_mismatch(m, plan, "F", "F", cut_tolerance(m)); !why.empty())

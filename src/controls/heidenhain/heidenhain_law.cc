@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include "planner/vec2_math.h"
 
@@ -30,6 +31,67 @@ G31FlankCodes g31_flank_codes(const Machine& m) {
 
 using namespace vec2_math;
 
+namespace {
+
+// The direction into the material, at right angles to the element `t`: toward the axis for BD0
+// (external), away from it for BD1 (internal); a face element is cut toward -Z for BD0.
+Vec2 inward_normal(Vec2 t, bool face, int bd) {
+  Vec2 n{t.z, -t.x};
+  const bool toward_axis = bd == 0;
+  if (face ? n.z > 0 : (n.x > 0) == toward_axis) n = -n;
+  if (face && bd != 0) n = -n;
+  return n;
+}
+
+// The flank offset H: the direction along the element every cut is offset in, and whether only
+// the even-numbered cuts are (alternating).
+struct FlankOffset {
+  Vec2 e{0, 0};
+  bool alternating = false;
+};
+
+// The offset H stands for (G31FlankCodes, machine data), or none for an H the law does not cover.
+std::optional<FlankOffset> flank_offset(int h, Vec2 t, bool face, const G31FlankCodes& codes) {
+  FlankOffset f;
+  const Vec2 lead_axis = face ? Vec2{1, 0} : Vec2{0, 1};
+  if (h == 0) {
+  } else if (h == codes.toward_minus) {
+    f.e = dot(t, lead_axis) < 0 ? t : -t;
+  } else if (h == codes.toward_plus) {
+    f.e = dot(t, lead_axis) > 0 ? t : -t;
+  } else if (h == codes.alternating) {
+    f.e = t;
+    f.alternating = true;
+  } else {
+    return std::nullopt;
+  }
+  return f;
+}
+
+// The depth of every cut below the contour: IC cuts, V0 constant cross-section U·√(n/IC), V1
+// constant infeed U·n/IC, then Q air cuts at U.
+std::vector<double> cut_depths(const HeidenhainG31& w) {
+  std::vector<double> depths;
+  for (int i = 1; i <= w.ic; ++i)
+    depths.push_back(w.v == 0 ? w.u * std::sqrt(static_cast<double>(i) / w.ic) : w.u * i / w.ic);
+  for (int i = 0; i < w.q; ++i) depths.push_back(w.u);
+  return depths;
+}
+
+// How far every cut is offset along the element: σ = depth·tan(A), none on the odd-numbered cuts
+// when the offset alternates (they plunge).
+std::vector<double> flank_shifts(const std::vector<double>& depths, double a, bool alternating) {
+  const double tan_a = std::tan(rad(a));
+  std::vector<double> sigma;
+  for (size_t i = 0; i < depths.size(); ++i) {
+    const bool straight = alternating && (i + 1) % 2 == 1;
+    sigma.push_back(straight ? 0 : depths[i] * tan_a);
+  }
+  return sigma;
+}
+
+}  // namespace
+
 std::vector<Cut> expand_heidenhain_g31(const HeidenhainG31& w, const G31FlankCodes& codes,
                                        std::string* error) {
   auto refuse = [&](std::string msg) {
@@ -46,46 +108,23 @@ std::vector<Cut> expand_heidenhain_g31(const HeidenhainG31& w, const G31FlankCod
   if (len <= 0) return refuse("the contour element has no length");
   const Vec2 t = (1 / len) * seg;
   const bool face = std::fabs(seg.x) > std::fabs(seg.z);
-  // Inward normal (into the material), at right angles to the element.
-  Vec2 n{t.z, -t.x};
-  const bool toward_axis = w.bd == 0;
-  if (face ? n.z > 0 : (n.x > 0) == toward_axis) n = -n;
-  if (face && w.bd != 0) n = -n;
-  // Direction of the flank offset.
-  Vec2 e{0, 0};
-  bool alternating = false;
-  const Vec2 lead_axis = face ? Vec2{1, 0} : Vec2{0, 1};
-  if (w.h == 0) {
-  } else if (w.h == codes.toward_minus) {
-    e = dot(t, lead_axis) < 0 ? t : -t;
-  } else if (w.h == codes.toward_plus) {
-    e = dot(t, lead_axis) > 0 ? t : -t;
-  } else if (w.h == codes.alternating) {
-    e = t;
-    alternating = true;
-  } else {
-    return refuse(fmt::format("flank offset H{} is not expanded", w.h));
-  }
-  const double tan_a = std::tan(rad(w.a));
+  const Vec2 n = inward_normal(t, face, w.bd);
+  const std::optional<FlankOffset> flank = flank_offset(w.h, t, face, codes);
+  if (!flank) return refuse(fmt::format("flank offset H{} is not expanded", w.h));
 
-  std::vector<double> depths;
-  for (int i = 1; i <= w.ic; ++i)
-    depths.push_back(w.v == 0 ? w.u * std::sqrt(static_cast<double>(i) / w.ic) : w.u * i / w.ic);
-  for (int i = 0; i < w.q; ++i) depths.push_back(w.u);
-  std::vector<double> sigma;
+  const std::vector<double> depths = cut_depths(w);
+  const std::vector<double> sigma = flank_shifts(depths, w.a, flank->alternating);
   double sigma_max = 0;
-  for (size_t i = 0; i < depths.size(); ++i) {
-    const bool straight = alternating && (i + 1) % 2 == 1;
-    sigma.push_back(straight ? 0 : depths[i] * tan_a);
-    sigma_max = std::max(sigma_max, sigma.back());
-  }
+  for (double s : sigma) sigma_max = std::max(sigma_max, s);
+  // Run-in B before the contour start, run-out P after its end; the largest offset is taken off
+  // every cut's end, so the deepest offset cut ends exactly at the contour end.
   std::vector<Cut> out;
   for (size_t i = 0; i < depths.size(); ++i) {
     Cut c;
     c.depth = depths[i];
-    const Vec2 base = depths[i] * n + sigma[i] * e;
+    const Vec2 base = depths[i] * n + sigma[i] * flank->e;
     c.from = w.from + base - w.b * t;
-    c.to = w.to + base - sigma_max * e + w.p * t;
+    c.to = w.to + base - sigma_max * flank->e + w.p * t;
     c.end = c.to;
     out.push_back(c);
   }

@@ -42,6 +42,56 @@ bool alternates(const ThreadPlan& plan) {
   return straight && shifted;
 }
 
+// Why G76 cannot cut the plan's kind of thread ("" when it can): one straight, single-start Z
+// thread of constant lead, its passes on one flank and not all of them at the full depth.
+std::string shape_mismatch(const ThreadPlan& plan, double d_max, int n_full) {
+  if (plan.form == ThreadForm::kChain) return "a chained thread: G76 cuts one straight thread line";
+  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
+    return "G76 cuts multi-pass threads only";
+  if (plan.pitch.lead_change != 0)
+    return "G76 cuts a constant lead; the CL gives a variable lead, INCR/DECR";
+  if (plan.kind == ThreadKind::kFace) return "G76 threads along Z only; this is a face thread";
+  if (plan.kind == ThreadKind::kTaper) return "G76 has no taper word; this is a taper thread";
+  if (plan.pitch.starts > 1)
+    return fmt::format("G76 has no start word; the thread has {} starts", plan.pitch.starts);
+  if (d_max <= 0 || n_full == static_cast<int>(plan.passes.size()))
+    return fmt::format(
+        "G76 needs a first cut J below the full depth K; every pass of the "
+        "plan is at depth {:.4f}",
+        d_max);
+  if (alternates(plan))
+    return fmt::format("G76 cuts every pass on one flank; OPTION {} alternates flanks",
+                       plan.option);
+  return {};
+}
+
+// E and L (an exit taper) for the plan's pull-out, along the thread `t` and out of it `out`;
+// "" when set, else why G76's exit taper, rising by the thread depth, is not that pull-out.
+std::string exit_taper_words(const ThreadPlan& plan, const Machine& m, Vec2 t, Vec2 out,
+                             double d_max, LinuxcncG76& w) {
+  const double tol = cut_tolerance(m);
+  const Vec2 d = *plan.pullout;
+  const double along = dot(d, t), rise = dot(d, out);
+  if (along <= tol)
+    return fmt::format(
+        "G76's exit taper runs along the thread; the plan pulls straight out "
+        "by X{:.4f} Z{:.4f}",
+        2 * d.x, d.z);
+  if (plan.pullout_linear)
+    return fmt::format(
+        "the plan feeds its pull-out with G1, {:.1f} degrees to the thread is "
+        "outside 30..60; G76 threads its exit taper",
+        deg(std::atan2(rise, along)));
+  if (std::fabs(rise - d_max) > tol)
+    return fmt::format(
+        "G76's exit taper rises by the thread depth {:.4f}; the plan's "
+        "pull-out rises {:.4f}",
+        d_max, rise);
+  w.e = as_read(m, "g76_taper", along);
+  w.l = 2;
+  return {};
+}
+
 // The expansion of `b` compared with the plan: "" when equal.
 std::string compare(const LinuxcncG76Block& b, const ThreadPlan& plan, const Machine& m) {
   std::string refused;
@@ -102,26 +152,9 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
     why = std::move(reason);
     return std::nullopt;
   };
-  if (plan.form == ThreadForm::kChain)
-    return no("a chained thread: G76 cuts one straight thread line");
-  if (plan.form != ThreadForm::kMulti || plan.passes.empty())
-    return no("G76 cuts multi-pass threads only");
-  if (plan.pitch.lead_change != 0)
-    return no("G76 cuts a constant lead; the CL gives a variable lead, INCR/DECR");
-  if (plan.kind == ThreadKind::kFace) return no("G76 threads along Z only; this is a face thread");
-  if (plan.kind == ThreadKind::kTaper) return no("G76 has no taper word; this is a taper thread");
-  if (plan.pitch.starts > 1)
-    return no(fmt::format("G76 has no start word; the thread has {} starts", plan.pitch.starts));
   const double d_max = deepest(plan);
   const int n_full = full_depth_passes(plan, d_max);
-  if (d_max <= 0 || n_full == static_cast<int>(plan.passes.size()))
-    return no(
-        fmt::format("G76 needs a first cut J below the full depth K; every pass of the "
-                    "plan is at depth {:.4f}",
-                    d_max));
-  if (alternates(plan))
-    return no(
-        fmt::format("G76 cuts every pass on one flank; OPTION {} alternates flanks", plan.option));
+  if (std::string reason = shape_mismatch(plan, d_max, n_full); !reason.empty()) return no(reason);
 
   const double tol = cut_tolerance(m);
   if (std::string why = lead_word_mismatch(m, plan, "P", "g76_lead", tol); !why.empty())
@@ -132,25 +165,8 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
   LinuxcncG76Block b;
   LinuxcncG76& w = b.words;
   if (plan.pullout) {
-    const Vec2 d = *plan.pullout;
-    const double along = dot(d, t), rise = dot(d, out);
-    if (along <= tol)
-      return no(
-          fmt::format("G76's exit taper runs along the thread; the plan pulls straight out "
-                      "by X{:.4f} Z{:.4f}",
-                      2 * d.x, d.z));
-    if (plan.pullout_linear)
-      return no(
-          fmt::format("the plan feeds its pull-out with G1, {:.1f} degrees to the thread is "
-                      "outside 30..60; G76 threads its exit taper",
-                      deg(std::atan2(rise, along))));
-    if (std::fabs(rise - d_max) > tol)
-      return no(
-          fmt::format("G76's exit taper rises by the thread depth {:.4f}; the plan's "
-                      "pull-out rises {:.4f}",
-                      d_max, rise));
-    w.e = as_read(m, "g76_taper", along);
-    w.l = 2;
+    if (std::string reason = exit_taper_words(plan, m, t, out, d_max, w); !reason.empty())
+      return no(reason);
   }
   const char* tname = plan.pullout ? kTaperTemplate : kTemplate;
   if (!m.templates.count(tname))
