@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "controls/control.h"
+#include "controls/control_settings.h"
 
 namespace clpost {
 
@@ -29,7 +30,7 @@ enum class ThreadLoop : uint8_t { kG33, kG92 };
 // non-axial axes that is not constantly 0).
 enum class ClAxis : uint8_t { kX, kY, kZ, kAuto };
 
-struct Machine {
+struct Machine : ControlSettings {
   std::string name;         // machine file stem, e.g. "generic-lathe"
   std::string post;         // the post (dialect) it extends, e.g. "iso-lathe"
   std::string description;  // one line, for `clpost machines`
@@ -71,19 +72,16 @@ struct Machine {
   bool extra_spring_passes = false;   // a cycle may add full-depth passes the plan lacks
   double thread_tolerance = 0;        // largest cut difference that counts as exact, CL units
                                       // (0 = one least increment of the Z format)
-  // Fanuc / Haas G76 (fanuc_law.h, haas_law.h); the pass-end rule is unverified.
-  bool cycle_shifted_end = false;    // threading.cycle_pass_end: shifted (else fixed: every pass
-                                     // ends at the cycle's Z)
-  bool accept_pass_end = false;      // a fixed pass end may differ from the plan's (noted)
-  double chamfer_angle = 45;         // the control's thread chamfer angle (Fanuc 5131, Haas 96)
-  double haas_finish_allowance = 0;  // Haas setting 86, machine units
-  double haas_min_cut = 0;           // Haas setting 99, machine units
-  double haas_chamfer = 0;           // Haas setting 95, in leads
+  // G76 cycles with flank infeed (their controls' laws); the pass-end rule is unverified.
+  bool cycle_shifted_end = false;  // threading.cycle_pass_end: shifted (else fixed: every pass
+                                   // ends at the cycle's Z)
+  bool accept_pass_end = false;    // a fixed pass end may differ from the plan's (noted)
+  double chamfer_angle = 45;       // the control's thread chamfer angle (a parameter of it)
 
   // Holes on the spindle axis (CYCLE/DRILL …)
   bool rigid_tapping = false;   // CYCLE/TAP uses hole_tap_rigid
   double peck_clearance = 0.5;  // expanded pecks: re-entry clearance, chip-break back-off
-  bool tap_turns_cw = false;    // the tap cycle starts the spindle M3 itself (Haas G84)
+  bool tap_turns_cw = false;    // the tap cycle starts the spindle M3 itself (some G84s)
 
   // Output
   std::string extension = ".nc";

@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "controls/registry.h"
-#include "controls/registry_templates.h"
+#include "controls/registry_schema.h"
 #include "support/json_text.h"
 
 namespace clpost {
@@ -43,7 +43,8 @@ constexpr const char* kHoles = "Holes";
 constexpr const char* kTime = "Cycle time";
 
 // Every key of a post or machine file (sections in docs order).
-const KeySpec kKeys[] = {
+// The keys before the controls' own.
+constexpr KeySpec kEarlierKeys[] = {
     {"extends",
      kId,
      kString,
@@ -167,12 +168,10 @@ const KeySpec kKeys[] = {
     {"threading.accept_pass_end", kFacts, kBool, &M::accept_pass_end,
      "with `fixed`, accept that shallower flank passes end at Z rather than where the plan ends "
      "them; the NC says so in a comment"},
-    {"threading.haas_finish_allowance", kFacts, kNumber, &M::haas_finish_allowance,
-     "Haas setting 86 (finish allowance), machine units", 0, 10},
-    {"threading.haas_min_cut", kFacts, kNumber, &M::haas_min_cut,
-     "Haas setting 99 (minimum cut), machine units", 0, 10},
-    {"threading.haas_chamfer", kFacts, kNumber, &M::haas_chamfer,
-     "Haas setting 95 (chamfer size), in leads", 0, 99},
+};
+
+// The keys after the controls' own (controls/registry_schema.h).
+constexpr KeySpec kLaterKeys[] = {
     {"holes.rigid_tapping", kHoles, kBool, &M::rigid_tapping,
      "the spindle is synchronised for tapping: CYCLE/TAP uses template hole_tap_rigid (Fanuc "
      "M29, LinuxCNC G33.1)"},
@@ -203,7 +202,8 @@ const FormatKeySpec kFormatKeys[] = {
      "multiply before writing (1000: micrometres as integers, with `decimals: 0`)", 1e-6, 1e6},
 };
 
-const NameSpec kCodes[] = {
+// The codes before the controls' own.
+constexpr NameSpec kEarlierCodes[] = {
     {"rapid", "rapid move (G0)", true},
     {"linear", "feed move (G1)", true},
     {"arc_cw", "clockwise arc (G2)", true},
@@ -227,9 +227,10 @@ const NameSpec kCodes[] = {
     {"optional_stop", "OPSTOP (M1)"},
     {"thread_increasing", "variable lead, increasing (G34)"},
     {"thread_decreasing", "variable lead, decreasing (G35)"},
-    {"g31_h_minus", "HEIDENHAIN G31 flank offset H toward -Z (-X on a face); default 1"},
-    {"g31_h_plus", "HEIDENHAIN G31 flank offset H toward +Z; default 2"},
-    {"g31_h_alternating", "HEIDENHAIN G31 alternating flank offset H; default 3"},
+};
+
+// The codes after the controls' own.
+constexpr NameSpec kLaterCodes[] = {
     {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
     {"clamp_off", "CLAMP/OFF"},
 };
@@ -266,6 +267,21 @@ const NameSpec kFormats[] = {
     {"hole_peck", "peck depth of the hole templates (Fanuc Q: 0.001 mm, decimals 0, scale 1000)"},
 };
 
+// a, then b, then c, as one array.
+template <typename T, size_t A, size_t B, size_t C>
+constexpr std::array<T, A + B + C> join(const T (&a)[A], const T (&b)[B], const T (&c)[C]) {
+  std::array<T, A + B + C> all{};
+  size_t n = 0;
+  for (const T& x : a) all[n++] = x;
+  for (const T& x : b) all[n++] = x;
+  for (const T& x : c) all[n++] = x;
+  return all;
+}
+
+// Every key, every code: the program's own, then the controls' (in the registry's order).
+constexpr auto kKeys = join(kEarlierKeys, kControlKeys, kLaterKeys);
+constexpr auto kCodes = join(kEarlierCodes, kControlCodes, kLaterCodes);
+
 // Every template: the program's own, the controls' (the registry's), then the holes' and the
 // CL words'.
 constexpr const TemplateSpec* kCommonTemplates[] = {
@@ -277,16 +293,7 @@ constexpr const TemplateSpec* kLaterTemplates[] = {
     &tmpl::kHoleBore,      &tmpl::kHome,      &tmpl::kToolChangePosition,
     &tmpl::kAuxfun,        &tmpl::kPrefun,    &tmpl::kSelctl,
     &tmpl::kProgramHeader};
-constexpr auto kTemplates = [] {
-  std::array<const TemplateSpec*, std::size(kCommonTemplates) + std::size(tmpl::kControlTemplates) +
-                                      std::size(kLaterTemplates)>
-      all{};
-  size_t n = 0;
-  for (const TemplateSpec* t : kCommonTemplates) all[n++] = t;
-  for (const TemplateSpec* t : tmpl::kControlTemplates) all[n++] = t;
-  for (const TemplateSpec* t : kLaterTemplates) all[n++] = t;
-  return all;
-}();
+constexpr auto kTemplates = join(kCommonTemplates, tmpl::kControlTemplates, kLaterTemplates);
 
 template <typename T, typename N>
 const T* find_by(std::span<const T> list, std::string_view name, N T::*field) {
