@@ -64,8 +64,14 @@ const Edit kEdits[] = {
      "offset 1",
      1},
     // LinuxCNC: T2 without M6 selects the tool but does not change it.
-    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43", "T2 G43", 7,
-     "tool at samples/bushing-creo.ncl:15: CL tool 2 (set at CL line 7), program no tool", 1},
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43 H2", "T2 G43 H2", 7,
+     "tool at samples/bushing-creo.ncl:15: CL tool 2 offset 2 (set at CL line 7), program no tool",
+     1},
+    // LinuxCNC: G43 H{offset} selects the offset (LOADTL/…,ADJUST).
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43 H2", "T2 M6 G43 H12", 7,
+     "tool at samples/bushing-creo.ncl:15: CL tool 2 offset 2 (set at CL line 7), program tool 2 "
+     "offset 12",
+     1},
     // Constant surface speed: SPINDL/SFM,400,CLW,MAXRPM,2500 in an inch file.
     {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G50 S2500", "G50 S2000", 10,
      "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min CSS, limit 2500 rpm (set at CL "
@@ -143,7 +149,7 @@ TEST(WholePathGoldens, EveryGoldenCutsTheCl) {
   const std::vector<Case> cases = {
       {"generic-lathe", "0.001", true},     {"fanuc-0i-t", "0.005", true},
       {"haas-st", "0.005", true},           {"sinumerik-840d", "0.001", true},
-      {"heidenhain-pilot", "0.001", false}, {"linuxcnc-lathe", "1e-05", false},
+      {"heidenhain-pilot", "0.001", false}, {"linuxcnc-lathe", "1e-05", true},
       {"nct-2000t", "0.001", true}};
   const std::vector<std::string> machines = shipped_machine_names();
   ASSERT_FALSE(machines.empty());

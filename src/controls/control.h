@@ -30,6 +30,8 @@ struct Control {
   std::unique_ptr<CycleOutput<Undercut>> (*undercut_cycle)(const Machine& m) = nullptr;
   // How its programs read back (simulator/control_readback.h).
   const sim::ControlReadback* readback = nullptr;
+  // Its tool change stops the spindle (LinuxCNC's M6): the program starts it again.
+  bool tool_change_stops_spindle = false;
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

@@ -21,15 +21,6 @@ namespace clpost {
 
 namespace {
 
-bool uses_field(const Machine& m, std::string_view name, std::string_view field) {
-  auto it = m.templates.find(std::string(name));
-  if (it == m.templates.end()) return false;
-  for (const std::string& line : it->second)
-    for (const FieldUse& u : field_uses(line))
-      if (u.name == field) return true;
-  return false;
-}
-
 double depth_of(const Hole& h) {
   return std::fabs(h.bottom - h.top);
 }
@@ -88,14 +79,14 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
     return fmt::format("first peck {} differs from the next pecks {}: '{}' has one peck word",
                        num_text(h.first_peck), num_text(h.peck), t.name);
   if ((h.kind == HoleKind::kDeep || h.kind == HoleKind::kChipBreak) && h.peck > 0 &&
-      !uses_field(m, t.name, "peck"))
+      !template_has_field(m, t, "peck"))
     return fmt::format("template '{}' has no {{peck}}", t.name);
   if (h.kind == HoleKind::kTap && h.spindle == SpindleDir::kCcw && m.tap_turns_cw)
     return fmt::format(
         "a left-hand tap, spindle counter-clockwise: '{}' turns the spindle "
         "clockwise, holes.tap_turns_cw",
         t.name);
-  if (h.dwell > 0 && !uses_field(m, t.name, "dwell") && !uses_field(m, t.name, "dwell_ms"))
+  if (h.dwell > 0 && !template_has_field(m, t, "dwell") && !template_has_field(m, t, "dwell_ms"))
     return fmt::format("a dwell of {} s at the bottom: template '{}' has no {{dwell}}",
                        num_text(h.dwell), t.name);
   return {};

@@ -108,6 +108,7 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   Hole h;
   if (!make_hole(s, st, p, h)) return;
   ensure_started(s);
+  restart_stopped_spindle(s, st);
   ++s.stats.motions;
   const SavedLines lines = SavedLines::of(st);
   const bool r =

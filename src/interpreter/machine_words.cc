@@ -50,6 +50,25 @@ std::optional<bool> on_off(PostState& s, const Statement& st) {
   return std::nullopt;
 }
 
+// After OPSKIP/OFF: the program does the same whether the operator skipped the range or not
+// (docs/cl-meaning.md). The next move states its motion, X, Z and F again, and the spindle and
+// coolant are stated again when a skipped block changed them.
+void end_skip_range(PostState& s, const Statement& st) {
+  const auto [spindle, coolant] = *s.before_skip;
+  s.before_skip.reset();
+  s.prog.forget_modal();
+  const SpindleState& now = s.spindle;
+  if (now.on != spindle.on || now.css != spindle.css || now.value != spindle.value ||
+      now.css_max_rpm != spindle.css_max_rpm || now.dir != spindle.dir) {
+    if (now.on) {
+      restate_spindle(s, st);
+    } else if (TemplateWrite r = s.prog.spindle_stop(); !r) {
+      error(s, st, st.loc, template_error(s.m, r));
+    }
+  }
+  if (s.coolant != coolant) s.prog.coolant(s.coolant);
+}
+
 }  // namespace
 
 void auxfun_stmt(PostState& s, const Statement& st) {
@@ -79,6 +98,11 @@ void opskip_stmt(PostState& s, const Statement& st) {
   if (s.m.block_delete.empty()) return as_comment(s, st, "block delete mark (output.block_delete)");
   ensure_started(s);
   s.prog.writer().set_block_delete(*on ? std::string_view(s.m.block_delete) : std::string_view());
+  if (*on) {
+    if (!s.before_skip) s.before_skip.emplace(s.spindle, s.coolant);
+    return;
+  }
+  if (s.before_skip) end_skip_range(s, st);
 }
 
 }  // namespace clpost

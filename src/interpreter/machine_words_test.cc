@@ -53,7 +53,10 @@ TEST(MachineWords, OpskipMarksTheBlocksInBetween) {
       "GOTO/12,0,-5\nFINI\n",
       load("generic-lathe"));
   EXPECT_EQ(p.diags, "");
-  EXPECT_EQ(p.nc, std::string(kGenericStart) + "G1 X20. Z0. G95 F0.2\n/Z-5.\n/M8\nX24.\nM30\n%\n");
+  // After the range the move states its motion, X, Z and F again: with block delete on the
+  // control skipped Z-5 (docs/cl-meaning.md).
+  EXPECT_EQ(p.nc, std::string(kGenericStart) +
+                      "G1 X20. Z0. G95 F0.2\n/Z-5.\n/M8\nG1 X24. Z-5. G95 F0.2\nM30\n%\n");
   // Fanuc numbers its blocks: the mark comes first.
   Machine f = load("fanuc-0i-t", {"block_numbers.enabled=true"});
   Posted q = post("FEDRAT/0.2,MMPR\nOPSKIP/ON\nGOTO/10,0,0\nOPSKIP/OFF\nFINI\n", f);

@@ -126,6 +126,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
     return;
   }
   ensure_started(s);
+  restart_stopped_spindle(s, st);
   ++s.stats.motions;
   if (s.opts.keep_motions) record_motion(s, st, cl2(s, p), s.rapid_next);
   if (s.circle) {

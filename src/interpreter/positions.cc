@@ -25,6 +25,8 @@ bool write_position(PostState& s, const Statement& st, const TemplateSpec& t) {
 }  // namespace
 
 void gohome_stmt(PostState& s, const Statement& st) {
+  // GOHOME is a motion: a RAPID before it applies to it, never to the motion after it.
+  s.rapid_next = false;
   std::optional<Point3> home;
   if (!st.args.empty()) {
     Point3 p;

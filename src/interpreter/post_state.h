@@ -50,6 +50,7 @@ struct SpindleState {
   bool css = false;
   double value = 0;  // rpm, or the surface speed when css
   double css_max_rpm = 0;
+  std::optional<double> cl_max_rpm;  // the CL's last MAXRPM, in force until changed
   SpindleDir dir = SpindleDir::kCw;
 };
 
@@ -94,6 +95,11 @@ struct PostState {
   FeedMode feed_mode = FeedMode::kPerMinute;
   double feed = 0;  // output units
   SpindleState spindle;
+  bool spindle_stopped = false;     // the control's tool change stopped the CL's turning spindle
+  Coolant coolant = Coolant::kOff;  // as the CL last set it
+  // OPSKIP/ON … OFF: the spindle and coolant before the range, which the blocks after it must
+  // state again when a skipped block changed them.
+  std::optional<std::pair<SpindleState, Coolant>> before_skip;
   // The CL lines that last set the tool, the feed and the spindle (verify's messages).
   uint32_t tool_line = 0, feed_line = 0, spindle_line = 0;
   // The lathe frame: the CL axis of the radius. With cl.radial_axis: auto it is found at the
@@ -145,6 +151,13 @@ bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view 
 
 // Writes the program start (once) before the first block.
 void ensure_started(PostState& s);
+// Writes the spindle as the CL last left it (speed or surface speed with its limit, direction)
+// (spindle_feed.cc).
+void restate_spindle(PostState& s, const Statement& st);
+// Before a motion: the spindle a control's tool change stopped (LinuxCNC's M6) turns again as
+// the CL left it, unless a SPINDL/ came first.
+void restart_stopped_spindle(PostState& s, const Statement& st);
+void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_text);
 
 // The lathe frame: a CL point as (radius, axial) in CL units, and as NcProgram's point.
 Vec2 cl2(const PostState& s, Point3 p);

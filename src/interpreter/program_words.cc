@@ -6,6 +6,37 @@
 
 namespace clpost {
 
+namespace {
+
+// What the CL has already given keeps its physical value when UNITS changes how later numbers
+// are read (docs/cl-meaning.md): every length the state holds, converted by `f` (new units per
+// old), and a surface speed from m/min to ft/min or back.
+void convert_units(PostState& s, LengthUnit to) {
+  const double f = to == LengthUnit::kInch ? 1 / 25.4 : 25.4;
+  auto scale = [f](double& v) { v *= f; };
+  if (s.pos) s.pos = Point3{s.pos->x * f, s.pos->y * f, s.pos->z * f};
+  if (s.circle) {
+    Circle& c = *s.circle;
+    for (double* v : {&c.cx, &c.cy, &c.cz, &c.radius}) scale(*v);
+  }
+  scale(s.feed);
+  scale(s.thread.pitch.pitch);
+  scale(s.thread.pitch.lead_change);
+  if (s.tool.nose_radius) scale(*s.tool.nose_radius);
+  scale(s.cutter_diameter);
+  if (HoleCycle* h = s.hole_cycle ? &*s.hole_cycle : nullptr) {
+    for (double* v : {&h->depth, &h->first_peck, &h->peck}) scale(*v);
+    for (std::optional<double>* v : {&h->clearance, &h->retract, &h->feed, &h->lead})
+      if (*v) scale(**v);
+  }
+  if (s.clock_at) s.clock_at = Vec2{s.clock_at->x * f, s.clock_at->z * f};
+  if (s.clock_feed > 0) scale(s.clock_feed);
+  if (s.spindle.css) s.spindle.value *= to == LengthUnit::kInch ? 1 / 0.3048 : 0.3048;
+  s.prog.units_changed(f);
+}
+
+}  // namespace
+
 void units_stmt(PostState& s, const Statement& st) {
   if (st.args.empty() || !st.args[0].is_word()) {
     error(s, st, st.args.empty() ? st.loc : st.args[0].loc, "expected UNITS/MM or UNITS/INCHES");
@@ -27,6 +58,7 @@ void units_stmt(PostState& s, const Statement& st) {
               "units change after motion: later coordinates are read in the new units");
     s.prog.writer().code(s.m.code(u == LengthUnit::kInch ? "inch" : "metric")).end_block();
   }
+  if (u != s.units) convert_units(s, u);
   s.units = u;
 }
 
@@ -63,6 +95,7 @@ void coolnt_stmt(PostState& s, const Statement& st) {
             fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text, rest));
   }
   ensure_started(s);
+  s.coolant = c;
   s.prog.coolant(c);
 }
 

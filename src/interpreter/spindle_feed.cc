@@ -125,7 +125,9 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
       error(s, st, st.loc, template_error(s.m, r));
     return;
   }
-  double limit = w.max_rpm.value_or(s.m.max_rpm);
+  // MAXRPM stays in force until changed (SPINDL/ON and a later SPINDL/…,SMM keep it).
+  if (w.max_rpm) sp.cl_max_rpm = *w.max_rpm;
+  double limit = sp.cl_max_rpm.value_or(s.m.max_rpm);
   if (!(limit > 0)) {
     error(s, st, st.loc,
           "constant surface speed needs a speed limit: add MAXRPM,n or set limits.max_rpm in the "
@@ -143,7 +145,9 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
 void fedrat_stmt(PostState& s, const Statement& st) {
   double value = 0;
   bool have_value = false;
-  FeedMode mode = FeedMode::kPerMinute;
+  // Without a mode word the feed keeps the mode in force (docs/cl-meaning.md); per minute before
+  // any.
+  FeedMode mode = s.feed_given ? s.feed_mode : FeedMode::kPerMinute;
   double factor = 1;  // to CL units
   const double to_cl_from_mm = s.units == LengthUnit::kInch ? 1 / kMmPerInch : 1;
   const double to_cl_from_in = s.units == LengthUnit::kInch ? 1 : kMmPerInch;
@@ -188,9 +192,35 @@ void fedrat_stmt(PostState& s, const Statement& st) {
   s.prog.set_feed(s.feed, s.feed_mode);
 }
 
+namespace {
+
+void restate_spindle(PostState& s, SourceLoc loc, std::string_view line_text) {
+  const SpindleState& sp = s.spindle;
+  const TemplateWrite r = sp.css ? s.prog.spindle_css(sp.value, sp.css_max_rpm, sp.dir)
+                                 : s.prog.spindle_rpm(sp.value, sp.dir);
+  if (!r) s.diags.error(loc, line_text, template_error(s.m, r));
+}
+
+}  // namespace
+
+void restate_spindle(PostState& s, const Statement& st) {
+  restate_spindle(s, st.loc, st.line_text(st.loc.line));
+}
+
+void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_text) {
+  if (!s.spindle_stopped) return;
+  s.spindle_stopped = false;
+  restate_spindle(s, loc, line_text);
+}
+
+void restart_stopped_spindle(PostState& s, const Statement& st) {
+  restart_stopped_spindle(s, st.loc, st.line_text(st.loc.line));
+}
+
 void spindl_stmt(PostState& s, const Statement& st) {
   SpindleWords w;
   if (!read_spindle_words(s, st, w)) return;
+  s.spindle_stopped = false;  // this statement says what the spindle does
   surface_speed_unit(s, st, w);
   ensure_started(s);
   if (w.off) {

@@ -15,6 +15,7 @@
 namespace clpost {
 
 bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
+  restart_stopped_spindle(s, at.loc, at.line);
   const SpindleState& sp = s.spindle;
   if (!sp.on) {
     s.diags.error(at.loc, at.line,

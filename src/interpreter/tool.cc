@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "interpreter/statement_table.h"
+#include "machine/template_values.h"
 
 namespace clpost {
 
@@ -12,6 +13,17 @@ namespace {
 // A whole number 0..9999 (tool and offset numbers).
 bool whole_0_9999(double v) {
   return v >= 0 && v == std::floor(v) && v <= 9999;
+}
+
+// Whether the machine's tool change can select offset `offset` for tool `tool`: its template
+// writes the offset, or the offset is the tool's own (which the tool number selects).
+bool offset_written(PostState& s, const Statement& st, int tool, int offset, SourceLoc at) {
+  if (offset == tool || template_has_field(s.m, tmpl::kToolChange, "offset")) return true;
+  error(s, st, at,
+        fmt::format("machine '{}' cannot select offset {} with tool {}: its tool_change "
+                    "template writes no {{offset}}, and the tool number selects offset {}",
+                    s.m.name, offset, tool, tool));
+  return false;
 }
 
 // The tool change whose tool number is argument `first`.
@@ -24,6 +36,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
     return;
   }
   int offset = static_cast<int>(tool);
+  SourceLoc offset_loc = st.loc;
   for (size_t i = first + 1; i + 1 < st.args.size(); ++i) {
     const Arg& word = st.args[i];
     if (!(word.is("ADJUST") || word.is("OSETNO") || word.is("OFFSET")) ||
@@ -36,7 +49,9 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
       return;
     }
     offset = static_cast<int>(o.number);
+    offset_loc = o.loc;
   }
+  if (!offset_written(s, st, static_cast<int>(tool), offset, offset_loc)) return;
   ensure_started(s);
   // The tool data written before this change (CATIA: TOOLNO, TPRINT, PPRINT TOOL:) describe it.
   s.tool = std::move(s.next_tool);
@@ -48,7 +63,10 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   s.tool.offset = offset;
   time_tool_change(s);
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
-    error(s, st, st.loc, template_error(s.m, r));
+    return error(s, st, st.loc, template_error(s.m, r));
+  // A tool change leaves the spindle as the CL left it (docs/cl-meaning.md).
+  if (s.m.control && s.m.control->tool_change_stops_spindle && s.spindle.on)
+    s.spindle_stopped = true;
 }
 
 }  // namespace

@@ -108,6 +108,7 @@ void undercut_stmt(PostState& s, const Statement& st) {
     return;
   }
   ensure_started(s);
+  restart_stopped_spindle(s, st);
   Undercut job;
   job.diam = u.diam;
   job.at = u.at;

@@ -77,6 +77,15 @@ TemplateValues::Line TemplateValues::format(std::string_view line) const {
   return out;
 }
 
+bool template_has_field(const Machine& m, const TemplateSpec& spec, std::string_view field) {
+  auto it = m.templates.find(std::string(spec.name));
+  if (it == m.templates.end()) return false;
+  for (const std::string& line : it->second)
+    for (const FieldUse& u : field_uses(line))
+      if (u.name == field) return true;
+  return false;
+}
+
 std::vector<FieldUse> field_uses(std::string_view line) {
   std::vector<FieldUse> out;
   for (size_t i = 0; i < line.size(); ++i) {

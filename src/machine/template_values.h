@@ -78,6 +78,8 @@ struct FieldUse {
   size_t offset;  // of the '{'
 };
 std::vector<FieldUse> field_uses(std::string_view line);
+// Whether machine `m`'s template `spec` (any of its lines) uses field `field`.
+bool template_has_field(const Machine& m, const TemplateSpec& spec, std::string_view field);
 
 // What is wrong with template line `line` of `spec`, or "" when it is fine; `offset` is where in
 // the line (an unknown field: "unknown field '{speeed}' … (did you mean 'speed'?)").

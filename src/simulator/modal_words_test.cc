@@ -62,14 +62,16 @@ TEST(ModalWords, SiemensToolAndOffsetWordsAndLims) {
 
 TEST(ModalWords, LinuxcncChangesToolsOnlyWithM6AndReadsG96D) {
   StateReadback rb;
-  // T5 alone selects the tool; "T{tool} M6 G43" changes it. G96 D2500 S120: D is the limit.
+  // T5 alone selects the tool; "T{tool} M6 G43 H{offset}" changes it, H the offset. G96 D2500
+  // S120: D is the limit.
   const std::vector<CutState> s = move_states(
-      "linuxcnc-lathe", "T5\nG0 X10 Z2\nT5 M6 G43\nG96 D2500 S120 M3\nG1 Z0 G95 F0.1\n", &rb);
+      "linuxcnc-lathe", "T5\nG0 X10 Z2\nT5 M6 G43 H12\nG96 D2500 S120 M3\nG1 Z0 G95 F0.1\n",
+      &rb);
   EXPECT_TRUE(rb.tool);
-  EXPECT_FALSE(rb.offset);  // the template has no {offset}
+  EXPECT_TRUE(rb.offset);  // G43 H{offset}
   ASSERT_EQ(s.size(), 2u);
   EXPECT_EQ(s[0], state(0, -1, SpindleRun::kOff, false, 0, 0, -1, -1));
-  EXPECT_EQ(s[1], state(0.1, 1, SpindleRun::kCw, true, 120, 2500, 5, -1));
+  EXPECT_EQ(s[1], state(0.1, 1, SpindleRun::kCw, true, 120, 2500, 5, 12));
 }
 
 TEST(ModalWords, HeidenhainG26IsTheLimitAndG97TheRpm) {

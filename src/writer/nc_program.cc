@@ -276,6 +276,14 @@ void NcProgram::cycle_ended_at(LathePoint p) {
   pos_ = p;
 }
 
+void NcProgram::units_changed(double factor) {
+  if (pos_) pos_ = LathePoint{pos_->r * factor, pos_->z * factor};
+  feed_ *= factor;
+  last_x_.reset();
+  last_z_.reset();
+  written_feed_.reset();
+}
+
 void NcProgram::forget_modal() {
   motion_.clear();
   last_x_.reset();

@@ -110,6 +110,10 @@ class NcProgram {
   // Forgets the modal motion code, feed and spindle words (after a cycle or raw insert whose
   // effect on them is unknown).
   void forget_modal();
+  // After a units code (G20/G21): the control reads later numbers in the new units, so the
+  // position and the feed are converted by `factor` (new units per old) and the next move writes
+  // X, Z and F in full.
+  void units_changed(double factor);
 
  private:
   void motion_code(const std::string& code);

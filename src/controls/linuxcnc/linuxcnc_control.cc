@@ -6,11 +6,15 @@
 
 namespace clpost {
 
-extern const Control kLinuxcncControl{.name = "linuxcnc",
-                                      .cycle = "linuxcnc_g76",
-                                      .cycle_emitter = []() -> std::unique_ptr<Emitter> {
-                                        return std::make_unique<LinuxcncG76Emitter>();
-                                      },
-                                      .readback = &sim::kLinuxcncReadback};
+extern const Control kLinuxcncControl{
+    .name = "linuxcnc",
+    .cycle = "linuxcnc_g76",
+    .cycle_emitter = []() -> std::unique_ptr<Emitter> {
+      return std::make_unique<LinuxcncG76Emitter>();
+    },
+    .readback = &sim::kLinuxcncReadback,
+    // M6 stops the spindle: rs274 -g writes STOP_SPINDLE_TURNING between START_CHANGE and
+    // CHANGE_TOOL (LinuxCNC 2.9, tests/rs274_test.cc).
+    .tool_change_stops_spindle = true};
 
 }  // namespace clpost

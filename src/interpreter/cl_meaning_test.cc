@@ -1,0 +1,118 @@
+// What the CL means (docs/cl-meaning.md), one test per decision, each found wrong before its fix
+// (issue "Exit 0 means the program is right", cases A-G): the lines a program must have, on
+// LinuxCNC (whose own rs274 the oracle test runs, tests/oracle/) and on Fanuc, and on every
+// shipped machine a program that verifies or a located error.
+#include <gtest/gtest.h>
+
+#include "interpreter/post_test_util.h"
+#include "machine/machine_test_util.h"
+
+namespace clpost {
+namespace {
+
+using test::load;
+using test::post;
+using test::Posted;
+
+constexpr const char* kHead = "UNITS/MM\nLOADTL/1\nSPINDL/500,RPM,CLW\nFEDRAT/0.2,MMPR\n";
+
+std::string cl(const std::string& body) {
+  return kHead + body + "FINI\n";
+}
+
+// `text` is in the program of `cl` on `machine`, posted without an error.
+void expect_lines(const std::string& machine, const std::string& cl, const std::string& text) {
+  const Posted p = post(cl, load(machine));
+  EXPECT_EQ(p.errors, 0u) << machine << "\n" << p.diags;
+  EXPECT_NE(p.nc.find(text), std::string::npos) << machine << ": no\n" << text << "in\n" << p.nc;
+}
+
+// A: a feed and a pitch given before UNITS/INCHES keep their physical value: 0.2 mm/rev is
+// 0.007874 in/rev (F4 decimals: 0.0079), the 1.5 mm lead 0.05905512 in.
+TEST(ClMeaning, UnitsKeepTheFeedAndPitchAlreadyGiven) {
+  const std::string a =
+      cl("PITCH/1.5,MMPR\nGOTO/15,0,5\nUNITS/INCHES\nTHREAD/TURN\nGOTO/0.4,0,0.2\n"
+         "GOTO/0.4,0,-1\n");
+  expect_lines("linuxcnc-lathe", a, "G20\nX0.8 Z0.2 F0.0079\nG33 Z-1. K0.05905512\n");
+  expect_lines("heidenhain-pilot", a, "X0.8 Z0.2 F0.007874\nG33 Z-1. F0.059055\n");
+}
+
+// B: every position is written in full after the switch: X20 (a 10 in radius), not X left out
+// because it read 20 (mm) before.
+TEST(ClMeaning, UnitsWriteEveryPositionAgain) {
+  const std::string b = cl("GOTO/10,0,5\nUNITS/INCHES\nGOTO/10,0,-1\n");
+  expect_lines("linuxcnc-lathe", b, "G20\nX20. Z-1. F0.0079\n");
+  expect_lines("fanuc-0i-t", b, "G20\nX20. Z-1. F0.0079\n");
+}
+
+// An arc right after a switch: its start was where the tool is, in the new units (it was refused
+// with "arc end point is not on the circle"); GODLTA moves from there too.
+TEST(ClMeaning, UnitsConvertWhereTheToolIs) {
+  const std::string arc =
+      cl("GOTO/25.4,0,0\nUNITS/INCHES\nCIRCLE/0,0,0,0,1,0,1.0\nGOTO/0,0,-1\nGODLTA/0,0,-1\n");
+  expect_lines("generic-lathe", arc, "G20\nG3 X0. Z-1. I-1. K0. F0.007874\nG1 Z-2.\n");
+}
+
+// C: RAPID makes the next motion a rapid; GOHOME is that motion.
+TEST(ClMeaning, GohomeConsumesRapid) {
+  const std::string c = cl("GOTO/20,0,5\nRAPID\nGOHOME/100,0,100\nGOTO/10,0,-5\n");
+  expect_lines("fanuc-0i-t", c, "G28 U0.\nG28 W0.\nG1 X20. Z-5. G99 F0.2\n");
+  expect_lines("linuxcnc-lathe", c, "G0 X200. Z100.\nG1 X20. Z-5.\n");
+}
+
+// D: LinuxCNC's M6 stops the spindle; the CL left it turning, so it turns again before the next
+// motion (and only then: a SPINDL/ after the LOADTL/ says it instead).
+TEST(ClMeaning, AToolChangeLeavesTheSpindleAsTheClLeftIt) {
+  expect_lines("linuxcnc-lathe", cl("GOTO/20,0,5\nLOADTL/2\nGOTO/18,0,-5\n"),
+               "T2 M6 G43 H2\nG97 S500 M3\nG1 X36. Z-5.");
+  expect_lines("linuxcnc-lathe", cl("GOTO/20,0,5\nLOADTL/2\nSPINDL/700,RPM,CLW\nGOTO/18,0,-5\n"),
+               "T2 M6 G43 H2\nG97 S700 M3\nG1 X36. Z-5.");
+  expect_lines("fanuc-0i-t", cl("GOTO/20,0,5\nLOADTL/2\nGOTO/18,0,-5\n"),
+               "T0202\nG1 X36. Z-5. G99 F0.2\n");
+}
+
+// E: the first block after OPSKIP/OFF states the motion, X, Z and F again: with block delete on
+// the control skipped X20 Z-5.
+TEST(ClMeaning, OpskipRangesLeaveTheRestExact) {
+  const std::string e = cl("GOTO/20,0,5\nOPSKIP/ON\nGOTO/10,0,-5\nOPSKIP/OFF\nGOTO/10,0,-10\n");
+  expect_lines("linuxcnc-lathe", e, "/X20. Z-5.\nG1 X20. Z-10. G95 F0.2\n");
+  expect_lines("fanuc-0i-t", e, "/X20. Z-5.\nG1 X20. Z-10. G99 F0.2\n");
+  // A spindle or coolant change inside the range is stated again after it.
+  const std::string s =
+      cl("GOTO/20,0,5\nOPSKIP/ON\nSPINDL/800,RPM,CLW\nCOOLNT/FLOOD\nGOTO/10,0,-5\nOPSKIP/OFF\n"
+         "GOTO/10,0,-10\n");
+  expect_lines("fanuc-0i-t", s, "/G97 S800 M3\n/M8\n/X20. Z-5.\nG97 S800 M3\nM8\nG1 X20. Z-10.");
+}
+
+// F: MAXRPM stays in force; SPINDL/ON restores speed, mode, direction and limit.
+TEST(ClMeaning, SpindleOnRestoresTheClsLimit) {
+  const std::string f =
+      "UNITS/MM\nLOADTL/1\nSPINDL/200,SMM,CLW,MAXRPM,1500\nFEDRAT/0.2,MMPR\nGOTO/20,0,5\n"
+      "SPINDL/OFF\nSPINDL/ON\nSPINDL/180,SMM\nGOTO/10,0,-5\nFINI\n";
+  expect_lines("linuxcnc-lathe", f, "M5\nG96 D1500 S200 M3\nG96 D1500 S180 M3\n");
+  expect_lines("fanuc-0i-t", f, "M5\nG50 S1500\nG96 S200 M3\nG50 S1500\nG96 S180 M3\n");
+}
+
+// FEDRAT/f without a mode word keeps the mode in force (it became per minute).
+TEST(ClMeaning, FedratWithoutAModeKeepsTheMode) {
+  expect_lines("fanuc-0i-t", cl("GOTO/20,0,5\nFEDRAT/0.1\nGOTO/10,0,-5\n"),
+               "G1 X40. Z5. G99 F0.2\nX20. Z-5. F0.1\n");
+}
+
+// G: LOADTL/n,ADJUST,m selects offset m: LinuxCNC G43 H12; a control whose tool change cannot
+// say it refuses, at the offset.
+TEST(ClMeaning, TheOffsetReachesTheProgramOrIsRefused) {
+  const std::string g =
+      "UNITS/MM\nLOADTL/2,ADJUST,12\nSPINDL/500,RPM,CLW\nFEDRAT/0.2,MMPR\nGOTO/20,0,5\nFINI\n";
+  expect_lines("linuxcnc-lathe", g, "T2 M6 G43 H12\n");
+  expect_lines("fanuc-0i-t", g, "T0212\n");
+  const Posted h = post(g, load("heidenhain-pilot"));
+  EXPECT_EQ(h.diags,
+            "t.cl:2:17: error: machine 'heidenhain-pilot' cannot select offset 12 with tool 2: its "
+            "tool_change template writes no {offset}, and the tool number selects offset 2\n"
+            "  LOADTL/2,ADJUST,12\n"
+            "                  ^\n");
+}
+
+}  // namespace
+}  // namespace clpost
