@@ -8,7 +8,7 @@
 
 #include "laws/cut_pass.h"
 #include "laws/written_value.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "verify/cut_alignment.h"
 #include "verify/expected_cuts.h"
 

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "controls/fanuc/fanuc_templates.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "writer/number_format.h"
 
 namespace clpost {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

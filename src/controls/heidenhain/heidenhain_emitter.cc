@@ -8,7 +8,7 @@
 
 #include "controls/heidenhain/heidenhain_templates.h"
 #include "laws/written_value.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "writer/number_format.h"
 
 namespace clpost {

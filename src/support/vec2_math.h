@@ -1,10 +1,11 @@
 #pragma once
-// Vector arithmetic on Vec2 (CL lathe frame: x radial, z axial) for the planner. In its own
-// namespace so that it cannot clash with other stages' helpers; `using namespace
-// clpost::vec2_math;` in a .cc file to use the operators.
+// Vector arithmetic on Vec2 (CL lathe frame: x radial, z axial), for every stage that does
+// geometry (the planner, the laws, the emitters, verify). In its own namespace so that it cannot
+// clash with other stages' helpers; `using namespace clpost::vec2_math;` in a .cc file to use the
+// operators.
 #include <cmath>
 
-#include "planner/thread_plan.h"
+#include "support/vec2.h"
 
 namespace clpost::vec2_math {
 
