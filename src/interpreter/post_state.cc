@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "emitters/planner_settings.h"
+
 namespace clpost {
 
 PostState::PostState(const Machine& machine, NcProgram& program, Diagnostics& d,
