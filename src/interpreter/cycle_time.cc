@@ -191,7 +191,7 @@ std::string time_text(double seconds) {
 std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter) {
   std::vector<std::string> out;
   const char* u = units == LengthUnit::kInch ? "in" : "mm";
-  const double xs = diameter ? 2 : 1;
+  const double xs = diameter_factor(diameter);
   size_t changes = 0;
   for (const ToolTime& tt : t.tools) {
     if (tt.tool < 0 && tt.seconds == 0 && tt.x_min > tt.x_max) continue;

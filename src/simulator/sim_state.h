@@ -122,7 +122,7 @@ struct State {
   double value(const NcWord& w, std::string_view format) const;
   double value(const NcWord& w) const { return value(w, w.address); }
   // X as a radius (halved in diameter mode).
-  double radius(const NcWord& x) const { return diameter ? value(x) / 2 : value(x); }
+  double radius(const NcWord& x) const { return value(x) / diameter_factor(diameter); }
   void error(uint32_t col, std::string message);
   // A count or code word as a whole number in [lo, hi]; else an error naming the word and the
   // range, and nothing (a cycle asking for a billion passes is refused, not run).

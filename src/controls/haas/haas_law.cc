@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "machine/machine.h"
+
 namespace clpost {
 
 std::vector<double> haas_g76_depths(const HaasG76Words& w, const HaasSettings& s) {
@@ -18,7 +20,7 @@ std::vector<Cut> expand_haas_g76(const HaasG76Words& w, Vec2 start, const HaasSe
                                  const CycleLaw& law, int starts) {
   FlankCycle g;
   g.start = start;
-  g.end = {law.diameter ? w.x / 2 : w.x, w.z};
+  g.end = {w.x / diameter_factor(law.diameter), w.z};
   g.taper = w.taper;
   g.height = w.height;
   g.flank = w.tool_angle / 2.0;
