@@ -4,6 +4,7 @@
 // clash with other stages' helpers; `using namespace clpost::vec2_math;` in a .cc file to use the
 // operators.
 #include <cmath>
+#include <numbers>
 
 #include "support/vec2.h"
 
@@ -28,12 +29,11 @@ inline double length(Vec2 a) {
   return std::hypot(a.x, a.z);
 }
 
-constexpr double kPi = 3.14159265358979323846;
 inline double rad(double deg) {
-  return deg * kPi / 180;
+  return deg * std::numbers::pi / 180;
 }
 inline double deg(double rad) {
-  return rad * 180 / kPi;
+  return rad * 180 / std::numbers::pi;
 }
 
 // The unit vector at `deg` degrees in the (Z, X) plane, measured from +X toward +Z.
