@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "machine/machine_schema.h"
 #include "nc_reader/nc_lexer.h"
 #include "reader/number.h"
 #include "simulator/control_readback.h"
@@ -39,6 +40,10 @@ bool has_code(const NcBlock& b, const Code& c) {
     if (c.number && w.has_value() && std::fabs(w.value - *c.number) < 1e-9) return true;
   }
   return false;
+}
+
+Code template_code(const Machine& m, const TemplateSpec& t, size_t index) {
+  return template_code(m, std::string(t.name), index);
 }
 
 Code template_code(const Machine& m, const std::string& name, size_t index) {
@@ -164,7 +169,7 @@ Codes codes_of(const Machine& m) {
   c.thread_dec = sim::parse_code(m.code("thread_decreasing"));
   c.metric = sim::parse_code(m.code("metric"));
   c.inch = sim::parse_code(m.code("inch"));
-  c.dwell = sim::template_code(m, "dwell");
+  c.dwell = sim::template_code(m, tmpl::kDwell);
   c.modal = sim::modal_words(m);
   static constexpr sim::ControlReadback kPlainIso{};
   c.control = m.control && m.control->readback ? m.control->readback : &kPlainIso;

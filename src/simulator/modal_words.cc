@@ -53,7 +53,7 @@ void learn_spindle(const Machine& m, ModalWords& w) {
   w.ccw = parse_code(m.code("spindle_ccw"));
   if (const std::vector<std::string>* stop = lines_of(m, tmpl::kSpindleStop);
       stop != nullptr && !stop->empty())
-    w.stop = template_code(m, std::string(tmpl::kSpindleStop.name));
+    w.stop = template_code(m, tmpl::kSpindleStop);
   if (auto rpm = field_line(m, tmpl::kSpindleRpm, "rpm")) {
     w.rpm_address = rpm->word().address;
     w.rpm_mode = rpm->first_code;

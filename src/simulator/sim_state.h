@@ -11,6 +11,10 @@
 #include "planner/thread_words.h"
 #include "simulator/control_sim.h"
 
+namespace clpost {
+struct TemplateSpec;  // machine/machine_schema.h
+}  // namespace clpost
+
 namespace clpost::sim {
 
 // How much of a block's text a cut keeps for its diagnostics (memory stays bounded).
@@ -28,7 +32,9 @@ struct Code {
 };
 Code parse_code(std::string_view text);
 bool has_code(const NcBlock& b, const Code& c);
-// The first word of a template's line `index` ("G76" of "G76 X{x} ..."); empty when absent.
+// The first word of template `t`'s line `index` on machine `m` ("G76" of "G76 X{x} ..."); empty
+// when absent. Named by its spec (tmpl::kDwell, ...): a misspelt template does not compile.
+Code template_code(const Machine& m, const TemplateSpec& t, size_t index = 0);
 Code template_code(const Machine& m, const std::string& name, size_t index = 0);
 
 // A field of a template word: "{offset:02}" is {"offset", 2} (width 0: any).
