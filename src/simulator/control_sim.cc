@@ -42,12 +42,8 @@ bool has_code(const NcBlock& b, const Code& c) {
   return false;
 }
 
-Code template_code(const Machine& m, const TemplateSpec& t, size_t index) {
-  return template_code(m, std::string(t.name), index);
-}
-
-Code template_code(const Machine& m, const std::string& name, size_t index) {
-  auto it = m.templates.find(name);
+Code template_code(const Machine& m, const TemplateSpec& spec, size_t index) {
+  auto it = m.templates.find(std::string(spec.name));
   if (it == m.templates.end() || it->second.size() <= index) return {};
   std::string_view t = it->second[index];
   size_t end = t.find_first_of(" ({");

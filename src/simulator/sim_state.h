@@ -35,7 +35,6 @@ bool has_code(const NcBlock& b, const Code& c);
 // The first word of template `t`'s line `index` on machine `m` ("G76" of "G76 X{x} ..."); empty
 // when absent. Named by its spec (tmpl::kDwell, ...): a misspelt template does not compile.
 Code template_code(const Machine& m, const TemplateSpec& t, size_t index = 0);
-Code template_code(const Machine& m, const std::string& name, size_t index = 0);
 
 // A field of a template word: "{offset:02}" is {"offset", 2} (width 0: any).
 struct TemplateField {
