@@ -9,6 +9,7 @@
 
 #include "cl_generator.h"
 #include "emitters/emitter.h"
+#include "emitters/planner_settings.h"
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
 #include "planner/planner.h"

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <regex>
 #include <sstream>
 
@@ -385,7 +386,7 @@ std::vector<Seg> planned_all(const std::string& json) {
       }
       const double dx = std::stod(q[1]), dz = std::stod(q[2]);
       const double c = std::fabs(tx * dz + tr * dx) / std::hypot(tx, tr) / std::hypot(dx, dz);
-      const double angle = std::acos(std::min(1.0, c)) * 180 / 3.14159265358979323846;
+      const double angle = std::acos(std::min(1.0, c)) * 180 / std::numbers::pi;
       linear = angle < 30 - 1e-6 || angle > 60 + 1e-6;
     }
     std::vector<Seg> segs = planned(one, linear);

@@ -19,9 +19,6 @@
 
 namespace clpost {
 
-// What the planner needs to know of machine `m` (its threading defaults and words).
-PlannerSettings planner_settings(const Machine& m);
-
 // A plan point (CL frame: x a radius) as the lathe point NcProgram writes.
 inline LathePoint lp(Vec2 v) {
   return LathePoint{v.x, v.z};

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

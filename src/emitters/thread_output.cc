@@ -8,16 +8,6 @@
 
 namespace clpost {
 
-PlannerSettings planner_settings(const Machine& m) {
-  PlannerSettings s;
-  s.default_option = m.default_option;
-  s.default_tool_angle = m.default_tool_angle;
-  s.start_angle_word = m.start_angle_word;
-  s.variable_lead = m.variable_lead;
-  s.machine_name = m.name;
-  return s;
-}
-
 std::string fallback_comment(const Unfit& first, std::string_view used) {
   return fmt::format("{} not used: {}. {} instead", first.name, first.reason, used);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "interpreter/clock.h"
 #include "interpreter/post_state.h"
@@ -13,8 +14,6 @@
 namespace clpost {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The first move before any tool change starts the list (rare: out of line).
 [[gnu::noinline]] void first_entry(CycleTime& c) {
@@ -47,12 +46,12 @@ double css_minutes(const PostState& s, double length, double r0, double r1, doub
   const SpindleState& sp = s.spindle;
   const double k = sp.value * (s.units == LengthUnit::kInch ? 12 : 1000);
   const double max = sp.css_max_rpm > 0 ? sp.css_max_rpm : s.m.max_rpm;
-  const double rc = max > 0 ? k / (2 * kPi * max) : 0;
+  const double rc = max > 0 ? k / (2 * std::numbers::pi * max) : 0;
   r0 = std::fabs(r0), r1 = std::fabs(r1);
   auto piece = [&](double ua, double ub) {  // [ua, ub] on one side of rc
     const double r = r0 + (r1 - r0) * (ua + ub) / 2;
     const double ds = length * (ub - ua);
-    return r >= rc ? 2 * kPi * r * ds / (f * k) : ds / (f * max);
+    return r >= rc ? 2 * std::numbers::pi * r * ds / (f * k) : ds / (f * max);
   };
   if ((r0 - rc) * (r1 - rc) < 0) {
     const double uc = (rc - r0) / (r1 - r0);
@@ -126,8 +125,8 @@ void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
   const double t0 = std::atan2(a.x - center.x, a.z - center.z);
   double sweep = std::atan2(to.x - center.x, to.z - center.z) - t0;
   // Positive rotation turns Z toward X (G3 in G18 with the lathe frame as drawn).
-  if (ccw && sweep <= 0) sweep += 2 * kPi;
-  if (!ccw && sweep >= 0) sweep -= 2 * kPi;
+  if (ccw && sweep <= 0) sweep += 2 * std::numbers::pi;
+  if (!ccw && sweep >= 0) sweep -= 2 * std::numbers::pi;
   constexpr int kSteps = 64;
   double minutes = 0;
   for (int i = 0; i < kSteps; ++i) {
@@ -191,7 +190,7 @@ std::string time_text(double seconds) {
 std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter) {
   std::vector<std::string> out;
   const char* u = units == LengthUnit::kInch ? "in" : "mm";
-  const double xs = diameter ? 2 : 1;
+  const double xs = diameter_factor(diameter);
   size_t changes = 0;
   for (const ToolTime& tt : t.tools) {
     if (tt.tool < 0 && tt.seconds == 0 && tt.x_min > tt.x_max) continue;

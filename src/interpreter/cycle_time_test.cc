@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "interpreter/post_test_util.h"
 
@@ -29,7 +30,7 @@ constexpr const char* kPart =
 TEST(CycleTime, EveryKindOfMoveByHand) {
   PostedText r = post_text(kPart, load("generic-lathe", kRates), "t.cl");
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
-  const double pi = 3.14159265358979323846;
+  using std::numbers::pi;
   // Tool change: 2 s.
   const double change = 2;
   // Line 7, rapid from FROM (X50 Z50) to X20 Z5: X 30 / 6000 min = 0.3 s, Z 45 / 12000 min =

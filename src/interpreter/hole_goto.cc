@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "interpreter/statement_table.h"
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

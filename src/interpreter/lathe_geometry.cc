@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 #include <span>
 
 namespace clpost {
@@ -14,8 +15,6 @@ double norm(Point3 a) {
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Point3 sub(Point3 a, Point3 b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
@@ -265,8 +264,8 @@ double travel(const Shape& d, double pu, double pv, bool ccw, double tu, double 
   if (!d.circle) return (eu - pu) * tu + (ev - pv) * tv;
   double a = std::atan2(ev - d.cv, eu - d.cu) - std::atan2(pv - d.cv, pu - d.cu);
   if (!ccw) a = -a;
-  while (a < 0) a += 2 * kPi;
-  while (a >= 2 * kPi) a -= 2 * kPi;
+  while (a < 0) a += 2 * std::numbers::pi;
+  while (a >= 2 * std::numbers::pi) a -= 2 * std::numbers::pi;
   return a * d.r;
 }
 

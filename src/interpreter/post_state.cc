@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "emitters/planner_settings.h"
+
 namespace clpost {
 
 PostState::PostState(const Machine& machine, NcProgram& program, Diagnostics& d,
@@ -81,7 +83,7 @@ Vec2 cl2(const PostState& s, Point3 p) {
 Point3 cl_point(const PostState& s, Vec2 v) {
   Point3 p;
   double* axes[3] = {&p.x, &p.y, &p.z};
-  *axes[static_cast<int>(s.radial)] = s.m.cl_x_is_diameter ? v.x * 2 : v.x;
+  *axes[static_cast<int>(s.radial)] = v.x * diameter_factor(s.m.cl_x_is_diameter);
   *axes[static_cast<int>(s.m.cl_axial)] = v.z;
   return p;
 }

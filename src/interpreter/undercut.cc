@@ -10,7 +10,7 @@
 
 #include "emitters/undercut_output.h"
 #include "interpreter/statement_table.h"
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace clpost {
 
@@ -102,7 +103,7 @@ const Din76Row* din76_row(char form, double pitch) {
 }
 
 UndercutContour din76_contour(double d, double at, char form, int side, const Din76Row& row) {
-  const double tan30 = std::tan(30 * 3.14159265358979323846 / 180);
+  const double tan30 = std::tan(30 * std::numbers::pi / 180);
   const double s = side < 0 ? -1 : 1;
   UndercutContour c;
   if (!internal_form(form)) {

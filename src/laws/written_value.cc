@@ -44,7 +44,7 @@ double read_down(const Machine& m, std::string_view f, double v) {
 }
 
 Vec2 point_as_read(const Machine& m, Vec2 p) {
-  const double k = m.diameter_output ? 2 : 1;
+  const double k = diameter_factor(m);
   return {as_read(m, "X", k * p.x) / k, as_read(m, "Z", p.z)};
 }
 

@@ -118,4 +118,16 @@ struct Machine : ControlSettings {
   const std::string& code(const std::string& key) const;  // empty when absent
 };
 
+// What a radius is multiplied by to be an X value (and an X value divided by to be a radius):
+// 2 where X is a diameter, 1 where it is a radius. `diameter` is whichever flag says so: the
+// machine's output.diameter (below), the simulated control's modal G7/G8 state, the CL's
+// cl.x_is_diameter.
+constexpr double diameter_factor(bool diameter) {
+  return diameter ? 2 : 1;
+}
+// Machine `m`'s: X is written as a diameter with output.diameter.
+inline double diameter_factor(const Machine& m) {
+  return diameter_factor(m.diameter_output);
+}
+
 }  // namespace clpost

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "support/suggest.h"
+#include "support/text.h"
 
 namespace clpost {
 
@@ -129,13 +130,13 @@ std::string oversized_field(std::string_view line) {
     if (spec.find('{') != std::string_view::npos)
       return "a width or precision cannot be taken from a field";
     for (size_t k = 0; k < spec.size();) {
-      if (spec[k] < '0' || spec[k] > '9') {
+      if (!is_digit(spec[k])) {
         ++k;
         continue;
       }
       unsigned value = 0;
       size_t j = k;
-      for (; j < spec.size() && spec[j] >= '0' && spec[j] <= '9'; ++j)
+      for (; j < spec.size() && is_digit(spec[j]); ++j)
         value = std::min(value * 10 + static_cast<unsigned>(spec[j] - '0'), kMaxWidth + 1);
       if (value > kMaxWidth)
         return fmt::format("width or precision {} is too large (at most {})", spec.substr(k, j - k),
@@ -161,7 +162,7 @@ std::string check_template_line(const TemplateSpec& spec, std::string_view line,
   std::vector<std::string_view> names;
   for (const TemplateField& f : spec.fields) names.push_back(f.name);
   for (const FieldUse& u : field_uses(line)) {
-    const bool named = !u.name.empty() && !(u.name[0] >= '0' && u.name[0] <= '9');
+    const bool named = !u.name.empty() && !is_digit(u.name[0]);
     if (!named || std::find(names.begin(), names.end(), u.name) != names.end()) continue;
     offset = u.offset;
     return fmt::format("unknown field '{{{}}}'{} (fields: {})", u.name, did_you_mean(u.name, names),

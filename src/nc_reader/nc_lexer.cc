@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "reader/number.h"
+#include "support/text.h"
 
 namespace clpost {
 
@@ -19,20 +20,12 @@ namespace {
 bool is_letter(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
 }
-bool is_digit(char c) {
-  return c >= '0' && c <= '9';
-}
-bool is_blank(char c) {
-  return c == ' ' || c == '\t';
-}
 char upper(char c) {
   return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
 }
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (is_blank(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && (is_blank(s.back()) || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
+// Trimmed text drops trailing CRs too, as lex_nc_line does at the line's end: one can still
+// stand inside a line given to lex_nc_line, or in the machine's block address and comment text.
+constexpr std::string_view kCr = "\r";
 
 struct Lexer {
   std::string_view s;
@@ -65,7 +58,7 @@ struct Lexer {
         std::string_view a = s.substr(arg_start, i - arg_start);
         size_t lead = 0;
         while (lead < a.size() && is_blank(a[lead])) ++lead;
-        c.args.emplace_back(trim(a));
+        c.args.emplace_back(trim(a, kCr));
         c.cols.push_back(col(arg_start + lead));
         arg_start = i + 1;
         if (ch == ')') {
@@ -133,14 +126,14 @@ struct Lexer {
     const size_t start = i;
     i += open.size();
     if (syn.comment_close.empty()) {
-      b.comments.emplace_back(trim(s.substr(i)));
+      b.comments.emplace_back(trim(s.substr(i), kCr));
       i = s.size();
       return true;
     }
     size_t close = s.find(syn.comment_close, i);
     if (close == std::string_view::npos)
       return fail(start, fmt::format("comment has no closing '{}'", syn.comment_close));
-    b.comments.emplace_back(trim(s.substr(i, close - i)));
+    b.comments.emplace_back(trim(s.substr(i, close - i), kCr));
     i = close + syn.comment_close.size();
     return true;
   }
@@ -153,7 +146,7 @@ struct Lexer {
     }
     if (i < s.size() && s[i] == '/') ++i;  // block delete: the block runs (switch off)
     // Block number.
-    std::string_view addr = trim(syn.block_address);
+    std::string_view addr = trim(syn.block_address, kCr);
     if (!addr.empty() && s.substr(i, addr.size()) == addr) {
       size_t j = i + addr.size();
       while (j < s.size() && is_blank(s[j])) ++j;
@@ -162,7 +155,7 @@ struct Lexer {
         i = j;
       }
     }
-    const std::string_view open = trim(syn.comment_open);
+    const std::string_view open = trim(syn.comment_open, kCr);
     while (true) {
       skip_blanks();
       if (i >= s.size()) return true;
@@ -173,7 +166,7 @@ struct Lexer {
         // An ISO comment in another dialect (INSERT text passed through): read as a comment.
         if (!comment(NcSyntax{syn.block_address, "(", ")"}, "(")) return false;
       } else if (c == ';') {
-        b.comments.emplace_back(trim(s.substr(i + 1)));
+        b.comments.emplace_back(trim(s.substr(i + 1), kCr));
         return true;
       } else if (is_letter(c)) {
         if (!word()) return false;

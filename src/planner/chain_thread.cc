@@ -13,11 +13,11 @@
 #include "planner/flank_shift.h"
 #include "planner/multi_geometry.h"
 #include "planner/multi_sites.h"
-#include "planner/number_text.h"
 #include "planner/plan_report.h"
 #include "planner/planner.h"
 #include "planner/pullout.h"
-#include "planner/vec2_math.h"
+#include "support/number_text.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

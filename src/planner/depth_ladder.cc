@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "planner/plan_report.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

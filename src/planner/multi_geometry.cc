@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "planner/multi_sites.h"
-#include "planner/number_text.h"
-#include "planner/vec2_math.h"
+#include "support/number_text.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "planner/number_text.h"
 #include "planner/plan_report.h"
 #include "planner/planner.h"
-#include "planner/vec2_math.h"
+#include "support/number_text.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string_view>
 
-#include "planner/number_text.h"
 #include "support/json_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

@@ -7,8 +7,8 @@
 #include <limits>
 #include <string>
 
-#include "planner/number_text.h"
 #include "planner/planner_test_util.h"
+#include "support/number_text.h"
 
 namespace clpost {
 namespace {

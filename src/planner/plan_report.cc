@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost::plan_report {
 

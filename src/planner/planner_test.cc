@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,6 @@ using testing::make_multi;
 using testing::pitch_of;
 using testing::TestStatement;
 
-const double kPi = 3.14159265358979323846;
 const double kH = 1.5 * std::sqrt(3.0) / 2;  // 1.299038: pitch / (2 tan 30)
 const double kTan30 = 1 / std::sqrt(3.0);    // 0.577350
 const Vec2 kP0{12, 5};
@@ -291,7 +291,7 @@ TEST(Planner, MachineDefaultsForOptionAndToolAngle) {
   EXPECT_EQ(r.plan.tool_angle, 55);
   // OPTION 3: 0.5, 1, 1.5, 2; single edge at 55/2: sigma_4 = 2 tan 27.5 = 1.041134.
   EXPECT_EQ(depths(r.plan), (std::vector<double>{0.5, 1, 1.5, 2}));
-  EXPECT_NEAR(r.plan.passes[3].shift, 2 * std::tan(27.5 * kPi / 180), 1e-12);
+  EXPECT_NEAR(r.plan.passes[3].shift, 2 * std::tan(27.5 * std::numbers::pi / 180), 1e-12);
   EXPECT_NEAR(r.plan.passes[3].shift, 1.041134, 1e-6);
   // The CL's words win over the machine's defaults.
   Planned w = plan("THREAD/ON,DEPTH,2,CUTS,4,OPTION,0,TLANGL,60", s);
@@ -466,7 +466,7 @@ TEST(Planner, AtanglNegativeLeansBack) {
   // ATANGL,-20,1: 1 out and tan(-20) = -0.363970 along t, i.e. +0.363970 in Z: 110 degrees.
   Planned r = plan("THREAD/ON,DEPTH,1,ATANGL,-20,1");
   ASSERT_TRUE(r.ok) << r.messages;
-  EXPECT_POINT(*r.plan.pullout, 1, std::tan(20 * kPi / 180));
+  EXPECT_POINT(*r.plan.pullout, 1, std::tan(20 * std::numbers::pi / 180));
   EXPECT_TRUE(r.plan.pullout_linear);
 }
 
@@ -514,8 +514,9 @@ TEST(Planner, ChamfrAngles) {
     double dx, dz;
     bool linear;
   };
-  const double t20 = std::tan(20 * kPi / 180), t29 = std::tan(29 * kPi / 180),
-               t61 = std::tan(61 * kPi / 180);
+  const double t20 = std::tan(20 * std::numbers::pi / 180),
+               t29 = std::tan(29 * std::numbers::pi / 180),
+               t61 = std::tan(61 * std::numbers::pi / 180);
   const Case cases[] = {
       {"CHAMFR,2,20", 2 * t20, -2, true},          // 20 degrees
       {"CHAMFR,1,29", t29, -1, true},              // just below 30

@@ -8,17 +8,11 @@
 #include <vector>
 
 #include "support/source_loc.h"
+#include "support/vec2.h"
 
 namespace clpost {
 
 enum class LengthUnit : uint8_t { kMm, kInch };
-
-// A point or vector in the CL lathe frame: x is the radial coordinate (a radius), z the spindle
-// axis.
-struct Vec2 {
-  double x = 0;
-  double z = 0;
-};
 
 // Modal pitch state (PITCH/, or the pitch couplets of THREAD/ and COUPLE/), in CL units.
 struct PitchSpec {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

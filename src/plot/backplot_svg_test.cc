@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -194,10 +195,10 @@ TEST(BackplotSvg, SectionInsets) {
 TEST(MoveGeometry, ArcSweepsAndBounds) {
   const ArcSweep cw = arc_sweep(mv(MoveKind::kArcCw, {12, -20}, {14, -22}, {14, -20}));
   EXPECT_DOUBLE_EQ(cw.radius, 2);
-  EXPECT_NEAR(cw.start, -M_PI / 2, 1e-12);  // from is on -X of the centre
-  EXPECT_NEAR(cw.sweep, -M_PI / 2, 1e-12);  // to -Z, clockwise
+  EXPECT_NEAR(cw.start, -std::numbers::pi / 2, 1e-12);  // from is on -X of the centre
+  EXPECT_NEAR(cw.sweep, -std::numbers::pi / 2, 1e-12);  // to -Z, clockwise
   const ArcSweep ccw = arc_sweep(mv(MoveKind::kArcCcw, {12, -20}, {14, -22}, {14, -20}));
-  EXPECT_NEAR(ccw.sweep, 1.5 * M_PI, 1e-12);
+  EXPECT_NEAR(ccw.sweep, 1.5 * std::numbers::pi, 1e-12);
   // A half circle over the top (G3 from +Z to -Z around (X 0, Z 0), radius 5) reaches X 5.
   Toolpath tp;
   tp.moves = {mv(MoveKind::kArcCcw, {0, 5}, {0, -5}, {0, 0})};

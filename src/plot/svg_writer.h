@@ -11,7 +11,7 @@ namespace clpost {
 
 // A number for SVG: fixed notation with `decimals` decimals (default 2, enough for pixels),
 // trailing zeros and a bare point trimmed, never "-0"; NaN and infinities become "0" so a bad
-// input never makes an unreadable document. 12.5 -> "12.5", 3.14159 -> "3.14", -0.001 -> "0".
+// input never makes an unreadable document. 12.5 -> "12.5", pi -> "3.14", -0.001 -> "0".
 std::string svg_num(double v, int decimals = 2);
 
 // A number for tables and labels: exactly `decimals` decimals (zeros kept, so columns line up),

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "plot/nice_step.h"
@@ -18,7 +19,7 @@ using testing::check_xml;
 
 TEST(SvgNum, FixedSmallPrecision) {
   EXPECT_EQ(svg_num(12.5), "12.5");
-  EXPECT_EQ(svg_num(3.14159), "3.14");
+  EXPECT_EQ(svg_num(std::numbers::pi), "3.14");
   EXPECT_EQ(svg_num(2.0), "2");
   EXPECT_EQ(svg_num(-0.001), "0");  // never "-0"
   EXPECT_EQ(svg_num(-1.005, 1), "-1");

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,7 @@ using testing::parsed;
 using testing::XmlDoc;
 using testing::XmlElement;
 
-const double kTan30 = std::tan(M_PI / 6);
+const double kTan30 = std::tan(std::numbers::pi / 6);
 
 // 2 starts, pitch 1.5, D 0.9, flank infeed: ladder 0.4, 0.7, 0.9 (last finish); start 1 stops
 // after pass 2, so 5 passes in all. Shifts d tan 30: 0.23094, 0.40415, 0.51962.
@@ -166,7 +167,7 @@ TEST(ThreadSectionSvg, SpringPassSharesTheFinishTipLabel) {
   s.pitch = 1.5;
   s.lead = 1.5;
   s.depth = 0.92;
-  const double k = std::tan(29.5 * M_PI / 180);
+  const double k = std::tan(29.5 * std::numbers::pi / 180);
   s.passes = {{1, 0, 0.5, 0.5 * k, PassKind::kRough},
               {2, 0, 0.8, 0.8 * k, PassKind::kRough},
               {3, 0, 0.92, 0.92 * k, PassKind::kFinish},

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "plot/thread_profile.h"
@@ -31,7 +32,7 @@ ThreadPlan two_start_plan() {
     t.n = i / 2 + 1;
     t.start = i % 2;
     t.depth = depth[i];
-    t.shift = depth[i] * std::tan(27.5 * M_PI / 180);
+    t.shift = depth[i] * std::tan(27.5 * std::numbers::pi / 180);
     t.kind = i >= 4 ? PassKind::kFinish : PassKind::kRough;
     t.from = {1, 2};
     p.passes.push_back(t);
@@ -94,10 +95,10 @@ TEST(CutProfile, OneSixtyDegreeV) {
   EXPECT_DOUBLE_EQ(prof.front().u, -1.5);
   EXPECT_DOUBLE_EQ(prof.back().u, 1.5);
   EXPECT_NEAR(profile_at(prof, 0), 0.9, 1e-9);
-  EXPECT_NEAR(profile_at(prof, 0.3), 0.9 - 0.3 / std::tan(M_PI / 6), 1e-9);  // 0.380385
+  EXPECT_NEAR(profile_at(prof, 0.3), 0.9 - 0.3 / std::tan(std::numbers::pi / 6), 1e-9);  // 0.380385
   EXPECT_NEAR(profile_at(prof, 0.6), 0, 1e-9);    // past the V's edge at 0.9 tan 30 = 0.5196
   EXPECT_NEAR(profile_at(prof, 1.5), 0.9, 1e-9);  // the next turn, one lead on
-  EXPECT_NEAR(profile_at(prof, -1.2), 0.9 - 0.3 / std::tan(M_PI / 6), 1e-9);
+  EXPECT_NEAR(profile_at(prof, -1.2), 0.9 - 0.3 / std::tan(std::numbers::pi / 6), 1e-9);
   // Straight stretches are not sampled: crest, flank, flank, crest ... about a dozen points.
   EXPECT_LE(prof.size(), 16u);
 }
@@ -107,7 +108,7 @@ TEST(CutProfile, FlankInfeedEnvelope) {
   // groove is the deeper V.
   ThreadSection s;
   s.pitch = 2;
-  const double k = std::tan(M_PI / 6);
+  const double k = std::tan(std::numbers::pi / 6);
   s.passes.push_back({1, 0, 0.5, 0.5 * k, PassKind::kRough});
   s.passes.push_back({2, 0, 1.0, 1.0 * k, PassKind::kFinish});
   const std::vector<SectionPoint> prof = cut_profile(s, -1, 3);
@@ -136,7 +137,7 @@ TEST(SectionGeometry, GroovesOnePitchApartAndFallbacks) {
   s.lead = 3;
   EXPECT_DOUBLE_EQ(groove_pitch(s), 1.5);  // lead / starts
   s.tool_angle = std::nan("");
-  EXPECT_NEAR(half_angle_tan(s), std::tan(M_PI / 6), 1e-12);
+  EXPECT_NEAR(half_angle_tan(s), std::tan(std::numbers::pi / 6), 1e-12);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "reader/cldata_words.h"
 #include "reader/continuation.h"
+#include "support/text.h"
 
 namespace clpost {
 
@@ -19,7 +20,7 @@ namespace {
 constexpr size_t kChunk = 64 * 1024;
 
 bool is_name_char(char c) {
-  return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+  return (c >= 'A' && c <= 'Z') || is_digit(c);
 }
 
 std::string_view trim_blanks(std::string_view s) {

@@ -7,6 +7,7 @@
 
 #include "reader/cl_reader.h"
 #include "reader/cldata_words.h"
+#include "support/text.h"
 
 namespace clpost::cldata {
 
@@ -85,7 +86,7 @@ bool Encoder::args(const Statement& st, std::vector<uint64_t>& words) {
     }
     const int64_t code = minor_code(a.text);
     bool name = a.text.size() <= 6 && !a.text.empty();
-    for (char c : a.text) name = name && ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
+    for (char c : a.text) name = name && ((c >= 'A' && c <= 'Z') || is_digit(c));
     if (code < 0 && !name) {
       fail(st, fmt::format("the word '{}' has no CLDATA code and is not a name", a.text));
       return false;

@@ -5,14 +5,11 @@
 
 #include "reader/continuation.h"
 #include "reader/number.h"
+#include "support/text.h"
 
 namespace clpost::reader {
 
 namespace {
-
-bool is_digit(char c) {
-  return c >= '0' && c <= '9';
-}
 
 class Evaluator {
  public:

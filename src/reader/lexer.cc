@@ -6,6 +6,7 @@
 #include "reader/continuation.h"
 #include "reader/expression.h"
 #include "reader/number.h"
+#include "support/text.h"
 
 namespace clpost::reader {
 
@@ -13,9 +14,6 @@ namespace {
 
 bool is_alpha(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
-}
-bool is_digit(char c) {
-  return c >= '0' && c <= '9';
 }
 bool is_major_char(char c) {
   return is_alpha(c) || is_digit(c) || c == '_' || c == '-';
@@ -52,12 +50,6 @@ std::string quoted(std::string_view s) {
   out += shown(s);
   out += '\'';
   return out;
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank_char(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank_char(s.back())) s.remove_suffix(1);
-  return s;
 }
 
 bool equals_upper(std::string_view word, std::string_view upper) {

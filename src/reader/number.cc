@@ -4,11 +4,9 @@
 #include <cstdint>
 #include <system_error>
 
-namespace clpost::reader {
+#include "support/text.h"
 
-static bool is_digit(char c) {
-  return c >= '0' && c <= '9';
-}
+namespace clpost::reader {
 
 // Exact powers of ten.
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "machine/machine_schema.h"
 #include "nc_reader/nc_lexer.h"
 #include "reader/number.h"
 #include "simulator/control_readback.h"
@@ -41,8 +42,8 @@ bool has_code(const NcBlock& b, const Code& c) {
   return false;
 }
 
-Code template_code(const Machine& m, const std::string& name, size_t index) {
-  auto it = m.templates.find(name);
+Code template_code(const Machine& m, const TemplateSpec& spec, size_t index) {
+  auto it = m.templates.find(std::string(spec.name));
   if (it == m.templates.end() || it->second.size() <= index) return {};
   std::string_view t = it->second[index];
   size_t end = t.find_first_of(" ({");
@@ -164,7 +165,7 @@ Codes codes_of(const Machine& m) {
   c.thread_dec = sim::parse_code(m.code("thread_decreasing"));
   c.metric = sim::parse_code(m.code("metric"));
   c.inch = sim::parse_code(m.code("inch"));
-  c.dwell = sim::template_code(m, "dwell");
+  c.dwell = sim::template_code(m, tmpl::kDwell);
   c.modal = sim::modal_words(m);
   static constexpr sim::ControlReadback kPlainIso{};
   c.control = m.control && m.control->readback ? m.control->readback : &kPlainIso;

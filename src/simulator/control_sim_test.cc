@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "simulator/sim_test_util.h"
 
@@ -121,7 +122,7 @@ TEST(ControlSim, FanucG76TwoBlocksExpandedWithTheLaw) {
   for (size_t i = 0; i < 6; ++i) {
     const NcCut& c = r.sim.cuts[i];
     EXPECT_NEAR(c.from.x, 7.08 + 0.92 - h[i], 1e-9) << i;
-    EXPECT_NEAR(c.from.z, 2 - h[i] * std::tan(M_PI / 6), 1e-9) << i;
+    EXPECT_NEAR(c.from.z, 2 - h[i] * std::tan(std::numbers::pi / 6), 1e-9) << i;
     EXPECT_NEAR(c.to.z, -20, 1e-9) << i;
     EXPECT_TRUE(c.fixed_end);
     EXPECT_EQ(c.source, "G76");

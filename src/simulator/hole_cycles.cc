@@ -15,6 +15,7 @@
 #include "laws/hole_law.h"
 #include "reader/number.h"
 #include "simulator/sim_state.h"
+#include "support/text.h"
 
 namespace clpost::sim {
 
@@ -172,8 +173,7 @@ void hole_comment(State& s, const NcBlock& b) {
     const size_t at = lower.find_first_not_of(' ');
     if (at == std::string::npos || lower.compare(at, kMarker.size(), kMarker) != 0) continue;
     uint32_t n = 0;
-    for (size_t i = at + kMarker.size();
-         i < lower.size() && std::isdigit(static_cast<unsigned char>(lower[i])) && n < 100000000;
+    for (size_t i = at + kMarker.size(); i < lower.size() && is_digit(lower[i]) && n < 100000000;
          ++i)
       n = n * 10 + static_cast<uint32_t>(lower[i] - '0');
     SimHole h;

@@ -10,6 +10,7 @@
 
 #include "machine/machine_schema.h"
 #include "simulator/sim_state.h"
+#include "support/text.h"
 
 namespace clpost::sim {
 
@@ -52,7 +53,7 @@ void learn_spindle(const Machine& m, ModalWords& w) {
   w.ccw = parse_code(m.code("spindle_ccw"));
   if (const std::vector<std::string>* stop = lines_of(m, tmpl::kSpindleStop);
       stop != nullptr && !stop->empty())
-    w.stop = template_code(m, std::string(tmpl::kSpindleStop.name));
+    w.stop = template_code(m, tmpl::kSpindleStop);
   if (auto rpm = field_line(m, tmpl::kSpindleRpm, "rpm")) {
     w.rpm_address = rpm->word().address;
     w.rpm_mode = rpm->first_code;
@@ -105,9 +106,7 @@ std::optional<int> tool_number(State& s, double v, const std::string& field, con
 // T0303 with fields {tool,2},{offset,2}: tool 3, offset 3 (widths taken from the right).
 void read_tool_word(State& s, const NcWord& w, const ModalWords& mw) {
   std::string_view digits = w.text;
-  const bool all_digits = !digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) {
-    return std::isdigit(static_cast<unsigned char>(c));
-  });
+  const bool all_digits = !digits.empty() && std::all_of(digits.begin(), digits.end(), is_digit);
   if (mw.tool_fields.size() == 1 || !all_digits) {
     if (std::optional<int> t = tool_number(s, w.value, "the tool", w)) s.cut.tool = *t;
     return;

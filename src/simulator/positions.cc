@@ -14,7 +14,7 @@ bool machine_position_block(State& s, const NcBlock& b) {
     auto it = s.m.templates.find(std::string(t->name));
     if (it == s.m.templates.end()) continue;
     for (size_t i = 0; i < it->second.size(); ++i) {
-      const Code c = template_code(s.m, std::string(t->name), i);
+      const Code c = template_code(s.m, *t, i);
       if (c.empty() || c.address != "G" || !has_code(b, c)) continue;
       s.pos_known = false;
       return true;

@@ -11,6 +11,10 @@
 #include "planner/thread_words.h"
 #include "simulator/control_sim.h"
 
+namespace clpost {
+struct TemplateSpec;  // machine/machine_schema.h
+}  // namespace clpost
+
 namespace clpost::sim {
 
 // How much of a block's text a cut keeps for its diagnostics (memory stays bounded).
@@ -28,8 +32,9 @@ struct Code {
 };
 Code parse_code(std::string_view text);
 bool has_code(const NcBlock& b, const Code& c);
-// The first word of a template's line `index` ("G76" of "G76 X{x} ..."); empty when absent.
-Code template_code(const Machine& m, const std::string& name, size_t index = 0);
+// The first word of template `t`'s line `index` on machine `m` ("G76" of "G76 X{x} ..."); empty
+// when absent. Named by its spec (tmpl::kDwell, ...): a misspelt template does not compile.
+Code template_code(const Machine& m, const TemplateSpec& t, size_t index = 0);
 
 // A field of a template word: "{offset:02}" is {"offset", 2} (width 0: any).
 struct TemplateField {
@@ -122,7 +127,7 @@ struct State {
   double value(const NcWord& w, std::string_view format) const;
   double value(const NcWord& w) const { return value(w, w.address); }
   // X as a radius (halved in diameter mode).
-  double radius(const NcWord& x) const { return diameter ? value(x) / 2 : value(x); }
+  double radius(const NcWord& x) const { return value(x) / diameter_factor(diameter); }
   void error(uint32_t col, std::string message);
   // A count or code word as a whole number in [lo, hi]; else an error naming the word and the
   // range, and nothing (a cycle asking for a billion passes is refused, not run).

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "simulator/sim_state.h"
+#include "support/text.h"
 
 namespace clpost::sim {
 
@@ -20,7 +21,7 @@ bool parse_fields(std::string_view text, std::vector<TemplateField>& out) {
     TemplateField f{std::string(inner.substr(0, colon)), 0};
     if (colon != std::string_view::npos)
       for (char c : inner.substr(colon + 1))
-        if (std::isdigit(static_cast<unsigned char>(c))) f.width = f.width * 10 + (c - '0');
+        if (is_digit(c)) f.width = f.width * 10 + (c - '0');
     out.push_back(std::move(f));
     text.remove_prefix(close + 1);
   }

@@ -52,7 +52,7 @@ struct PathCheck {
         options(o),
         diags(d),
         tol(tolerance),
-        xs(machine.diameter_output ? 2 : 1) {}
+        xs(diameter_factor(machine)) {}
   const ClPath& cl;
   const Toolpath& path;
   const Machine& m;

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "machine/yaml_text.h"
@@ -94,7 +95,7 @@ void chain_details(ThreadPlan& p) {
   const double tx = b.x - a.x, tz = b.z - a.z;
   const double along = (p.pullout->x * tx + p.pullout->z * tz) / std::hypot(tx, tz);
   const double out = std::fabs(p.pullout->x * tz - p.pullout->z * tx) / std::hypot(tx, tz);
-  const double angle = std::atan2(out, along) * 180 / 3.14159265358979323846;
+  const double angle = std::atan2(out, along) * 180 / std::numbers::pi;
   p.pullout_linear = angle < 30 - 1e-9 || angle > 60 + 1e-9;
 }
 

@@ -8,7 +8,7 @@
 
 #include "laws/cut_pass.h"
 #include "laws/written_value.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "verify/cut_alignment.h"
 #include "verify/expected_cuts.h"
 
@@ -161,7 +161,7 @@ class Comparer {
   }
 
   std::string point(Vec2 v) const {
-    return fmt::format("X{:.4f} Z{:.4f}", m_.diameter_output ? 2 * v.x : v.x, v.z);
+    return fmt::format("X{:.4f} Z{:.4f}", diameter_factor(m_) * v.x, v.z);
   }
 
   // The cut's depth and shift in the plan's frame, relative to the pass it stands for.

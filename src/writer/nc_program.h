@@ -120,7 +120,7 @@ class NcProgram {
   void axes(LathePoint p, bool force_both);
 
   void feed_words();
-  double x_out(double r) const { return m_.diameter_output ? 2 * r : r; }
+  double x_out(double r) const { return diameter_factor(m_) * r; }
 
   const Machine& m_;
   NcWriter w_;

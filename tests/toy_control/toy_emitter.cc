@@ -13,7 +13,7 @@ namespace {
 std::vector<G177Words> pass_words(const ThreadPlan& plan, const Machine& m) {
   std::vector<G177Words> words;
   for (const ThreadPass& p : plan.passes) {
-    const double k = m.diameter_output ? 2 : 1;
+    const double k = diameter_factor(m);
     words.push_back({as_read(m, "X", k * p.from.x) / k, as_read(m, "Z", p.to.z),
                      as_read(m, "K", p.from.z), as_read(m, "F", plan.lead)});
   }
@@ -52,7 +52,7 @@ bool G177Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContex
   if (Fit f = fit(plan, m); !f.exact()) return unfit_error(plan, ctx, m, name(), f.mismatch);
   const Vec2 s = plan.end_position;  // every pass starts and ends there
   prog.rapid(lp(s));
-  const double k = m.diameter_output ? 2 : 1;
+  const double k = diameter_factor(m);
   for (const G177Words& w : pass_words(plan, m)) {
     prog.writer().code("G177").word("X", k * w.x).word("Z", w.z).word("K", w.k).word("F", w.f);
     prog.writer().end_block();

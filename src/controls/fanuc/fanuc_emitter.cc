@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "controls/fanuc/fanuc_templates.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "writer/number_format.h"
 
 namespace clpost {
@@ -270,7 +270,7 @@ double min_cut_word(const ThreadPlan& plan, const Machine& m, const FanucG76Word
 // X, Z (the full-depth end), R (the taper) and A, the start, as written.
 void position_words(const Machine& m, const g76::CyclePlan& cp, FanucBlock& b) {
   FanucG76Words& w = b.w;
-  const double k = m.diameter_output ? 2 : 1;
+  const double k = diameter_factor(m);
   w.x = as_read(m, "X", k * cp.end.x);
   w.z = as_read(m, "Z", cp.end.z);
   b.start = point_as_read(m, cp.start);
@@ -348,7 +348,7 @@ std::optional<G92Plan> g92_words(const ThreadPlan& plan, const Machine& m, Fit& 
   const Vec2 d = plan.p2 - plan.p1;
   const double slope = d.x / d.z;
   const Vec2 e = plan.end_position;
-  const double k = m.diameter_output ? 2 : 1;
+  const double k = diameter_factor(m);
   const bool by_angle = plan.starts_by_angle && plan.pitch.starts > 1;
   G92Plan g;
   for (const ThreadPass& p : plan.passes) {
@@ -435,7 +435,7 @@ bool G92Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const EmitContext
   if (!g) {
     return unfit_error(plan, ctx, m, "G92", f.mismatch);
   }
-  const double k = m.diameter_output ? 2 : 1;
+  const double k = diameter_factor(m);
   bool modal = false;      // a G92 is in force (a G0 ends it)
   G92Words last;           // its words
   std::optional<Vec2> at;  // where the tool is (known after the first block)

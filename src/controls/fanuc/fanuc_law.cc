@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/vec2_math.h"
+#include "machine/machine.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 
@@ -78,7 +79,7 @@ std::vector<double> fanuc_g76_depths(const FanucG76Words& w) {
 std::vector<Cut> expand_fanuc_g76(const FanucG76Words& w, Vec2 start, const CycleLaw& law) {
   FlankCycle g;
   g.start = start;
-  g.end = {law.diameter ? w.x / 2 : w.x, w.z};
+  g.end = {w.x / diameter_factor(law.diameter), w.z};
   g.taper = w.taper;
   g.height = w.height;
   g.flank = w.tool_angle / 2.0;
@@ -94,7 +95,7 @@ std::vector<Cut> expand_g92(const std::vector<G92Pass>& passes, bool diameter, V
   const Vec2 line = p2 - p1;
   const double len = length(line);
   for (const G92Pass& p : passes) {
-    const double xr = diameter ? p.words.x / 2 : p.words.x;
+    const double xr = p.words.x / diameter_factor(diameter);
     Cut c;
     c.from = {xr + p.words.taper, p.start.z};
     c.to = {xr, p.words.z};

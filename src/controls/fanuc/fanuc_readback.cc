@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "controls/fanuc/fanuc_law.h"
+#include "controls/fanuc/fanuc_templates.h"
 #include "simulator/cycle_words.h"
 #include "simulator/sim_state.h"
 
@@ -15,7 +16,7 @@ std::string_view g76_depth_format(const State& s) {
 }
 
 bool fanuc_g76(State& s, const NcBlock& b) {
-  const Code code = template_code(s.m, "fanuc_g76");
+  const Code code = template_code(s.m, tmpl::kFanucG76);
   if (!has_code(b, code)) return false;
   const bool second = b.find("X") != nullptr || b.find("Z") != nullptr;
   if (!second) {
@@ -65,7 +66,7 @@ bool fanuc_g76(State& s, const NcBlock& b) {
 }
 
 bool g92_cycle(State& s, const NcBlock& b) {
-  const Code code = template_code(s.m, "g92");
+  const Code code = template_code(s.m, tmpl::kG92);
   const bool starts = has_code(b, code);
   if (!starts) {
     // A continuation block repeats G92 while it is the modal motion: only X/Z/R/Q words.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "emitters/emitter.h"
+#include "emitters/planner_settings.h"
 #include "machine/machine_loader.h"
 #include "planner/planner_test_util.h"
 

@@ -96,7 +96,7 @@ std::string haas_depth_mismatch(const ThreadPlan& plan, const HaasSettings& s,
 HaasBlock haas_block(const ThreadPlan& plan, const Machine& m, const g76::CyclePlan& cp, int k,
                      int starts) {
   const double h_max = *std::max_element(cp.heights.begin(), cp.heights.end());
-  const double xk = m.diameter_output ? 2 : 1;
+  const double xk = diameter_factor(m);
   HaasBlock b;
   HaasG76Words& w = b.w;
   w.mode = plan.option == 3 ? 3 : 1;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "machine/machine.h"
 
 namespace clpost {
 
@@ -18,7 +21,7 @@ std::vector<Cut> expand_haas_g76(const HaasG76Words& w, Vec2 start, const HaasSe
                                  const CycleLaw& law, int starts) {
   FlankCycle g;
   g.start = start;
-  g.end = {law.diameter ? w.x / 2 : w.x, w.z};
+  g.end = {w.x / diameter_factor(law.diameter), w.z};
   g.taper = w.taper;
   g.height = w.height;
   g.flank = w.tool_angle / 2.0;
@@ -44,7 +47,7 @@ std::vector<Cut> expand_haas_g76(const HaasG76Words& w, Vec2 start, const HaasSe
     if (c.empty()) return {};  // words the figure cannot draw (a pass at no depth, ...)
     if (gi.shifted_end && gi.flank > 0) {
       const double h_max = *std::max_element(depths.begin(), depths.end());
-      const double tan_f = std::tan(gi.flank * 3.14159265358979323846 / 180);
+      const double tan_f = std::tan(gi.flank * std::numbers::pi / 180);
       const double dirz = g.end.z < g.start.z ? -1.0 : 1.0;
       const double back = (h_max - depths[i]) * tan_f * dirz;
       c[0].to.z -= back;

@@ -6,13 +6,14 @@
 
 #include "controls/fanuc/fanuc_readback.h"
 #include "controls/haas/haas_law.h"
+#include "controls/haas/haas_templates.h"
 #include "simulator/cycle_words.h"
 #include "simulator/sim_state.h"
 
 namespace clpost::sim {
 
 bool haas_g76(State& s, const NcBlock& b) {
-  const Code code = template_code(s.m, "haas_g76");
+  const Code code = template_code(s.m, tmpl::kHaasG76);
   if (!has_code(b, code)) return false;
   if (missing(s, b, code, "XZKDF")) return true;
   HaasG76Words w;

@@ -8,7 +8,7 @@
 
 #include "controls/heidenhain/heidenhain_templates.h"
 #include "laws/written_value.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "writer/number_format.h"
 
 namespace clpost {
@@ -69,7 +69,7 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
   while (plan.passes[first_full].depth < d_max - 1e-9) ++first_full;
 
   const G31FlankCodes codes = g31_flank_codes(m);
-  const double dm = m.diameter_output ? 2 : 1;
+  const double dm = diameter_factor(m);
   HeidenhainG31 w;
   w.f = as_read(m, "F", plan.pitch.pitch);
   w.u = as_read(m, "U", d_max);
@@ -123,7 +123,7 @@ bool HeidenhainG31Emitter::emit(const ThreadPlan& plan, NcProgram& prog, const E
   if (!w) {
     return unfit_error(plan, ctx, m, "G31", why);
   }
-  const double dm = m.diameter_output ? 2 : 1;
+  const double dm = diameter_factor(m);
   // To the clear line above the thread start, then the cycle with its contour.
   if (plan.feed_approach)
     prog.linear(lp(clear_start(plan)));

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <optional>
 
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

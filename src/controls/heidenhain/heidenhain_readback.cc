@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "controls/heidenhain/heidenhain_law.h"
+#include "controls/heidenhain/heidenhain_templates.h"
 #include "simulator/cycle_words.h"
 #include "simulator/sim_state.h"
 
@@ -108,16 +109,16 @@ void close_cycle(State& s) {
 }  // namespace
 
 bool heidenhain_g31(State& s, const NcBlock& b) {
-  const auto& tmpl = s.m.templates.find("heidenhain_g31");
-  if (tmpl == s.m.templates.end() || tmpl->second.empty()) return false;
+  const auto lines = s.m.templates.find(std::string(tmpl::kHeidenhainG31.name));
+  if (lines == s.m.templates.end() || lines->second.empty()) return false;
   PendingCycle& g = s.pending;
   if (!g.set) {
-    if (!has_code(b, template_code(s.m, "heidenhain_g31"))) return false;
+    if (!has_code(b, template_code(s.m, tmpl::kHeidenhainG31))) return false;
     hold_cycle(s, b);
     return true;
   }
   // The contour (G0 to its start, G1 to its end) and the closing G80.
-  const Code end = template_code(s.m, "heidenhain_g31", tmpl->second.size() - 1);
+  const Code end = template_code(s.m, tmpl::kHeidenhainG31, lines->second.size() - 1);
   collect_contour(s, b);
   if (!has_code(b, end)) return true;
   close_cycle(s);

@@ -8,7 +8,7 @@
 
 #include "controls/linuxcnc/linuxcnc_templates.h"
 #include "laws/written_value.h"
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 #include "writer/number_format.h"
 
 namespace clpost {
@@ -172,7 +172,7 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
   if (!m.templates.count(tname))
     return no(fmt::format("machine '{}' has no template '{}'", m.name, tname));
 
-  const double dm = m.diameter_output ? 2 : 1;
+  const double dm = diameter_factor(m);
   // The tool waits on the clear line above the thread start: that is G76's drive line.
   b.start.x = as_read(m, "X", dm * (plan.p1.x + out_sign * plan.clearance)) / dm;
   b.start.z = as_read(m, "Z", plan.p1.z);

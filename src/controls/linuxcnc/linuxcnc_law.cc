@@ -1,6 +1,7 @@
 #include "controls/linuxcnc/linuxcnc_law.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace clpost {
 
@@ -41,7 +42,7 @@ Threading threading_setup(const LinuxcncG76& w, Vec2 start, bool diameter_mode) 
   g.end_depth = std::fabs(k) + std::fabs(i);
 
   double angle = w.q == -1 ? 0 : w.q;
-  angle *= 3.14159265358979323846 / 180.0;
+  angle *= std::numbers::pi / 180.0;
   if (w.z > start.z) angle = -angle;
   g.angle = angle;
   g.degression = w.r < 1.0 ? 1.0 : w.r;

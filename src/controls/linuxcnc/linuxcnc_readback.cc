@@ -5,13 +5,14 @@
 #include <cmath>
 
 #include "controls/linuxcnc/linuxcnc_law.h"
+#include "controls/linuxcnc/linuxcnc_templates.h"
 #include "simulator/cycle_words.h"
 #include "simulator/sim_state.h"
 
 namespace clpost::sim {
 
 bool linuxcnc_g76(State& s, const NcBlock& b) {
-  Code code = template_code(s.m, "linuxcnc_g76");
+  Code code = template_code(s.m, tmpl::kLinuxcncG76);
   if (!has_code(b, code)) return false;
   for (const char* a : {"P", "Z", "I", "J", "K"})
     if (b.find(a) == nullptr) {

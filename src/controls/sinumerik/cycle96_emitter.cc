@@ -5,7 +5,7 @@
 
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "machine/template_values.h"
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 namespace clpost {
 

@@ -10,8 +10,8 @@
 #include "controls/sinumerik/cycle99_emitter.h"
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
-#include "planner/number_text.h"
-#include "planner/vec2_math.h"
+#include "support/number_text.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "planner/vec2_math.h"
+#include "support/vec2_math.h"
 
 namespace clpost {
 

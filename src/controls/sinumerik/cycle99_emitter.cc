@@ -7,8 +7,8 @@
 
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
-#include "planner/number_text.h"
-#include "planner/vec2_math.h"
+#include "support/number_text.h"
+#include "support/vec2_math.h"
 #include "writer/number_format.h"
 
 namespace clpost {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "emitters/planner_settings.h"
 #include "machine/machine_loader.h"
 #include "planner/planner_test_util.h"
 

@@ -1,5 +1,6 @@
 #pragma once
-// How the planner writes a number for people and for the plan JSON.
+// How a number is written for people (messages, comments, the plan reports) and for the plan
+// JSON, by every stage from the planner on.
 #include <string>
 
 namespace clpost {

@@ -1,4 +1,4 @@
-#include "planner/number_text.h"
+#include "support/number_text.h"
 
 #include <fmt/format.h>
 

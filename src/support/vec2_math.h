@@ -1,10 +1,12 @@
 #pragma once
-// Vector arithmetic on Vec2 (CL lathe frame: x radial, z axial) for the planner. In its own
-// namespace so that it cannot clash with other stages' helpers; `using namespace
-// clpost::vec2_math;` in a .cc file to use the operators.
+// Vector arithmetic on Vec2 (CL lathe frame: x radial, z axial), for every stage that does
+// geometry (the planner, the laws, the emitters, verify). In its own namespace so that it cannot
+// clash with other stages' helpers; `using namespace clpost::vec2_math;` in a .cc file to use the
+// operators.
 #include <cmath>
+#include <numbers>
 
-#include "planner/thread_plan.h"
+#include "support/vec2.h"
 
 namespace clpost::vec2_math {
 
@@ -27,12 +29,11 @@ inline double length(Vec2 a) {
   return std::hypot(a.x, a.z);
 }
 
-constexpr double kPi = 3.14159265358979323846;
 inline double rad(double deg) {
-  return deg * kPi / 180;
+  return deg * std::numbers::pi / 180;
 }
 inline double deg(double rad) {
-  return rad * 180 / kPi;
+  return rad * 180 / std::numbers::pi;
 }
 
 // The unit vector at `deg` degrees in the (Z, X) plane, measured from +X toward +Z.
