@@ -65,8 +65,7 @@ TEST(ModalWords, LinuxcncChangesToolsOnlyWithM6AndReadsG96D) {
   // T5 alone selects the tool; "T{tool} M6 G43 H{offset}" changes it, H the offset. G96 D2500
   // S120: D is the limit.
   const std::vector<CutState> s = move_states(
-      "linuxcnc-lathe", "T5\nG0 X10 Z2\nT5 M6 G43 H12\nG96 D2500 S120 M3\nG1 Z0 G95 F0.1\n",
-      &rb);
+      "linuxcnc-lathe", "T5\nG0 X10 Z2\nT5 M6 G43 H12\nG96 D2500 S120 M3\nG1 Z0 G95 F0.1\n", &rb);
   EXPECT_TRUE(rb.tool);
   EXPECT_TRUE(rb.offset);  // G43 H{offset}
   ASSERT_EQ(s.size(), 2u);
