@@ -18,6 +18,24 @@ namespace sim {
 struct ControlReadback;
 }
 
+// A code whose meaning is the control's own (its manual's), not the machine builder's: G0, G99,
+// M3 … A machine file may not redefine it (machine_loader.cc); builder codes (coolant, clamps,
+// live tools) stay machine data.
+struct FixedCode {
+  std::string_view key;      // the codes: key, "spindle_cw"
+  std::string_view code;     // "M3"
+  std::string_view meaning;  // "starts the spindle clockwise"
+};
+
+// The codes every ISO-style lathe control of the registry shares: motion, arcs, spindle.
+inline constexpr FixedCode kIsoMotionCodes[] = {
+    {"rapid", "G0", "is a rapid move"},
+    {"linear", "G1", "is a feed move"},
+    {"arc_cw", "G2", "is a clockwise arc"},
+    {"arc_ccw", "G3", "is a counter-clockwise arc"},
+    {"spindle_cw", "M3", "starts the spindle clockwise"},
+    {"spindle_ccw", "M4", "starts the spindle counter-clockwise"}};
+
 struct Control {
   std::string_view name;   // its folder: "fanuc"
   std::string_view cycle;  // the threading.cycle value that selects it: "fanuc_g76"
@@ -32,6 +50,8 @@ struct Control {
   const sim::ControlReadback* readback = nullptr;
   // Its tool change stops the spindle (LinuxCNC's M6): the program starts it again.
   bool tool_change_stops_spindle = false;
+  // Its fixed codes beyond kIsoMotionCodes (feed modes, units, the synchronized move).
+  std::span<const FixedCode> fixed_codes = {};
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

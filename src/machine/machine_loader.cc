@@ -395,6 +395,43 @@ bool looks_like_path(std::string_view s) {
   return s.find('/') != std::string_view::npos || s.ends_with(".yaml") || s.ends_with(".yml");
 }
 
+// A control's own codes (controls/control.h: FixedCode) are its meaning, not machine data: a post,
+// machine file or --set that redefines one is an error at the key (docs/cl-meaning.md).
+bool check_fixed_code(const Machine& m, const FixedCode& f, const KeyOrigins& origins,
+                      const YamlText& machine_text, std::string& errors) {
+  if (m.code(std::string(f.key)) == f.code) return true;
+  const std::string key = fmt::format("codes.{}", f.key);
+  const std::string message = fmt::format(
+      "{} is '{}', but on the {} control {} {}: a control's own codes are its meaning, not "
+      "machine data",
+      key, m.code(std::string(f.key)), m.control->name, f.code, f.meaning);
+  const auto o = origins.find(key);
+  const std::string where = o == origins.end() ? m.source : o->second;
+  const size_t colon = where.rfind(':');
+  Diagnostics d(colon == std::string::npos ? where : where.substr(0, colon));
+  const uint32_t line =
+      colon == std::string::npos ? 0 : static_cast<uint32_t>(std::atoi(where.c_str() + colon + 1));
+  // The line is shown when it is the machine file's (a post's key names the post file and line).
+  const bool own = d.file() == m.source;
+  const std::string_view text = own ? machine_text.line(line) : std::string_view();
+  const size_t indent = text.find_first_not_of(' ');
+  const uint32_t col = line == 0 ? 0 : static_cast<uint32_t>(indent == text.npos ? 0 : indent) + 1;
+  d.error(SourceLoc{line, col}, text, message);
+  errors += d.render_all();
+  return false;
+}
+
+bool check_fixed_codes(const Machine& m, const KeyOrigins& origins, std::string_view text,
+                       std::string& errors) {
+  if (m.control == nullptr) return true;
+  const YamlText t(text);
+  bool ok = true;
+  for (const FixedCode& f : kIsoMotionCodes) ok &= check_fixed_code(m, f, origins, t, errors);
+  for (const FixedCode& f : m.control->fixed_codes)
+    ok &= check_fixed_code(m, f, origins, t, errors);
+  return ok;
+}
+
 }  // namespace
 
 bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_post, Machine& m,
@@ -569,6 +606,8 @@ bool apply_override(const std::string& ov, Machine& m, std::string& errors, KeyO
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
                   const std::vector<std::string>& overrides, Machine& out, std::string& errors,
                   KeyOrigins* origins, ControlSet controls) {
+  KeyOrigins own_origins;  // where each key came from, for the errors of check_fixed_codes
+  if (origins == nullptr) origins = &own_origins;
   std::string path;
   if (!find_machine_file(name_or_path, data_dirs, path, errors)) return false;
   std::string machine_text;
@@ -595,6 +634,7 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
   for (const std::string& ov : overrides)
     if (!apply_override(ov, m, errors, origins)) return false;
   if (!check_required(path, machine_text, m, errors)) return false;
+  if (!check_fixed_codes(m, *origins, machine_text, errors)) return false;
   out = std::move(m);
   return true;
 }

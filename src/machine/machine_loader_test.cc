@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <cstdio>
 
 namespace clpost {
@@ -282,8 +284,10 @@ TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
             std::string::npos)
       << errors;
   errors.clear();
+  // The Fanuc control's cycle brings its codes' meanings: G32, G98, G99 (FixedCode).
   EXPECT_TRUE(load_machine("generic-lathe", kDirs,
-                           {"threading.cycle=fanuc_g76", "templates.fanuc_g76=[\"G76 X{x} Z{z}\"]"},
+                           {"threading.cycle=fanuc_g76", "templates.fanuc_g76=[\"G76 X{x} Z{z}\"]",
+                            "codes.thread=G32", "codes.feed_per_min=G98", "codes.feed_per_rev=G99"},
                            m, errors))
       << errors;
 }
@@ -357,6 +361,40 @@ TEST(MachineLoader, AnEmptyTemplateIsPresent) {
       errors))
       << errors;
   EXPECT_TRUE(m.templates.at("dwell").empty());
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// A control's own codes are its meaning (controls/control.h: FixedCode): a machine file or --set
+// that redefines one fails to load, naming the key and the control's meaning; builder codes
+// (coolant) stay machine data.
+TEST(MachineLoader, AControlsFixedCodesCannotBeRedefined) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {"codes.spindle_cw=M4"}, m, errors));
+  EXPECT_EQ(errors,
+            "--set: error: codes.spindle_cw is 'M4', but on the fanuc control M3 starts the "
+            "spindle clockwise: a control's own codes are its meaning, not machine data\n");
+  errors.clear();
+  const std::string path = ::testing::TempDir() + "/fixed-codes.yaml";
+  std::ofstream(path) << "extends: linuxcnc\ncodes:\n  feed_per_rev: G99\n";
+  EXPECT_FALSE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, m, errors));
+  EXPECT_EQ(errors, path +
+                        ":3:3: error: codes.feed_per_rev is 'G99', but on the linuxcnc control "
+                        "G95 is feed per revolution: a control's own codes are its meaning, not "
+                        "machine data\n    feed_per_rev: G99\n    ^\n");
+  errors.clear();
+  EXPECT_TRUE(
+      load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {"codes.coolant_flood=M7"}, m, errors))
+      << errors;
+  // A machine without a control of the registry (plain ISO) keeps every code its own.
+  EXPECT_TRUE(
+      load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {"codes.spindle_cw=M4"}, m, errors))
+      << errors;
 }
 
 }  // namespace

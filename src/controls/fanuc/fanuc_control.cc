@@ -5,11 +5,26 @@
 
 namespace clpost {
 
+namespace {
+
+// Fanuc 0i-TF Operator's Manual (B-64604EN), G-code system A: G20/G21 units, G32 thread cutting,
+// G98/G99 feed per minute / per revolution.
+constexpr FixedCode kFanucCodes[] = {
+    {"metric", "G21", "selects millimetres"},
+    {"inch", "G20", "selects inches"},
+    {"thread", "G32", "is a thread cut"},
+    {"feed_per_min", "G98", "is feed per minute"},
+    {"feed_per_rev", "G99", "is feed per revolution"},
+};
+
+}  // namespace
+
 extern const Control kFanucControl{.name = "fanuc",
                                    .cycle = "fanuc_g76",
                                    .cycle_emitter = []() -> std::unique_ptr<Emitter> {
                                      return std::make_unique<FanucG76Emitter>();
                                    },
-                                   .readback = &sim::kFanucReadback};
+                                   .readback = &sim::kFanucReadback,
+                                   .fixed_codes = kFanucCodes};
 
 }  // namespace clpost

@@ -6,11 +6,25 @@
 
 namespace clpost {
 
+namespace {
+
+// Haas Lathe Operator's Manual, G-code list: G20/G21, G32 thread cutting, G98/G99.
+constexpr FixedCode kHaasCodes[] = {
+    {"metric", "G21", "selects millimetres"},
+    {"inch", "G20", "selects inches"},
+    {"thread", "G32", "is a thread cut"},
+    {"feed_per_min", "G98", "is feed per minute"},
+    {"feed_per_rev", "G99", "is feed per revolution"},
+};
+
+}  // namespace
+
 extern const Control kHaasControl{.name = "haas",
                                   .cycle = "haas_g76",
                                   .cycle_emitter = []() -> std::unique_ptr<Emitter> {
                                     return std::make_unique<HaasG76Emitter>();
                                   },
-                                  .readback = &sim::kHaasReadback};
+                                  .readback = &sim::kHaasReadback,
+                                  .fixed_codes = kHaasCodes};
 
 }  // namespace clpost

@@ -6,11 +6,26 @@
 
 namespace clpost {
 
+namespace {
+
+// HEIDENHAIN CNC PILOT DIN Programming: [METRIC]/[INCH] program sections, G33 thread cutting,
+// G94/G95 feed per minute / per revolution.
+constexpr FixedCode kHeidenhainCodes[] = {
+    {"metric", "[METRIC]", "selects millimetres"},
+    {"inch", "[INCH]", "selects inches"},
+    {"thread", "G33", "is a thread cut"},
+    {"feed_per_min", "G94", "is feed per minute"},
+    {"feed_per_rev", "G95", "is feed per revolution"},
+};
+
+}  // namespace
+
 extern const Control kHeidenhainControl{.name = "heidenhain",
                                         .cycle = "heidenhain_g31",
                                         .cycle_emitter = []() -> std::unique_ptr<Emitter> {
                                           return std::make_unique<HeidenhainG31Emitter>();
                                         },
-                                        .readback = &sim::kHeidenhainReadback};
+                                        .readback = &sim::kHeidenhainReadback,
+                                        .fixed_codes = kHeidenhainCodes};
 
 }  // namespace clpost

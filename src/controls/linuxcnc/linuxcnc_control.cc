@@ -6,6 +6,19 @@
 
 namespace clpost {
 
+namespace {
+
+// LinuxCNC G-code reference (lathe): G20/G21, G33 spindle-synchronized motion, G94/G95.
+constexpr FixedCode kLinuxcncCodes[] = {
+    {"metric", "G21", "selects millimetres"},
+    {"inch", "G20", "selects inches"},
+    {"thread", "G33", "is a spindle-synchronized move"},
+    {"feed_per_min", "G94", "is feed per minute"},
+    {"feed_per_rev", "G95", "is feed per revolution"},
+};
+
+}  // namespace
+
 extern const Control kLinuxcncControl{
     .name = "linuxcnc",
     .cycle = "linuxcnc_g76",
@@ -15,6 +28,7 @@ extern const Control kLinuxcncControl{
     .readback = &sim::kLinuxcncReadback,
     // M6 stops the spindle: rs274 -g writes STOP_SPINDLE_TURNING between START_CHANGE and
     // CHANGE_TOOL (LinuxCNC 2.9, tests/rs274_test.cc).
-    .tool_change_stops_spindle = true};
+    .tool_change_stops_spindle = true,
+    .fixed_codes = kLinuxcncCodes};
 
 }  // namespace clpost

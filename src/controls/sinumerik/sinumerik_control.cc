@@ -9,6 +9,22 @@
 
 namespace clpost {
 
+namespace {
+
+// SINUMERIK 840D sl Programming Manual Fundamentals: G70/G71 inch/metric, G33 thread cutting,
+// G34/G35 increasing/decreasing lead, G94/G95 feed per minute / per revolution.
+constexpr FixedCode kSinumerikCodes[] = {
+    {"metric", "G71", "selects millimetres"},
+    {"inch", "G70", "selects inches"},
+    {"thread", "G33", "is a thread cut"},
+    {"thread_increasing", "G34", "is a thread with increasing lead"},
+    {"thread_decreasing", "G35", "is a thread with decreasing lead"},
+    {"feed_per_min", "G94", "is feed per minute"},
+    {"feed_per_rev", "G95", "is feed per revolution"},
+};
+
+}  // namespace
+
 extern const Control kSinumerikControl{
     .name = "sinumerik",
     .cycle = "cycle99",
@@ -23,6 +39,7 @@ extern const Control kSinumerikControl{
       if (!m.templates.count(std::string(tmpl::kCycle96.name))) return nullptr;
       return std::make_unique<Cycle96Emitter>();
     },
-    .readback = &sim::kSinumerikReadback};
+    .readback = &sim::kSinumerikReadback,
+    .fixed_codes = kSinumerikCodes};
 
 }  // namespace clpost
