@@ -52,6 +52,9 @@ struct Control {
   bool tool_change_stops_spindle = false;
   // Its fixed codes beyond kIsoMotionCodes (feed modes, units, the synchronized move).
   std::span<const FixedCode> fixed_codes = {};
+  // Characters it reads as control even inside a comment (Fanuc's '%', the end of record): left
+  // out of every comment, whatever comments.forbidden says.
+  std::string_view comment_control = {};
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

@@ -116,3 +116,21 @@ TEST(ClMeaning, TheOffsetReachesTheProgramOrIsRefused) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// No comment carries a character the control reads as control: Fanuc's and Haas's '%' (the end
+// of the program text) and the comment's own delimiters (nested parentheses end it early),
+// whatever the machine file's comments.forbidden says.
+TEST(ClMeaning, CommentsCarryNoControlCharacter) {
+  const std::string c = "UNITS/MM\nPPRINT 50% OFF (A)\nFINI\n";
+  for (const char* machine : {"fanuc-0i-t", "haas-st"}) {
+    const test::Posted p = test::post(c, test::load(machine, {"comments.forbidden="}));
+    EXPECT_NE(p.nc.find("(50 OFF A)"), std::string::npos) << machine << "\n" << p.nc;
+  }
+  EXPECT_NE(test::post(c, test::load("linuxcnc-lathe")).nc.find("(50% OFF A)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace clpost

@@ -94,8 +94,15 @@ void NcWriter::end_block() {
 std::string NcWriter::comment_text(const Machine& m, std::string_view text) {
   std::string clean;
   clean.reserve(text.size());
+  const std::string_view control = m.control ? m.control->comment_control : std::string_view();
+  // A comment that closes cannot hold its own delimiters: "(A (B))" ends at the first ')'.
+  const std::string_view delimiters =
+      m.comment_close.empty() ? std::string_view() : std::string_view(m.comment_open);
   for (char c : text) {
     if (m.comment_forbidden.find(c) != std::string::npos) continue;
+    if (control.find(c) != std::string_view::npos) continue;
+    if (delimiters.find(c) != std::string_view::npos) continue;
+    if (m.comment_close.find(c) != std::string::npos) continue;
     if (static_cast<unsigned char>(c) < 0x20) c = ' ';
     clean += m.comment_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
   }

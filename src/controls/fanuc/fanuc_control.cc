@@ -19,12 +19,15 @@ constexpr FixedCode kFanucCodes[] = {
 
 }  // namespace
 
-extern const Control kFanucControl{.name = "fanuc",
-                                   .cycle = "fanuc_g76",
-                                   .cycle_emitter = []() -> std::unique_ptr<Emitter> {
-                                     return std::make_unique<FanucG76Emitter>();
-                                   },
-                                   .readback = &sim::kFanucReadback,
-                                   .fixed_codes = kFanucCodes};
+extern const Control kFanucControl{
+    .name = "fanuc",
+    .cycle = "fanuc_g76",
+    .cycle_emitter = []() -> std::unique_ptr<Emitter> {
+      return std::make_unique<FanucG76Emitter>();
+    },
+    .readback = &sim::kFanucReadback,
+    .fixed_codes = kFanucCodes,
+    // "%" ends the program text on the control (the end-of-record mark of its tape format).
+    .comment_control = "%"};
 
 }  // namespace clpost

@@ -19,12 +19,15 @@ constexpr FixedCode kHaasCodes[] = {
 
 }  // namespace
 
-extern const Control kHaasControl{.name = "haas",
-                                  .cycle = "haas_g76",
-                                  .cycle_emitter = []() -> std::unique_ptr<Emitter> {
-                                    return std::make_unique<HaasG76Emitter>();
-                                  },
-                                  .readback = &sim::kHaasReadback,
-                                  .fixed_codes = kHaasCodes};
+extern const Control kHaasControl{
+    .name = "haas",
+    .cycle = "haas_g76",
+    .cycle_emitter = []() -> std::unique_ptr<Emitter> {
+      return std::make_unique<HaasG76Emitter>();
+    },
+    .readback = &sim::kHaasReadback,
+    .fixed_codes = kHaasCodes,
+    // "%" ends the program text on the control (the end-of-record mark of its tape format).
+    .comment_control = "%"};
 
 }  // namespace clpost
