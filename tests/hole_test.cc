@@ -162,3 +162,38 @@ TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
 
 }  // namespace
 }  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A drill that starts below its R plane (the tool at Z1, CLEAR,2: R at Z2) is a right program:
+// written as moves on generic-lathe it goes up to R, feeds to the bottom and returns to Z1, and
+// verify accepts it on every machine (it read "the tool does not come back out to Z2"). The
+// program that stops short of Z1 still fails.
+TEST(Holes, ADrillStartingBelowItsRPlaneVerifies) {
+  const std::string dir = temp_dir();
+  const std::string cl = dir + "/below-r.cl";
+  write_file(cl,
+             "UNITS/MM\nLOADTL/1\nSPINDL/500,RPM,CLW\nFEDRAT/0.1,MMPR\nGOTO/0,0,1\n"
+             "CYCLE/DRILL,DEPTH,5,MMPR,0.05,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\nGOTO/20,0,5\nFINI\n");
+  for (const std::string& m : shipped_machine_names()) {
+    const RunResult r = run(quote(clpost_bin()) + " -m " + m + " --verify -o " +
+                            quote(dir + "/below-r." + m + ".nc") + " " + quote(cl));
+    EXPECT_EQ(r.exit_code, 0) << m << "\n" << r.err;
+  }
+  std::string nc = read_file(dir + "/below-r.generic-lathe.nc");
+  const size_t at = nc.find("G0 Z1.\n");
+  ASSERT_NE(at, std::string::npos) << nc;
+  nc.replace(at, 7, "G0 Z0.5\n");
+  write_file(dir + "/edited.nc", nc);
+  const RunResult r = run(quote(clpost_bin()) + " verify -m generic-lathe " +
+                          quote(dir + "/edited.nc") + " --cl " + quote(cl));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("the tool does not come back out to Z1.0000"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace clpost::test

@@ -45,6 +45,7 @@ struct SimHole {
   double dir = -1;                // the way the feeds go in
   std::vector<double> feed_ends;  // Z where each feed into the hole ends, each deeper
   bool left = false;              // the tool came back to the R plane after the last feed
+  std::optional<double> out;      // how far out (Z) the tool came after the last feed, if at all
   std::optional<double> lead;     // a tap's lead, when the cycle says it
 };
 

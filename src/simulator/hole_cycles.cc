@@ -207,6 +207,7 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
     sh.dir = hole.dir;
     sh.feed_ends = hole_feed_ends(hole);
     sh.left = true;
+    sh.out = hole.r;
     if (hole.lead > 0) sh.lead = hole.lead;
     const double x = v.count("x") ? v.at("x") : s.pos.x;
     s.move(MoveKind::kRapid, {x, hole.r});
@@ -234,10 +235,13 @@ void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to) {
     if (h.feed_ends.empty() || (to.z - h.feed_ends.back()) * h.dir > 1e-9) {
       if (h.feed_ends.size() < kMaxHolePecks) h.feed_ends.push_back(to.z);
       h.left = false;
+      h.out.reset();
       return;
     }
   }
-  if (!h.feed_ends.empty() && (to.z - h.r) * h.dir <= 1e-9) h.left = true;
+  if (h.feed_ends.empty()) return;
+  if (!h.out || (to.z - *h.out) * h.dir < 0) h.out = to.z;
+  if ((to.z - h.r) * h.dir <= 1e-9) h.left = true;
 }
 
 }  // namespace clpost::sim

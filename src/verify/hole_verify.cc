@@ -29,7 +29,11 @@ std::string hole_difference(const Hole& h, const SimHole& p, double tol) {
     if (std::fabs(p.feed_ends[i] - want[i]) > tol)
       return fmt::format("peck {} ends at {}, CL {}", i + 1, z_text(p.feed_ends[i]),
                          z_text(want[i]));
-  if (!p.left) return fmt::format("the tool does not come back out to {}", z_text(h.r));
+  // Out of the hole: back to its R plane, or to its retract plane where that is nearer the hole
+  // (a drill that starts below its R plane returns there).
+  const double out_to = (h.retract - h.r) * h.dir > 0 ? h.retract : h.r;
+  if (!p.left && !(p.out && (*p.out - out_to) * h.dir <= tol))
+    return fmt::format("the tool does not come back out to {}", z_text(out_to));
   if (h.kind == HoleKind::kTap && p.lead && std::fabs(*p.lead - h.lead) > 1e-6)
     return fmt::format("lead {:g}, CL {:g}", *p.lead, h.lead);
   return {};
