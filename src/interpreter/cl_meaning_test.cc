@@ -134,3 +134,27 @@ TEST(ClMeaning, CommentsCarryNoControlCharacter) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// CIRCLE/ applies to the next GOTO only: a RAPID before that GOTO, or anything else that moves
+// the tool in between, is an error at its CL line (a RAPID was ignored and GODLTA taken as the
+// arc's end).
+TEST(ClMeaning, ACircleIsForItsGotoOnly) {
+  const std::string head = "UNITS/MM\nLOADTL/1\nSPINDL/500,RPM,CLW\nFEDRAT/0.2,MMPR\nGOTO/10,0,0\n";
+  const Machine m = test::load("generic-lathe");
+  EXPECT_EQ(test::post(head + "CIRCLE/0,0,0,0,1,0,10\nRAPID\nGOTO/0,0,-10\nFINI\n", m).diags,
+            "t.cl:8:1: error: RAPID before the GOTO of CIRCLE/ (line 6): an arc is cut at the "
+            "feed, there is no rapid arc\n  GOTO/0,0,-10\n  ^\n");
+  EXPECT_EQ(
+      test::post(head + "CIRCLE/0,0,0,0,1,0,10\nGODLTA/0,0,-1\nGOTO/0,0,-10\nFINI\n", m).diags,
+      "t.cl:7:1: error: GODLTA between CIRCLE/ (line 6) and its GOTO: a CIRCLE applies to "
+      "the next GOTO only\n  GODLTA/0,0,-1\n  ^\n");
+  const test::Posted ok = test::post(head + "CIRCLE/0,0,0,0,1,0,10\nGOTO/0,0,-10\nFINI\n", m);
+  EXPECT_EQ(ok.errors, 0u) << ok.diags;
+  EXPECT_NE(ok.nc.find("G3 X0. Z-10. I-10. K0.\n"), std::string::npos) << ok.nc;
+}
+
+}  // namespace
+}  // namespace clpost

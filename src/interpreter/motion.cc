@@ -132,6 +132,13 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   if (s.circle) {
     const Circle c = *s.circle;
     s.circle.reset();
+    if (s.rapid_next) {
+      s.rapid_next = false;
+      return error(s, st, st.loc,
+                   fmt::format("RAPID before the GOTO of CIRCLE/ (line {}): an arc is cut at the "
+                               "feed, there is no rapid arc",
+                               c.loc.line));
+    }
     if (arc_to(s, st, c, p)) {
       s.pos = p;
       s.rapid_next = false;
@@ -182,7 +189,18 @@ void goto_stmt(PostState& s, const Statement& st) {
   move_to(s, st, p);
 }
 
+bool circle_waits(PostState& s, const Statement& st) {
+  if (!s.circle) return false;
+  error(s, st, st.loc,
+        fmt::format("{} between CIRCLE/ (line {}) and its GOTO: a CIRCLE applies to the next GOTO "
+                    "only",
+                    st.major, s.circle->loc.line));
+  s.circle.reset();
+  return true;
+}
+
 void from_stmt(PostState& s, const Statement& st) {
+  if (circle_waits(s, st)) return;
   Point3 p;
   if (!number_arg(s, st, 0, "X", p.x) || !number_arg(s, st, 1, "Y", p.y)) return;
   if (st.args.size() >= 3 && !number_arg(s, st, 2, "Z", p.z)) return;
@@ -192,6 +210,7 @@ void from_stmt(PostState& s, const Statement& st) {
 }
 
 void godlta_stmt(PostState& s, const Statement& st) {
+  if (circle_waits(s, st)) return;
   if (!s.pos) {
     error(s, st, st.loc, "GODLTA/ needs a known position: no GOTO or FROM before it");
     return;

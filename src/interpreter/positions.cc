@@ -27,6 +27,7 @@ bool write_position(PostState& s, const Statement& st, const TemplateSpec& t) {
 void gohome_stmt(PostState& s, const Statement& st) {
   // GOHOME is a motion: a RAPID before it applies to it, never to the motion after it.
   s.rapid_next = false;
+  if (circle_waits(s, st)) return;
   std::optional<Point3> home;
   if (!st.args.empty()) {
     Point3 p;

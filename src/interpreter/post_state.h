@@ -151,6 +151,9 @@ bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view 
 
 // Writes the program start (once) before the first block.
 void ensure_started(PostState& s);
+// CIRCLE/ applies to the next GOTO only (docs/cl-meaning.md): true, with an error naming the
+// circle, when one waits for its GOTO and `st` moves the tool otherwise (motion.cc).
+bool circle_waits(PostState& s, const Statement& st);
 // Writes the spindle as the CL last left it (speed or surface speed with its limit, direction)
 // (spindle_feed.cc).
 void restate_spindle(PostState& s, const Statement& st);
