@@ -30,8 +30,18 @@ void units_stmt(PostState& s, const Statement& st) {
   s.units = u;
 }
 
+// COOLNT/ with nothing after it: CATIA's tool change writes COOLNT/%MFG_COOLNT_SNTX, empty for a
+// tool with no coolant set, and ICAM's interface kit catches it with a dummy macro (the table's
+// history, 07-10-2005: reference/cam/ICAM_MM_pptable_cycles_and_millturn_excerpt.txt). It
+// changes nothing.
 void coolnt_stmt(PostState& s, const Statement& st) {
   constexpr const char* kExpected = "expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF";
+  if (st.args.empty() && st.form == Statement::Form::kRecord) {
+    note_once(s, st, "empty-coolant",
+              "COOLNT/ without a coolant (CATIA's tool change for a tool with none set): "
+              "the coolant does not change");
+    return;
+  }
   if (st.args.empty() || !st.args[0].is_word()) {
     error(s, st, st.args.empty() ? st.loc : st.args[0].loc, kExpected);
     return;
