@@ -24,7 +24,7 @@ bool read_synonym(PostState& s, const Statement& st, size_t i) {
     }
     if (!st.args[k].is_text() && !st.args[k].is_word()) {
       error(s, st, st.args[k].loc,
-            fmt::format("SYN/ takes quoted words, found '{}'", st.args[k].text));
+            fmt::format("SYN/ takes quoted words, found {}", describe_arg(st.args, k)));
       return false;
     }
   }

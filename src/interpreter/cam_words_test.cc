@@ -111,7 +111,7 @@ TEST(CamWords, SynNeedsPairsOfWords) {
             "the last word has no replacement\n"
             "  SYN/'A'\n"
             "      ^\n"
-            "t.cl:2:9: error: SYN/ takes quoted words, found '5'\n"
+            "t.cl:2:9: error: SYN/ takes quoted words, found number 5\n"
             "  SYN/'A',5\n"
             "          ^\n");
 }

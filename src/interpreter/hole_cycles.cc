@@ -55,7 +55,8 @@ bool read_hole_word(PostState& s, const Statement& st, size_t& i, HoleCycle& c) 
   double v = 0;
   const bool feed_word = a.is("IPM") || a.is("MMPM") || a.is("IPR") || a.is("MMPR");
   if (!a.is_word()) {
-    error(s, st, a.loc, fmt::format("CYCLE/{}: unexpected '{}'", c.word, a.text));
+    error(s, st, a.loc,
+          fmt::format("CYCLE/{}: expected a cycle word, found {}", c.word, describe_arg(st, a)));
     return false;
   }
   // NX: CYCLE/DRILL,DEEP,… or DRILL,BRKCHP,…: the kind as a word of DRILL.

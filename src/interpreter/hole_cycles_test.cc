@@ -225,5 +225,17 @@ TEST(HoleCycles, BadCycleWords) {
       << p.diags;
 }
 
+// CYCLE/DRILL continued with `$` onto an empty line: the empty last argument is shown after its
+// ',' on the cycle's line and said to be the end of the statement, never an empty ''.
+TEST(HoleCycles, AContinuationOntoAnEmptyLineIsTheEndOfTheStatement) {
+  Posted p = post("CYCLE/DRILL,$\n\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:13: error: CYCLE/DRILL: expected a cycle word, found the end of the statement "
+            "after ','\n"
+            "  CYCLE/DRILL,$\n"
+            "              ^\n");
+}
+
 }  // namespace
 }  // namespace clpost

@@ -65,13 +65,9 @@ void coolnt_stmt(PostState& s, const Statement& st) {
     return;
   }
   // COOLNT/FLOOD,HIGH, COOLNT/ON,2 …: what follows the coolant is said, not dropped silently.
-  if (st.args.size() > 1) {
-    std::string rest;
-    for (size_t i = 1; i < st.args.size(); ++i)
-      rest += (i > 1 ? "," : "") + std::string(st.args[i].text);
+  if (const std::string rest = rest_of_args(st, 1); !rest.empty())
     warning(s, st, st.args[1].loc,
             fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text, rest));
-  }
   ensure_started(s);
   s.prog.coolant(c);
 }

@@ -114,4 +114,17 @@ struct SavedLines {
   }
 };
 
+// Text for a message: control and non-ASCII bytes as \xNN, long text cut; quoted: between '…'.
+std::string shown(std::string_view s);
+std::string quoted(std::string_view s);
+
+// What argument `i` of `args` is, for "found …" in messages: 'WORD', number 2.5, the text 'A B',
+// (CIRCLE/…), an empty argument, the end of the statement after ',' (an empty last argument),
+// the end of the statement (no argument `i`). Never an empty ''. `whole`: what `args` are the
+// arguments of ("the definition" for a nested one's).
+std::string describe_arg(std::span<const Arg> args, size_t i,
+                         std::string_view whole = "the statement");
+// The same for `a`, one of `st.args`.
+std::string describe_arg(const Statement& st, const Arg& a);
+
 }  // namespace clpost
