@@ -32,7 +32,7 @@ constexpr StatementEntry kEntries[] = {
     {"SYN", syn_stmt},
     {"DNTCUT", dntcut_stmt},
     {"CUT", cut_stmt},
-    {"PPFUN", skipped_stmt},
+    {"PPFUN", ppfun_stmt},
     {"INDIRV", indirv_stmt},
     {"PSIS", psis_stmt},
     {"GOFWD", go_stmt},
