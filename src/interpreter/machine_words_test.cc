@@ -122,6 +122,16 @@ TEST(MachineWords, AnEmptyCoolantWordChangesNothing) {
             "         ^\n");
 }
 
+// REMARK (APT's comment statement, NCL's header line) leaves nothing in the program.
+TEST(MachineWords, RemarkIsSkipped) {
+  Posted p = post("REMARK part.as  5-JAN-2021\nREMARK again\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.nc, std::string(kGenericStart) + "M30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: note: REMARK records skipped (nothing a lathe program needs)\n"
+            "  REMARK part.as  5-JAN-2021\n"
+            "  ^\n");
+}
+
 // Sequence numbers only where a tool change begins; long comments wrapped; long blocks refused.
 constexpr const char* kTwoTools =
     "LOADTL/1\nRAPID\nGOTO/10,0,5\nPPRINT a comment that is rather long\nLOADTL/2\nFINI\n";

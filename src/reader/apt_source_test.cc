@@ -85,6 +85,16 @@ TEST(AptSource, AnEmptyLastArgumentIsJustAfterItsComma) {
   EXPECT_EQ(r.diags, "");
 }
 
+// REMARK, APT's comment statement (NCL's APT source begins with one), is a text statement: the
+// file name with its '.' and the date are text, not arguments.
+TEST(AptSource, RemarkIsAText) {
+  Result r = read("REMARK upside_down.as     27-APR-2021  10:45:22  NCLCAM     2020.00\nFINI\n");
+  EXPECT_EQ(dump(r),
+            "1:1 T REMARK 'upside_down.as     27-APR-2021  10:45:22  NCLCAM     2020.00' [1+1]\n"
+            "2:1 B FINI [2+1]\n");
+  EXPECT_EQ(r.diags, "");
+}
+
 // ---- quoted text -----------------------------------------------------------------------------
 
 TEST(AptSource, QuotedText) {

@@ -64,7 +64,8 @@ bool StatementLexer::is_text_statement(std::string_view line) {
   auto [i, j] = first_word(line);
   std::string_view word = line.substr(i, j - i);
   if (!equals_upper(word, "PARTNO") && !equals_upper(word, "PPRINT") &&
-      !equals_upper(word, "INSERT") && !equals_upper(word, "TPRINT")) {
+      !equals_upper(word, "INSERT") && !equals_upper(word, "TPRINT") &&
+      !equals_upper(word, "REMARK")) {
     return false;
   }
   return j == line.size() || is_blank_char(line[j]) || line[j] == '/';

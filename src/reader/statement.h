@@ -59,7 +59,7 @@ struct Statement {
     kRecord,  // MAJOR/arg,arg,...   (args filled; `RAPID/` is a record with no args); also the
               // comma form `CHANNEL,1` (no '/': the first ',' stands for it)
     kBare,    // MAJOR alone on its line: RAPID, END, FINI, STOP, END-OF-PATH ...
-    kText,    // PARTNO, PPRINT, INSERT, TPRINT: `text` holds the rest of the line verbatim
+    kText,    // PARTNO, PPRINT, INSERT, TPRINT, REMARK: `text` holds the rest of the line verbatim
   };
   Form form = Form::kBare;
   std::string_view major;  // upper-cased; inner runs of blanks collapsed to one ("TOOL PATH")
