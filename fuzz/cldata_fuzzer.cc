@@ -1,6 +1,7 @@
-// libFuzzer target: arbitrary bytes as the records of a binary CLDATA file (APT360's layout or
-// its big-endian twin, no detection needed), through the binary reader, the interpreter, the
-// planner and the writer on generic-lathe. Then the property cl2apt rests on: the statements'
+// libFuzzer target: arbitrary bytes as the records of a binary CLDATA file (the layout the first
+// bytes are — NCL's begins with its header record —, else APT360's, its big-endian twin or NCL's
+// by the last byte), through the binary reader, the interpreter, the planner and the writer on
+// generic-lathe. Then the property cl2apt rests on: the statements'
 // APT text, read by the text reader, gives the same statements (a difference aborts). Inputs
 // whose first bytes are a CLDATA file of that layout also go through ClReader's detection from
 // a FILE*, as `clpost part.cl` reads them, to the same number of statements.
@@ -56,9 +57,13 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace clpost;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  // The last byte's top bit picks the layout (little- or big-endian; the seeds end in 0).
+  // The layout the bytes are; else the last byte's top two bits pick one (the APT360 seeds end
+  // in 0: APT360's).
   const auto layouts = cldata::known_layouts();
-  const cldata::Layout& layout = layouts[size > 0 && (data[size - 1] & 0x80) ? 1 : 0];
+  const cldata::Layout* detected = cldata::detect_layout(bytes);
+  const cldata::Layout& layout =
+      detected != nullptr ? *detected
+                          : layouts[size > 0 ? (data[size - 1] >> 6) % layouts.size() : 0];
   Diagnostics diags("fuzz.cl");
   CldataReader reader(layout, bytes, diags);
   Recording rec{reader, {}, {}};

@@ -86,6 +86,11 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
         "a left-hand tap, spindle counter-clockwise: '{}' turns the spindle "
         "clockwise, holes.tap_turns_cw",
         t.name);
+  if (h.kind == HoleKind::kChipBreak && h.backoff &&
+      std::fabs(*h.backoff - m.peck_clearance) > 1e-9)
+    return fmt::format(
+        "each peck backs off {}, the control by its own setting (holes.peck_clearance {})",
+        num_text(*h.backoff), num_text(m.peck_clearance));
   if (h.dwell > 0 && !template_has_field(m, t, "dwell") && !template_has_field(m, t, "dwell_ms"))
     return fmt::format("a dwell of {} s at the bottom: template '{}' has no {{dwell}}",
                        num_text(h.dwell), t.name);
@@ -94,6 +99,7 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
 
 TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
   const double clr = prog.machine().peck_clearance;
+  const double back_off = chip_backoff(h, clr);
   if (prog.position() && std::fabs(prog.position()->r) > 1e-12) prog.rapid({0, prog.position()->z});
   prog.rapid({0, h.r});
   prog.set_feed(h.feed, h.feed_mode);
@@ -104,7 +110,8 @@ TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
     // Out to the R plane (peck) or back a little (chip breaking), then back in to just short
     // of the depth reached, never above the R plane.
     if (h.kind == HoleKind::kDeep) prog.rapid({0, h.r});
-    const double back = std::max(0.0, std::fabs(ends[i] - h.r) - clr);
+    const double back =
+        std::max(0.0, std::fabs(ends[i] - h.r) - (h.kind == HoleKind::kDeep ? clr : back_off));
     prog.rapid({0, h.r + h.dir * back});
   }
   TemplateWrite dwell;

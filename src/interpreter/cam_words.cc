@@ -24,7 +24,7 @@ bool read_synonym(PostState& s, const Statement& st, size_t i) {
     }
     if (!st.args[k].is_text() && !st.args[k].is_word()) {
       error(s, st, st.args[k].loc,
-            fmt::format("SYN/ takes quoted words, found '{}'", st.args[k].text));
+            fmt::format("SYN/ takes quoted words, found {}", describe_arg(st.args, k)));
       return false;
     }
   }
@@ -60,6 +60,25 @@ void syn_stmt(PostState& s, const Statement& st) {
     else
       s.synonyms.emplace_back(std::move(word), std::move(to));
   }
+}
+
+// PPFUN/…: options of ICAM's own post, skipped (a note) — except PPFUN/3,n,'text', the table's
+// message where it has no output for an operation: NC_THREAD_WITHOUT_TAP_HEAD writes
+// PPFUN/3,8,'NC_THREAD_WITHOUT_TAP_HEAD_cycle_not_available' where the cycle would be, and the
+// holes' GOTOs that follow would be posted as plain moves. An error quoting the table's text.
+void ppfun_stmt(PostState& s, const Statement& st) {
+  if (!st.args.empty() && st.args[0].is_number() && st.args[0].number == 3) {
+    for (const Arg& a : st.args) {
+      if (!a.is_text()) continue;
+      error(s, st, a.loc,
+            fmt::format("PPFUN/3: ICAM's table reports '{}' here: the operation has no output "
+                        "in the table, and the holes after it would be posted as plain moves",
+                        a.text));
+      s.in_cycle = true;  // its holes, up to CYCLE/OFF, are not moves (as a refused cycle's)
+      return;
+    }
+  }
+  skipped_stmt(s, st);
 }
 
 void dntcut_stmt(PostState& s, const Statement&) {

@@ -111,9 +111,25 @@ TEST(CamWords, SynNeedsPairsOfWords) {
             "the last word has no replacement\n"
             "  SYN/'A'\n"
             "      ^\n"
-            "t.cl:2:9: error: SYN/ takes quoted words, found '5'\n"
+            "t.cl:2:9: error: SYN/ takes quoted words, found number 5\n"
             "  SYN/'A',5\n"
             "          ^\n");
+}
+
+// NC_THREAD_WITHOUT_TAP_HEAD in ICAM's table: a message where the cycle would be; the hole after
+// it must not become a plain move.
+TEST(CamWords, PpfunMessageOfAnOperationWithoutOutputIsAnError) {
+  Posted p = post(
+      "SPINDL/600,RPM,CLW\nRAPID\nGOTO/0,0,10\n"
+      "PPFUN/3,8,'NC_THREAD_WITHOUT_TAP_HEAD_cycle_not_available'\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n",
+      lathe());
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_EQ(p.diags,
+            "t.cl:4:11: error: PPFUN/3: ICAM's table reports "
+            "'NC_THREAD_WITHOUT_TAP_HEAD_cycle_not_available' here: the operation has no output in "
+            "the table, and the holes after it would be posted as plain moves\n"
+            "  PPFUN/3,8,'NC_THREAD_WITHOUT_TAP_HEAD_cycle_not_available'\n"
+            "            ^\n");
 }
 
 TEST(CamWords, PpfunIsSkippedWithANote) {

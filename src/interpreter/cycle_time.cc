@@ -170,7 +170,8 @@ void time_hole(PostState& s, const Hole& h) {
     feed_to(s, {0, ends[i]}, h.feed, h.feed_mode);
     if (i + 1 == ends.size()) break;
     if (h.kind == HoleKind::kDeep) time_rapid(s, {0, h.r});
-    time_rapid(s, {0, h.r + h.dir * std::max(0.0, std::fabs(ends[i] - h.r) - clr)});
+    const double back = h.kind == HoleKind::kDeep ? clr : chip_backoff(h, clr);
+    time_rapid(s, {0, h.r + h.dir * std::max(0.0, std::fabs(ends[i] - h.r) - back)});
   }
   time_dwell(s, h.dwell);
   if (h.kind == HoleKind::kTap || h.kind == HoleKind::kBore || h.kind == HoleKind::kReam)

@@ -18,11 +18,17 @@ void cycle_stmt(PostState& s, const Statement& st) {
   if (!st.args.empty() && st.args[0].is_word() && is_hole_cycle(st.args[0].text))
     return hole_cycle_stmt(s, st);
   s.in_cycle = true;  // its hole positions are not posted as plain moves
-  const std::string kind = st.args.empty() ? std::string("?") : std::string(st.args[0].text);
+  if (st.args.empty() || !st.args[0].is_word()) {
+    error(s, st, st.args.empty() ? st.loc : st.args[0].loc,
+          fmt::format("CYCLE/ needs the cycle's kind first (DRILL, DEEP, BRKCHP, TAP, BORE, REAM, "
+                      "OFF, …), found {}",
+                      describe_arg(st.args, 0)));
+    return;
+  }
   error(s, st, st.loc,
         fmt::format("CYCLE/{} is not supported on machine '{}': its holes would be lost; "
                     "post the drilling with a milling post or output it as motion",
-                    kind, s.m.name));
+                    st.args[0].text, s.m.name));
 }
 
 }  // namespace clpost

@@ -43,9 +43,9 @@ bool read_cond(PostState& s, const Statement& st, size_t& i, Cond& cond, int& nt
            : w.is("PAST") ? Cond::kPast
                           : Cond::kTanto;
   } else {
-    error(
-        s, st, w.loc,
-        fmt::format("expected TO, ON, PAST or TANTO before the check surface, found '{}'", w.text));
+    error(s, st, w.loc,
+          fmt::format("expected TO, ON, PAST or TANTO before the check surface, found {}",
+                      describe_arg(st, w)));
     return false;
   }
   nth = 1;

@@ -1,12 +1,15 @@
-// CYCLE/DRILL|DEEP|BRKCHP|TAP|BORE|REAM …: hole-making on the spindle axis, in the forms CAM
+// CYCLE/DRILL|DEEP|BRKCHP|TAP|BORE|REAM|FACE …: hole-making on the spindle axis, in the forms CAM
 // systems write them:
 //   ICAM/APT, Pro/E   CYCLE/DRILL,[DEPTH,]d,IPM|MMPM|IPR|MMPR,f,[CLEAR,]c[,DWELL,t]
 //                     CYCLE/DEEP,DEPTH,d,STEP|PECK,p,MMPM,f,CLEAR,c   CYCLE/TAP,DEPTH,d,TPI,n,…
+//   CATIA + ICAM      …,CLEAR,c[,backoff],RETURN,j[,REV|SEC|DWELL,t][,INVERS]; ORIENT refused
+//                     (reference/cam/ICAM_MM_pptable_cycles_and_millturn_excerpt.txt)
 //   SolidWorks CAM    CYCLE/DEEP2,FEDTO,d,1STPECK,p1,SUBPECK,p,MMPM,f,RAPTO,c,RTRCTO,r[,DWELL,t]
 //   CATIA             CYCLE/TAP,d,c   (total depth, clearance; the feed in force)
 //   NX                CYCLE/DRILL[,DEEP|BRKCHP],RAPTO,c,FEDTO,d,MMPM,f[,STEP,p]
 // then a GOTO per hole (its top), until CYCLE/OFF. CYCLE/INIT (SolidWorks) says nothing.
 // A hole must lie on the lathe's centre line: drilling off it needs live tooling.
+// docs/reading-cam-output.md (section 5) says where each ICAM word's meaning comes from.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -27,6 +30,7 @@ std::optional<HoleKind> kind_of(std::string_view w) {
   if (w == "TAP") return HoleKind::kTap;
   if (w == "BORE") return HoleKind::kBore;
   if (w == "REAM") return HoleKind::kReam;
+  if (w == "FACE") return HoleKind::kDrill;  // ICAM's countersinking: feed, dwell, rapid out
   return std::nullopt;
 }
 
@@ -49,28 +53,48 @@ bool value_after(PostState& s, const Statement& st, size_t& i, double& out) {
   return true;
 }
 
-// One word of the cycle (with its value); false (reported) when it is not one.
-bool read_hole_word(PostState& s, const Statement& st, size_t& i, HoleCycle& c) {
-  const Arg& a = st.args[i];
-  double v = 0;
-  const bool feed_word = a.is("IPM") || a.is("MMPM") || a.is("IPR") || a.is("MMPR");
-  if (!a.is_word()) {
-    error(s, st, a.loc, fmt::format("CYCLE/{}: unexpected '{}'", c.word, a.text));
+// ORIENT and INVERS, ICAM's words for CATIA's Boring Spindle Stop and Reverse Threading; false
+// (reported) when the cycle cannot be written with them.
+bool mode_word(PostState& s, const Statement& st, const Arg& a, HoleCycle& c) {
+  if (a.is("ORIENT")) {
+    error(s, st, a.loc,
+          fmt::format("CYCLE/{}: ORIENT (CATIA's Boring Spindle Stop: the spindle stopped at an "
+                      "angle and the tool moved off the wall before it leaves) cannot be written "
+                      "for a hole on a lathe's spindle axis, where the part turns and the tool "
+                      "does not",
+                      c.word));
     return false;
   }
-  // NX: CYCLE/DRILL,DEEP,… or DRILL,BRKCHP,…: the kind as a word of DRILL.
-  if (const std::optional<HoleKind> k = kind_of(a.text); k && c.kind == HoleKind::kDrill) {
-    c.kind = *k;
-    return true;
+  if (c.kind != HoleKind::kTap) {
+    error(s, st, a.loc,
+          fmt::format("CYCLE/{}: INVERS (ICAM writes it on CYCLE/TAP for CATIA's Reverse "
+                      "Threading) would make this a back boring, from the far side of the part: "
+                      "not written for a hole on a lathe's spindle axis",
+                      c.word));
+    return false;
   }
-  if (!value_after(s, st, i, v)) return false;
+  if (s.spindle.on && s.spindle.dir != SpindleDir::kCcw) {
+    error(s, st, a.loc,
+          fmt::format("CYCLE/TAP: INVERS (CATIA's Reverse Threading, a left-hand tap) while the "
+                      "spindle turns clockwise (SPINDL of line {}): whether INVERS reverses it is "
+                      "not written down, so the tap's direction is in doubt; program "
+                      "SPINDL/…,CCLW for the tap",
+                      s.spindle_line));
+    return false;
+  }
+  c.invers = true;
+  return true;
+}
+
+// Value word `a` with its value `v` into the cycle; false when it is not one (not reported).
+bool set_value(const PostState& s, const Arg& a, double v, HoleCycle& c) {
   if (a.is("DEPTH") || a.is("FEDTO")) {
     c.depth = v;
   } else if (a.is("STEP") || a.is("PECK") || a.is("INCR") || a.is("SUBPECK")) {
     c.peck = v;
   } else if (a.is("1STPECK")) {
     c.first_peck = v;
-  } else if (feed_word) {
+  } else if (a.is("IPM") || a.is("MMPM") || a.is("IPR") || a.is("MMPR")) {
     const bool inch = a.is("IPM") || a.is("IPR");
     c.feed =
         s.units == LengthUnit::kInch ? (inch ? v : v / kMmPerInch) : (inch ? v * kMmPerInch : v);
@@ -83,20 +107,84 @@ bool read_hole_word(PostState& s, const Statement& st, size_t& i, HoleCycle& c) 
     c.clearance = v;
   } else if (a.is("RTRCTO")) {
     c.retract = v;
-  } else if (a.is("DWELL")) {
-    c.dwell = v;
+  } else if (a.is("RETURN")) {
+    c.return_dist = v, c.return_loc = a.loc;
+  } else if (a.is("DWELL") || a.is("SEC")) {
+    c.dwell = v, c.dwell_revs.reset(), c.dwell_loc = a.loc;
+  } else if (a.is("REV")) {
+    c.dwell_revs = v, c.dwell = 0, c.dwell_loc = a.loc;
   } else {
+    return false;
+  }
+  return true;
+}
+
+// One word of the cycle (with its value); false (reported) when it is not one.
+bool read_hole_word(PostState& s, const Statement& st, size_t& i, HoleCycle& c) {
+  const Arg& a = st.args[i];
+  double v = 0;
+  if (!a.is_word()) {
+    error(s, st, a.loc,
+          fmt::format("CYCLE/{}: expected a cycle word, found {}", c.word, describe_arg(st, a)));
+    return false;
+  }
+  // NX: CYCLE/DRILL,DEEP,… or DRILL,BRKCHP,…: the kind as a word of DRILL.
+  if (const std::optional<HoleKind> k = kind_of(a.text); k && c.kind == HoleKind::kDrill) {
+    c.kind = *k;
+    return true;
+  }
+  if (a.is("ORIENT") || a.is("INVERS")) return mode_word(s, st, a, c);
+  if (!value_after(s, st, i, v)) return false;
+  if (!set_value(s, a, v, c)) {
     error(s, st, a.loc,
           fmt::format("CYCLE/{}: unknown word '{}'; valid words: DEPTH, FEDTO, STEP, PECK, "
                       "INCR, 1STPECK, SUBPECK, IPM, MMPM, IPR, MMPR, TPI, PITCH, CLEAR, RAPTO, "
-                      "RTRCTO, DWELL",
+                      "RTRCTO, RETURN, DWELL, SEC, REV, INVERS",
                       c.word, a.text));
     return false;
   }
-  if (v < 0 || (v == 0 && (a.is("TPI") || a.is("PITCH") || feed_word))) {
+  const bool nonzero =
+      a.is("TPI") || a.is("PITCH") || a.is("IPM") || a.is("MMPM") || a.is("IPR") || a.is("MMPR");
+  if (v < 0 || (v == 0 && nonzero)) {
     error(s, st, st.args[i].loc,
           fmt::format("CYCLE/{}: {} {} must be positive", c.word, a.text, st.args[i].text));
     return false;
+  }
+  // ICAM's chip breaking: CLEAR,c,backoff — the number after the clearance is how far each peck
+  // backs off (CATIA's MFG_OFFSET_RET).
+  if (a.is("CLEAR") && c.kind == HoleKind::kChipBreak && i + 1 < st.args.size() &&
+      st.args[i + 1].is_number()) {
+    const Arg& b = st.args[++i];
+    if (!in_range(s, st, b, "a chip-break back-off")) return false;
+    if (!(b.number > 0)) {
+      error(s, st, b.loc,
+            fmt::format("CYCLE/{}: the chip-break back-off {} after CLEAR must be positive", c.word,
+                        b.text));
+      return false;
+    }
+    c.backoff = b.number;
+  }
+  return true;
+}
+
+// RETURN (ICAM's jump distance) becomes the retract plane, measured from the R plane; false
+// (reported) when it cannot.
+bool settle_hole_cycle(PostState& s, const Statement& st, HoleCycle& c) {
+  if (c.return_dist) {
+    if (!c.clearance) {
+      error(s, st, c.return_loc,
+            fmt::format("CYCLE/{}: RETURN is a distance above the CLEAR plane, and the cycle has "
+                        "no CLEAR",
+                        c.word));
+      return false;
+    }
+    if (c.retract) {
+      error(s, st, c.return_loc,
+            fmt::format("CYCLE/{}: RETURN and RTRCTO both give the plane the tool retracts to",
+                        c.word));
+      return false;
+    }
+    c.retract = *c.clearance + *c.return_dist;
   }
   return true;
 }
@@ -130,7 +218,7 @@ bool read_hole_cycle(PostState& s, const Statement& st, HoleCycle& c) {
   }
   if ((c.kind == HoleKind::kDeep || c.kind == HoleKind::kChipBreak) && c.peck <= 0)
     c.peck = c.first_peck;  // one peck given: every peck
-  return true;
+  return settle_hole_cycle(s, st, c);
 }
 
 }  // namespace

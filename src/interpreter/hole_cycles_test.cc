@@ -225,5 +225,159 @@ TEST(HoleCycles, BadCycleWords) {
       << p.diags;
 }
 
+// CYCLE/DRILL continued with `$` onto an empty line: the empty last argument is shown after its
+// ',' on the cycle's line and said to be the end of the statement, never an empty ''.
+TEST(HoleCycles, AContinuationOntoAnEmptyLineIsTheEndOfTheStatement) {
+  Posted p = post("CYCLE/DRILL,$\n\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:13: error: CYCLE/DRILL: expected a cycle word, found the end of the statement "
+            "after ','\n"
+            "  CYCLE/DRILL,$\n"
+            "              ^\n");
+}
+
+// ---- CATIA with ICAM's table (reference/cam/ICAM_MM_pptable_cycles_and_millturn_excerpt.txt) --
+
+constexpr const char* kIcamStart = "SPINDL/600,RPM,CLW\nRAPID\nGOTO/0,0,10\n";
+
+std::string icam(const std::string& cycle) {
+  return std::string(kIcamStart) + cycle + "\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+}
+
+// RETURN is CATIA's jump distance above the CLEAR plane: RETURN,0 leaves the tool at the R plane
+// (Z2), not at its start (Z10).
+TEST(HoleCycles, IcamReturnZeroRetractsToTheRPlane) {
+  Posted p = post(icam("CYCLE/DRILL,DEPTH,4.6,MMPR,0.08,CLEAR,2,RETURN,0"), load("generic-lathe"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(hole", "M30"),
+            "(hole at CL line 5: drilling to Z-4.6)\nZ2.\nG1 Z-4.6 G95 F0.08\nG0 Z2.\n");
+}
+
+// RETURN,5 with CLEAR,2: the retract plane is 7 above the hole's top; the Haas cycle returns to
+// its initial level Z10, then the tool goes to Z7.
+TEST(HoleCycles, IcamReturnIsMeasuredFromTheClearPlane) {
+  Posted p = post(icam("CYCLE/DRILL,DEPTH,4.6,MMPR,0.08,CLEAR,2,RETURN,5"), load("haas-st"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(
+      body(p.nc, "(HOLE", "M30"),
+      "(HOLE AT CL LINE 5: DRILLING TO Z-4.6)\nG99 G81 X0. Z-4.6 R2. F0.08\nG80\nG0 X0. Z7.\n");
+}
+
+// REV,2 at 600 rpm dwells 0.2 s; SEC (CATIA's other delay unit) and DWELL are seconds.
+TEST(HoleCycles, IcamDwellUnits) {
+  const std::string rev = icam("CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,1,RETURN,0,REV,2");
+  Posted l = post(rev, load("linuxcnc-lathe"));
+  EXPECT_EQ(l.diags, "");
+  EXPECT_EQ(body(l.nc, "(hole", "M2"),
+            "(hole at CL line 5: drilling to Z-3.)\nG17\nG98 G95 G82 X0. Y0 Z-3. R1. P0.2 F0.05\n"
+            "G80\nG18\nG0 X0. Z1.\n");
+  Posted g = post(rev, load("generic-lathe"));
+  EXPECT_EQ(g.diags, "");
+  EXPECT_EQ(body(g.nc, "(hole", "M30"),
+            "(hole at CL line 5: drilling to Z-3.)\nZ1.\nG1 Z-3. G95 F0.05\nG4 X0.2\nG0 Z1.\n");
+  Posted sec =
+      post(icam("CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,1,RETURN,0,SEC,0.2"), load("linuxcnc-lathe"));
+  EXPECT_EQ(sec.nc, l.nc);
+  // Revolutions need a set RPM to become seconds.
+  Posted css = post(
+      "SPINDL/200,SMM,CLW\nRAPID\nGOTO/0,0,10\n"
+      "CYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,1,RETURN,0,REV,2\nGOTO/0,0,0\nCYCLE/OFF\n"
+      "FINI\n",
+      load("generic-lathe"));
+  EXPECT_EQ(css.diags,
+            "t.cl:5:1: error: CYCLE/DRILL of line 4 dwells 2 revolutions (REV): the spindle must "
+            "turn at a set RPM (SPINDL/n,RPM) to write the dwell in seconds\n"
+            "  GOTO/0,0,0\n"
+            "  ^\n");
+}
+
+// ICAM's chip breaking: CLEAR,c,backoff. LinuxCNC's G73 backs off by its own 0.254 mm
+// (holes.peck_clearance): a back-off of 0.3 is written as moves, 0.254 as the cycle.
+TEST(HoleCycles, IcamChipBreakBackOff) {
+  Posted m = post(icam("CYCLE/BRKCHP,DEPTH,5,STEP,2,MMPR,0.05,CLEAR,1,0.3,RETURN,0"),
+                  load("linuxcnc-lathe"));
+  EXPECT_EQ(m.diags, "");
+  EXPECT_EQ(body(m.nc, "(hole", "M2"),
+            "(hole at CL line 5: chip-breaking drilling to Z-5.)\n(hole_chip_break not used: each "
+            "peck backs off 0.3, the control by its own setting holes.peck_clearance 0.254. moves "
+            "instead)\nZ1.\nG1 Z-1. G95 F0.05\nG0 Z-0.7\nG1 Z-3.\nG0 Z-2.7\nG1 Z-5.\nG0 Z1.\n");
+  Posted c = post(icam("CYCLE/BRKCHP,DEPTH,5,STEP,2,MMPR,0.05,CLEAR,1,0.254,RETURN,0"),
+                  load("linuxcnc-lathe"));
+  EXPECT_EQ(c.diags, "");
+  EXPECT_EQ(body(c.nc, "(hole", "M2"),
+            "(hole at CL line 5: chip-breaking drilling to Z-5.)\nG17\n"
+            "G98 G95 G73 X0. Y0 Z-5. R1. Q2. F0.05\nG80\nG18\nG0 X0. Z1.\n");
+}
+
+// NC_COUNTERSINKING: CYCLE/FACE, a drill to depth with a dwell.
+TEST(HoleCycles, IcamCountersinkIsADrillWithADwell) {
+  Posted p =
+      post(icam("CYCLE/FACE,DEPTH,1,MMPR,0.05,CLEAR,1,RETURN,0,SEC,0.5"), load("linuxcnc-lathe"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(hole", "M2"),
+            "(hole at CL line 5: drilling to Z-1.)\nG17\nG98 G95 G82 X0. Y0 Z-1. R1. P0.5 F0.05\n"
+            "G80\nG18\nG0 X0. Z1.\n");
+}
+
+// INVERS (NC_REVERSE_THREADING) with the spindle counter-clockwise: the left-hand tap it says.
+TEST(HoleCycles, IcamReverseTapWithTheSpindleCounterClockwise) {
+  Posted p = post(
+      "SPINDL/600,RPM,CCLW\nRAPID\nGOTO/0,0,10\n"
+      "CYCLE/TAP,DEPTH,10,MMPR,1.5,CLEAR,2,INVERS\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n",
+      load("generic-lathe"));
+  EXPECT_EQ(p.diags, "");
+  EXPECT_EQ(body(p.nc, "(hole", "M30"),
+            "(hole at CL line 5: tapping to Z-10.)\nZ2.\nG1 Z-10. G95 F1.5\nG97 S600 M3\nZ2.\n"
+            "G97 S600 M4\nG0 Z10.\n");
+}
+
+// What cannot be written is an error at the word that asks for it.
+TEST(HoleCycles, IcamWordsThatCannotBeWritten) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"CYCLE/BORE,ORIENT,90,DEPTH,10,MMPR,0.1,CLEAR,2,0.2,RETURN,0,REV,1",
+       "t.cl:4:12: error: CYCLE/BORE: ORIENT (CATIA's Boring Spindle Stop: the spindle stopped at "
+       "an angle and the tool moved off the wall before it leaves) cannot be written for a hole "
+       "on a lathe's spindle axis, where the part turns and the tool does not\n"
+       "  CYCLE/BORE,ORIENT,90,DEPTH,10,MMPR,0.1,CLEAR,2,0.2,RETURN,0,REV,1\n"
+       "             ^\n"},
+      {"CYCLE/BORE,DEPTH,10,MMPR,0.1,CLEAR,2,INVERS",
+       "t.cl:4:38: error: CYCLE/BORE: INVERS (ICAM writes it on CYCLE/TAP for CATIA's Reverse "
+       "Threading) would make this a back boring, from the far side of the part: not written for "
+       "a hole on a lathe's spindle axis\n"
+       "  CYCLE/BORE,DEPTH,10,MMPR,0.1,CLEAR,2,INVERS\n"
+       "                                       ^\n"},
+      {"CYCLE/TAP,DEPTH,10,MMPR,1.5,CLEAR,2,INVERS",
+       "t.cl:4:37: error: CYCLE/TAP: INVERS (CATIA's Reverse Threading, a left-hand tap) while the "
+       "spindle turns clockwise (SPINDL of line 1): whether INVERS reverses it is not written "
+       "down, so the tap's direction is in doubt; program SPINDL/…,CCLW for the tap\n"
+       "  CYCLE/TAP,DEPTH,10,MMPR,1.5,CLEAR,2,INVERS\n"
+       "                                      ^\n"},
+      {"CYCLE/DRILL,DEPTH,4.6,MMPR,0.08,RETURN,0",
+       "t.cl:4:33: error: CYCLE/DRILL: RETURN is a distance above the CLEAR plane, and the cycle "
+       "has no CLEAR\n"
+       "  CYCLE/DRILL,DEPTH,4.6,MMPR,0.08,RETURN,0\n"
+       "                                  ^\n"},
+      {"CYCLE/DRILL,DEPTH,4.6,MMPR,0.08,RAPTO,2,RTRCTO,20,RETURN,0",
+       "t.cl:4:51: error: CYCLE/DRILL: RETURN and RTRCTO both give the plane the tool retracts to\n"
+       "  CYCLE/DRILL,DEPTH,4.6,MMPR,0.08,RAPTO,2,RTRCTO,20,RETURN,0\n"
+       "                                                    ^\n"},
+      {"CYCLE/BRKCHP,DEPTH,5,STEP,2,MMPR,0.05,CLEAR,1,0,RETURN,0",
+       "t.cl:4:47: error: CYCLE/BRKCHP: the chip-break back-off 0 after CLEAR must be positive\n"
+       "  CYCLE/BRKCHP,DEPTH,5,STEP,2,MMPR,0.05,CLEAR,1,0,RETURN,0\n"
+       "                                                ^\n"},
+      {"CYCLE/CIRCUL,DEPTH,5,PITCH,1,DIAMET,10,CLEAR,3,RAPTO,1,OPTION,1,STEP,1,CUTS,1,MMPM,100",
+       "t.cl:4:1: error: CYCLE/CIRCUL is not supported on machine 'generic-lathe': its holes would "
+       "be lost; post the drilling with a milling post or output it as motion\n"
+       "  CYCLE/CIRCUL,DEPTH,5,PITCH,1,DIAMET,10,CLEAR,3,RAPTO,1,OPTION,1,STEP,1,CUTS,1,MMPM,100\n"
+       "  ^\n"},
+  };
+  for (const auto& [cycle, diags] : cases) {
+    Posted p = post(icam(cycle), load("generic-lathe"));
+    EXPECT_EQ(p.errors, 1u) << cycle;
+    EXPECT_EQ(p.diags, diags);
+  }
+}
+
 }  // namespace
 }  // namespace clpost

@@ -46,7 +46,24 @@ bool hole_feed(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
   const SpindleState& sp = s.spindle;
   h.rpm = sp.on && !sp.css ? sp.value : 0;
   h.spindle = sp.dir;
+  if (c.dwell_revs && *c.dwell_revs > 0) {
+    if (!(h.rpm > 0)) {
+      error(s, st, st.loc,
+            fmt::format("CYCLE/{} of line {} dwells {} revolutions (REV): the spindle must turn "
+                        "at a set RPM (SPINDL/n,RPM) to write the dwell in seconds",
+                        c.word, c.line, num_text(*c.dwell_revs)));
+      return false;
+    }
+    h.dwell = *c.dwell_revs * 60 / h.rpm;
+  }
   if (c.kind != HoleKind::kTap) return true;
+  if (c.invers && h.spindle != SpindleDir::kCcw) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/TAP of line {} is INVERS (a left-hand tap) but the spindle turns "
+                      "clockwise here",
+                      c.line));
+    return false;
+  }
   if (!(h.rpm > 0)) {
     error(s, st, st.loc,
           fmt::format("CYCLE/TAP of line {} needs the spindle turning at a set RPM (SPINDL/n,RPM "
@@ -91,6 +108,7 @@ bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   h.first_peck = c.first_peck;
   h.peck = c.kind == HoleKind::kDeep || c.kind == HoleKind::kChipBreak ? c.peck : 0;
   h.dwell = c.dwell;
+  h.backoff = c.backoff;
   const double pecks = h.peck > 0 ? std::ceil(std::fabs(h.bottom - h.r) / h.peck) : 1;
   if (pecks > static_cast<double>(kMaxHolePecks)) {
     error(s, st, st.loc,

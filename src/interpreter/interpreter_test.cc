@@ -764,5 +764,64 @@ TEST(Interpreter, SpindleSpeedThatRoundsToZeroIsAnError) {
   EXPECT_EQ(post("SPINDL/0.5,RPM,CLW\nFINI\n", generic()).errors, 0u);  // rounds to S1
 }
 
+// Every message that shows an argument says what is there: an empty argument, the end of the
+// statement after a last ',', a quoted text; never an empty ''.
+TEST(Interpreter, MessagesSayWhatAnEmptyArgumentIs) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"SPINDL/1000,,CLW",
+       "t.cl:2:13: error: SPINDL/: expected a speed and RPM, SMM, SFM, CLW, CCLW, MAXRPM, OFF, ON, "
+       "found an empty argument"},
+      {"FEDRAT/0.1,MMPR,",
+       "t.cl:2:17: error: FEDRAT/: expected a feed and one of MMPM, MMPR, IPM, IPR, PERMIN, "
+       "PERREV, found the end of the statement after ','"},
+      {"SYN/'A',",
+       "t.cl:2:9: error: SYN/ takes quoted words, found the end of the statement after ','"},
+      {"TLON,GOFWD/(CIRCLE/1,,2,3),ON,(LINE/0,0,0,1,0,0)",
+       "t.cl:2:22: error: expected a number in the definition, found an empty argument"},
+      {"PSIS/(PLANE/0,1,0,)",
+       "t.cl:2:19: error: expected a number in the definition, found the end of the definition "
+       "after ','"},
+      {"TLON,GOFWD/,ON,(LINE/0,0,0,1,0,0)",
+       "t.cl:2:12: error: expected a geometry definition, found an empty argument"},
+      {"TLON,GOFWD/(CIRCLE/0,0,0,5),,(LINE/0,0,0,1,0,0)",
+       "t.cl:2:29: error: expected TO, ON, PAST or TANTO before the check surface, found an empty "
+       "argument"},
+      {"PITCH/1.5,MULTRD,",
+       "t.cl:2:11: error: expected the number of starts after MULTRD, found the end of the "
+       "statement after ','"},
+      {"PITCH/,1.5",
+       "t.cl:2:7: error: expected a pitch word, found an empty argument; valid words: TPI, IPR, "
+       "MMPR, PERREV, MULTRD, INCR, DECR"},
+      {"THREAD/ON,,DEPTH,1",
+       "t.cl:2:11: error: expected a thread parameter word, found an empty argument; valid words: "
+       "DEPTH, CUTS, STEP, FINCUT, OPTION, CUTANG, TLANGL, ATANGL, CHAMFR, RETURN, CHAIN, TPI, "
+       "IPR, MMPR, PERREV, MULTRD, INCR, DECR"},
+      {"CYCLE/UNDCUT,DIAM,,",
+       "t.cl:2:19: error: CYCLE/UNDCUT: DIAM needs a number, found an empty argument"},
+      {"CYCLE/UNDCUT,,",
+       "t.cl:2:14: error: CYCLE/UNDCUT: expected a word, found an empty argument; valid words: "
+       "DIAM, AT, FORM"},
+      {"CYCLE/,",
+       "t.cl:2:7: error: CYCLE/ needs the cycle's kind first (DRILL, DEEP, BRKCHP, TAP, BORE, "
+       "REAM, OFF, …), found an empty argument"},
+      {"CYCLE/DRILL,,3",
+       "t.cl:2:13: error: CYCLE/DRILL: expected a cycle word, found an empty argument"},
+      {"CYCLE/DRILL,DEPTH,3,'X'",
+       "t.cl:2:21: error: CYCLE/DRILL: expected a cycle word, found the text 'X'"},
+      {"GOTO/1,0,", "t.cl:2:10: error: expected Z but found the end of the statement after ','"},
+      {"AUXFUN/,", "t.cl:2:8: error: expected a code number but found an empty argument"},
+      {"AUXFUN/5,,3",
+       "t.cl:2:10: warning: AUXFUN/: the words after the number are not written (',3')"},
+  };
+  for (const auto& [cl, message] : cases) {
+    Posted p = post("FROM/0,0,0\n" + std::string(cl) + "\nFINI\n", generic());
+    EXPECT_EQ(p.diags.substr(0, p.diags.find('\n')), message) << cl;
+    EXPECT_EQ(p.diags.find("''"), std::string::npos) << p.diags;
+  }
+  // A last empty argument is not words left unwritten.
+  Posted p = post("COOLNT/ON,\nAUXFUN/5,\nFINI\n", generic());
+  EXPECT_EQ(p.diags, "");
+}
+
 }  // namespace
 }  // namespace clpost

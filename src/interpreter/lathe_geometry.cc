@@ -25,9 +25,14 @@ Point3 cross(Point3 a, Point3 b) {
 
 // The numbers of `args` (all of them), or nothing (reported).
 bool numbers(GeoReader& rd, std::span<const Arg> args, std::vector<double>& out) {
-  for (const Arg& a : args) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    const Arg& a = args[i];
     if (!a.is_number() || !within_limits(a.number)) {
-      rd.fail(a.loc, fmt::format("expected a number in the definition, found '{}'", a.text));
+      rd.fail(a.loc, a.is_number() ? fmt::format("number {} in the definition is out of range: CL "
+                                                 "values must be between -{} and {}",
+                                                 a.text, kMaxClValue, kMaxClValue)
+                                   : fmt::format("expected a number in the definition, found {}",
+                                                 describe_arg(args, i, "the definition")));
       return false;
     }
     out.push_back(a.number);
@@ -95,7 +100,8 @@ std::optional<Geo> read_geo(GeoReader& rd, const Arg& a) {
     rd.fail(a.loc, a.is_word() ? fmt::format("'{}' names geometry defined in an APT part program: "
                                              "CL data gives it as a nested (WORD/…) definition",
                                              a.text)
-                               : fmt::format("expected a geometry definition, found '{}'", a.text));
+                               : fmt::format("expected a geometry definition, found {}",
+                                             describe_arg(rd.st, a)));
     return std::nullopt;
   }
   const std::span<const Arg> args = rd.st.args_of(a);

@@ -30,10 +30,9 @@ void code_word(PostState& s, const Statement& st, const TemplateSpec& t) {
           fmt::format("{}/ needs a whole number 0..99999, got {}", st.major, st.args[0].text));
     return;
   }
-  if (st.args.size() > 1)
+  if (const std::string rest = rest_of_args(st, 1); !rest.empty())
     warning(s, st, st.args[1].loc,
-            fmt::format("{}/: the words after the number are not written ('{}')", st.major,
-                        st.args[1].text));
+            fmt::format("{}/: the words after the number are not written ('{}')", st.major, rest));
   if (s.m.templates.count(std::string(t.name)) == 0)
     return as_comment(s, st, fmt::format("template '{}'", t.name));
   ensure_started(s);

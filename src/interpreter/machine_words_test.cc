@@ -102,6 +102,39 @@ TEST(MachineWords, CoolantWordsAfterTheCoolantAreNotDroppedSilently) {
             "               ^\n");
 }
 
+// CATIA's tool change writes COOLNT/ with nothing after it for a tool without coolant (ICAM's
+// interface kit swallows it): the coolant in force stays, with one note.
+TEST(MachineWords, AnEmptyCoolantWordChangesNothing) {
+  Posted p = post("COOLNT/ON\nLOADTL/2\nCOOLNT/\nLOADTL/3\nCOOLNT/\nCOOLNT/OFF\nFINI\n",
+                  load("generic-lathe"));
+  EXPECT_EQ(p.nc, std::string(kGenericStart) + "M8\nT0202\nT0303\nM9\nM30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:3:1: note: COOLNT/ without a coolant (CATIA's tool change for a tool with none "
+            "set): the coolant does not change\n"
+            "  COOLNT/\n"
+            "  ^\n");
+  // Bare, or with an empty argument, it is not CATIA's form: still an error.
+  Posted q = post("COOLNT\nCOOLNT/,\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(q.errors, 2u);
+  EXPECT_EQ(q.diags,
+            "t.cl:1:1: error: expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF\n"
+            "  COOLNT\n"
+            "  ^\n"
+            "t.cl:2:8: error: expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF\n"
+            "  COOLNT/,\n"
+            "         ^\n");
+}
+
+// REMARK (APT's comment statement, NCL's header line) leaves nothing in the program.
+TEST(MachineWords, RemarkIsSkipped) {
+  Posted p = post("REMARK part.as  5-JAN-2021\nREMARK again\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.nc, std::string(kGenericStart) + "M30\n%\n");
+  EXPECT_EQ(p.diags,
+            "t.cl:1:1: note: REMARK records skipped (nothing a lathe program needs)\n"
+            "  REMARK part.as  5-JAN-2021\n"
+            "  ^\n");
+}
+
 // Sequence numbers only where a tool change begins; long comments wrapped; long blocks refused.
 constexpr const char* kTwoTools =
     "LOADTL/1\nRAPID\nGOTO/10,0,5\nPPRINT a comment that is rather long\nLOADTL/2\nFINI\n";

@@ -43,7 +43,7 @@ bool bad_number_arg(PostState& s, const Statement& st, size_t i, std::string_vie
   }
   const Arg& a = st.args[i];
   if (!a.is_number()) {
-    error(s, st, a.loc, fmt::format("expected {} but found '{}'", what, a.text));
+    error(s, st, a.loc, fmt::format("expected {} but found {}", what, describe_arg(st, a)));
     return false;
   }
   return in_range(s, st, a, what);  // false: its error is reported
@@ -55,6 +55,20 @@ bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view 
         fmt::format("{} '{}' is out of range: CL values must be between -{} and {}", what, a.text,
                     kMaxClValue, kMaxClValue));
   return false;
+}
+
+std::string unknown_word(const Statement& st, const Arg& a, std::string_view major,
+                         std::string_view expected) {
+  if (a.is_word()) return fmt::format("unknown {} word '{}': expected {}", major, a.text, expected);
+  return fmt::format("{}/: expected {}, found {}", major, expected, describe_arg(st, a));
+}
+
+std::string rest_of_args(const Statement& st, size_t from) {
+  size_t last = st.args.size();
+  while (last > from && st.args[last - 1].is_empty()) --last;
+  std::string rest;
+  for (size_t i = from; i < last; ++i) rest += (i > from ? "," : "") + std::string(st.args[i].text);
+  return rest;
 }
 
 void ensure_started(PostState& s) {

@@ -148,6 +148,14 @@ inline bool number_arg(PostState& s, const Statement& st, size_t i, std::string_
 }
 // `a` within ±kMaxClValue; false (reported) otherwise.
 bool in_range(PostState& s, const Statement& st, const Arg& a, std::string_view what);
+// The message for `a`, one of st.args, where a word of `major`'s vocabulary was expected:
+// "unknown SPINDL word 'X': expected …" for a word, else "SPINDL/: expected …, found an empty
+// argument" (reader/statement.h describe_arg: never an empty '').
+std::string unknown_word(const Statement& st, const Arg& a, std::string_view major,
+                         std::string_view expected);
+// The arguments from `from` on as written, joined by ',' ("" when they are all empty), for
+// "the words after it are not written (…)".
+std::string rest_of_args(const Statement& st, size_t from);
 
 // Writes the program start (once) before the first block.
 void ensure_started(PostState& s);

@@ -62,8 +62,18 @@ void units_stmt(PostState& s, const Statement& st) {
   s.units = u;
 }
 
+// COOLNT/ with nothing after it: CATIA's tool change writes COOLNT/%MFG_COOLNT_SNTX, empty for a
+// tool with no coolant set, and ICAM's interface kit catches it with a dummy macro (the table's
+// history, 07-10-2005: reference/cam/ICAM_MM_pptable_cycles_and_millturn_excerpt.txt). It
+// changes nothing.
 void coolnt_stmt(PostState& s, const Statement& st) {
   constexpr const char* kExpected = "expected COOLNT/ON, FLOOD, MIST, THRU, AIR or OFF";
+  if (st.args.empty() && st.form == Statement::Form::kRecord) {
+    note_once(s, st, "empty-coolant",
+              "COOLNT/ without a coolant (CATIA's tool change for a tool with none set): "
+              "the coolant does not change");
+    return;
+  }
   if (st.args.empty() || !st.args[0].is_word()) {
     error(s, st, st.args.empty() ? st.loc : st.args[0].loc, kExpected);
     return;
@@ -87,13 +97,9 @@ void coolnt_stmt(PostState& s, const Statement& st) {
     return;
   }
   // COOLNT/FLOOD,HIGH, COOLNT/ON,2 …: what follows the coolant is said, not dropped silently.
-  if (st.args.size() > 1) {
-    std::string rest;
-    for (size_t i = 1; i < st.args.size(); ++i)
-      rest += (i > 1 ? "," : "") + std::string(st.args[i].text);
+  if (const std::string rest = rest_of_args(st, 1); !rest.empty())
     warning(s, st, st.args[1].loc,
             fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text, rest));
-  }
   ensure_started(s);
   s.coolant = c;
   s.prog.coolant(c);

@@ -54,9 +54,7 @@ bool read_spindle_words(PostState& s, const Statement& st, SpindleWords& w) {
       if (i + 1 < st.args.size() && st.args[i + 1].is_number()) ++i;
     } else {
       error(s, st, a.loc,
-            fmt::format("unknown SPINDL word '{}': expected a speed and RPM, SMM, SFM, CLW, "
-                        "CCLW, MAXRPM, OFF, ON",
-                        a.text));
+            unknown_word(st, a, "SPINDL", "a speed and RPM, SMM, SFM, CLW, CCLW, MAXRPM, OFF, ON"));
       return false;
     }
   }
@@ -170,10 +168,9 @@ void fedrat_stmt(PostState& s, const Statement& st) {
     } else if (a.is("PERREV") || a.is("FPR")) {
       mode = FeedMode::kPerRev;
     } else {
-      error(s, st, a.loc,
-            fmt::format("unknown FEDRAT word '{}': expected a feed and one of MMPM, MMPR, IPM, "
-                        "IPR, PERMIN, PERREV",
-                        a.text));
+      error(
+          s, st, a.loc,
+          unknown_word(st, a, "FEDRAT", "a feed and one of MMPM, MMPR, IPM, IPR, PERMIN, PERREV"));
       return;
     }
   }

@@ -32,7 +32,7 @@ constexpr StatementEntry kEntries[] = {
     {"SYN", syn_stmt},
     {"DNTCUT", dntcut_stmt},
     {"CUT", cut_stmt},
-    {"PPFUN", skipped_stmt},
+    {"PPFUN", ppfun_stmt},
     {"INDIRV", indirv_stmt},
     {"PSIS", psis_stmt},
     {"GOFWD", go_stmt},
@@ -84,6 +84,8 @@ constexpr StatementEntry kEntries[] = {
     {"ORIGIN", skipped_stmt},
     {"TLAXIS", skipped_stmt},
     {"REWIND", skipped_stmt},
+    // APT's comment statement; NCL's APT source and binary clfile begin with one.
+    {"REMARK", skipped_stmt},
     // Text (text_words.cc)
     {"PARTNO", partno_stmt},
     {"PPRINT", pprint_stmt},

@@ -70,6 +70,7 @@ void lathe_thread_cycle(PostState& s, const Statement& st);  // CYCLE/LATHTHRD (
 
 // CAM words (cam_words.cc) and APT geometric motion (geometric_motion.cc).
 void syn_stmt(PostState& s, const Statement& st);
+void ppfun_stmt(PostState& s, const Statement& st);
 void dntcut_stmt(PostState& s, const Statement& st);
 void cut_stmt(PostState& s, const Statement& st);
 void toolno_stmt(PostState& s, const Statement& st);

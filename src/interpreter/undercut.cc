@@ -38,7 +38,8 @@ bool read_undercut_value(PostState& s, const Statement& st, const Arg& a, const 
     return true;
   }
   if (!v.is_number()) {
-    error(s, st, v.loc, fmt::format("CYCLE/UNDCUT: {} needs a number, found '{}'", a.text, v.text));
+    error(s, st, v.loc,
+          fmt::format("CYCLE/UNDCUT: {} needs a number, found {}", a.text, describe_arg(st, v)));
     return false;
   }
   (a.is("DIAM") ? u.diam : u.at) = v.number;
@@ -54,8 +55,8 @@ bool read_undercut_words(PostState& s, const Statement& st, UndercutWords& u) {
     const Arg& a = st.args[i];
     if (!a.is_word()) {
       error(s, st, a.loc,
-            fmt::format("CYCLE/UNDCUT: expected a word, found number {}; valid words: {}", a.text,
-                        kValid));
+            fmt::format("CYCLE/UNDCUT: expected a word, found {}; valid words: {}",
+                        describe_arg(st, a), kValid));
       return false;
     }
     const int which = a.is("DIAM") ? 0 : a.is("AT") ? 1 : a.is("FORM") ? 2 : -1;

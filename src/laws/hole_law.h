@@ -4,6 +4,7 @@
 // (emitters/hole_output.h) and the simulator expands a hole cycle's words with it.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,7 @@ struct Hole {
   double retract = 0;               // Z the tool leaves the hole to
   double dir = -1;                  // -1: drilling toward -Z
   double first_peck = 0, peck = 0;  // 0: no pecks; measured from the R plane
+  std::optional<double> backoff;    // chip breaking: each peck backs off by it (else the machine's)
   double dwell = 0;                 // seconds at the bottom
   double feed = 0;                  // a tap: its lead per revolution
   FeedMode feed_mode = FeedMode::kPerMinute;
@@ -39,6 +41,12 @@ struct Hole {
 
 // The most pecks of one hole (a peck of 1e-6 into a deep hole is refused, not written).
 inline constexpr size_t kMaxHolePecks = 1000;
+
+// How far a chip-breaking peck of `h` backs off: the CL's back-off, else `peck_clearance` (the
+// machine's holes.peck_clearance).
+inline double chip_backoff(const Hole& h, double peck_clearance) {
+  return h.backoff ? *h.backoff : peck_clearance;
+}
 
 // Where each feed into the hole ends (Z, in order; the last is the bottom): the pecks from the R
 // plane, first_peck then peck; one feed without pecks.

@@ -53,6 +53,13 @@ struct Ctx {
   }
 };
 
+// What node `n` holds, for "must be …, not X": 'fast', an empty value, nothing, a map, a list.
+std::string shown_value(const YAML::Node& n) {
+  if (!n.IsDefined() || n.IsNull()) return "nothing";
+  if (n.IsScalar()) return n.Scalar().empty() ? "an empty value" : "'" + n.Scalar() + "'";
+  return n.IsMap() ? "a map" : "a list";
+}
+
 bool get_string(Ctx& c, const YAML::Node& n, std::string_view key, std::string& out) {
   if (!n.IsScalar()) {
     c.error(n, fmt::format("'{}' must be a string", key));
@@ -68,9 +75,7 @@ bool get_bool(Ctx& c, const YAML::Node& n, std::string_view key, bool& out) {
     if (s == "true" || s == "yes" || s == "on") return out = true, true;
     if (s == "false" || s == "no" || s == "off") return out = false, true;
   }
-  c.error(
-      n, fmt::format("'{}' must be true or false, not '{}'", key,
-                     n.IsScalar() ? n.Scalar() : std::string("a ") + (n.IsMap() ? "map" : "list")));
+  c.error(n, fmt::format("'{}' must be true or false, not {}", key, shown_value(n)));
   return false;
 }
 
@@ -84,8 +89,7 @@ bool get_number(Ctx& c, const YAML::Node& n, std::string_view key, double lo, do
     ok = ec == std::errc() && p == s.data() + s.size() && std::isfinite(v);
   }
   if (!ok) {
-    c.error(n, fmt::format("'{}' must be a number, not '{}'", key,
-                           n.IsScalar() ? n.Scalar() : "a collection"));
+    c.error(n, fmt::format("'{}' must be a number, not {}", key, shown_value(n)));
     return false;
   }
   if (v < lo || v > hi) {
@@ -100,7 +104,7 @@ bool get_int(Ctx& c, const YAML::Node& n, std::string_view key, double lo, doubl
   double v = 0;
   if (!get_number(c, n, key, lo, hi, v)) return false;
   if (v != std::floor(v)) {
-    c.error(n, fmt::format("'{}' must be a whole number, not '{}'", key, n.Scalar()));
+    c.error(n, fmt::format("'{}' must be a whole number, not {}", key, shown_value(n)));
     return false;
   }
   out = static_cast<int>(v);
@@ -116,8 +120,7 @@ int get_choice(Ctx& c, const YAML::Node& n, std::string_view key, std::span<cons
   }
   std::string list;
   for (std::string_view s : names) list += fmt::format("{}{}", list.empty() ? "" : ", ", s);
-  c.error(n, fmt::format("'{}' must be one of {}, not '{}'{}", key, list,
-                         n.IsScalar() ? n.Scalar() : "a collection",
+  c.error(n, fmt::format("'{}' must be one of {}, not {}{}", key, list, shown_value(n),
                          n.IsScalar() ? did_you_mean(n.Scalar(), names) : ""));
   return -1;
 }
@@ -573,7 +576,8 @@ bool apply_post(const std::string& path, const std::string& machine_text, const 
 bool apply_override(const std::string& ov, Machine& m, std::string& errors, KeyOrigins* origins) {
   size_t eq = ov.find('=');
   if (eq == std::string::npos || eq == 0) {
-    errors += fmt::format("--set: error: expected key.path=value, got '{}'\n", ov);
+    errors += ov.empty() ? std::string("--set: error: expected key.path=value, got nothing\n")
+                         : fmt::format("--set: error: expected key.path=value, got '{}'\n", ov);
     return false;
   }
   // Turn "a.b.c=v" into the YAML document "a: {b: {c: v}}" and apply it like a file.

@@ -68,6 +68,25 @@ TEST(MachineLoader, WrongTypeAndRange) {
             "              ^\n");
 }
 
+// An empty value is said to be one, never ''; a map or a list is named as such.
+TEST(MachineLoader, EmptyValuesAreNamed) {
+  Machine m;
+  std::string errors;
+  EXPECT_FALSE(apply_machine_yaml(
+      "m.yaml", "limits:\n  max_rpm: ''\nblock_numbers:\n  enabled: []\n  step: {}\n", false, m,
+      errors));
+  EXPECT_EQ(errors,
+            "m.yaml:2:12: error: 'limits.max_rpm' must be a number, not an empty value\n"
+            "    max_rpm: ''\n"
+            "             ^\n"
+            "m.yaml:4:12: error: 'block_numbers.enabled' must be true or false, not a list\n"
+            "    enabled: []\n"
+            "             ^\n"
+            "m.yaml:5:9: error: 'block_numbers.step' must be a number, not a map\n"
+            "    step: {}\n"
+            "          ^\n");
+}
+
 TEST(MachineLoader, BadTemplateFieldIsCaughtAtLoad) {
   Machine m;
   std::string errors;

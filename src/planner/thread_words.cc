@@ -56,11 +56,9 @@ class Args {
   }
 
   // What stands at the cursor, for "found ..." in messages.
-  std::string found() const {
-    if (done()) return "the end of the statement";
-    if (peek().is_number()) return fmt::format("number {}", peek().text);
-    return fmt::format("'{}'", peek().text);
-  }
+  std::string found() const { return describe_arg(st_.args, i_); }
+  // The same for `a`, an argument already taken.
+  std::string shown(const Arg& a) const { return describe_arg(st_, a); }
 
   // Takes the number after `key`, or reports "expected <what> after KEY".
   bool number(const Arg& key, std::string_view what, double& v) {
@@ -541,8 +539,11 @@ bool parse_thread_words(const Statement& st, size_t first_arg, LengthUnit cl_uni
     } else if (is_pitch_couplet_word(key)) {
       pitch_couplet(a, key, cl_units, w.pitch, pitch_word);
     } else {
-      a.error(key.loc, fmt::format("unknown thread parameter '{}'; valid words: {}", key.text,
-                                   kThreadWordList));
+      a.error(key.loc, key.is_word() ? fmt::format("unknown thread parameter '{}'; valid words: {}",
+                                                   key.text, kThreadWordList)
+                                     : fmt::format("expected a thread parameter word, found {}; "
+                                                   "valid words: {}",
+                                                   a.shown(key), kThreadWordList));
       a.skip_numbers();
     }
   }
@@ -569,8 +570,11 @@ bool parse_pitch_words(const Statement& st, size_t first_arg, LengthUnit cl_unit
     if (is_pitch_couplet_word(key)) {
       pitch_couplet(a, key, cl_units, s.pw, s.pitch_word);
     } else {
-      a.error(key.loc,
-              fmt::format("unknown pitch word '{}'; valid words: {}", key.text, kPitchWordList));
+      a.error(key.loc, key.is_word()
+                           ? fmt::format("unknown pitch word '{}'; valid words: {}", key.text,
+                                         kPitchWordList)
+                           : fmt::format("expected a pitch word, found {}; valid words: {}",
+                                         a.shown(key), kPitchWordList));
       a.skip_numbers();
     }
   }

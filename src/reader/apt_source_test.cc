@@ -74,6 +74,27 @@ TEST(AptSource, EmptyArgumentsKeepTheirPlace) {
   EXPECT_EQ(r.diags, "");
 }
 
+// An empty last argument is located just after its ',' on the comma's own line, even when a
+// `$` continues the statement onto an empty line (a caret on an empty line shows nothing).
+TEST(AptSource, AnEmptyLastArgumentIsJustAfterItsComma) {
+  Result r = read("CYCLE/DRILL,$\n\nGOTO/1,  $\n   \nFINI\n");
+  EXPECT_EQ(dump(r),
+            "1:1 R CYCLE/W:DRILL@1:7,E@1:13 [1+2]\n"
+            "3:1 R GOTO/N:1=1@3:6,E@3:8 [3+2]\n"
+            "5:1 B FINI [5+1]\n");
+  EXPECT_EQ(r.diags, "");
+}
+
+// REMARK, APT's comment statement (NCL's APT source begins with one), is a text statement: the
+// file name with its '.' and the date are text, not arguments.
+TEST(AptSource, RemarkIsAText) {
+  Result r = read("REMARK upside_down.as     27-APR-2021  10:45:22  NCLCAM     2020.00\nFINI\n");
+  EXPECT_EQ(dump(r),
+            "1:1 T REMARK 'upside_down.as     27-APR-2021  10:45:22  NCLCAM     2020.00' [1+1]\n"
+            "2:1 B FINI [2+1]\n");
+  EXPECT_EQ(r.diags, "");
+}
+
 // ---- quoted text -----------------------------------------------------------------------------
 
 TEST(AptSource, QuotedText) {

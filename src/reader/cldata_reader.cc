@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -71,16 +72,27 @@ struct CldataReader::Word {
 
 CldataReader::CldataReader(const Layout& layout, std::string_view head, std::FILE* in,
                            Diagnostics& diags)
-    : layout_(layout), diags_(diags), in_(in), storage_(head) {
-  data_ = storage_.data();
-  len_ = storage_.size();
+    : layout_(layout), diags_(diags), in_(in) {
+  take_raw(head);
   eof_ = in == nullptr;
   diags_.set_binary_records(true);
 }
 
 CldataReader::CldataReader(const Layout& layout, std::string_view data, Diagnostics& diags)
     : layout_(layout), diags_(diags), data_(data.data()), len_(data.size()), eof_(true) {
+  if (layout_.block_words != 0) {
+    data_ = nullptr, len_ = 0;
+    take_raw(data);  // blocks joined into storage_
+  }
   diags_.set_binary_records(true);
+}
+
+// The file's next bytes, `raw`, appended to the unread input (blocked layouts: joined).
+void CldataReader::take_raw(std::string_view raw) {
+  append_records(layout_, storage_, raw, raw_read_);
+  raw_read_ += raw.size();
+  data_ = storage_.data();
+  len_ = storage_.size();
 }
 
 // Makes n unread bytes available; false at the end of the input (or a read error, reported).
@@ -89,13 +101,10 @@ bool CldataReader::ensure(size_t n) {
     storage_.erase(0, pos_);
     base_ += pos_;
     pos_ = 0;
-    const size_t had = storage_.size();
-    const size_t want = std::max(kChunk, n - had);
-    storage_.resize(had + want);
-    const size_t got = std::fread(storage_.data() + had, 1, want, in_);
-    storage_.resize(had + got);
-    data_ = storage_.data();
-    len_ = storage_.size();
+    const size_t want = std::max(kChunk, n - storage_.size());
+    raw_.resize(want);
+    const size_t got = std::fread(raw_.data(), 1, want, in_);
+    take_raw(std::string_view(raw_).substr(0, got));
     if (got < want) {
       eof_ = true;
       if (std::ferror(in_)) {
@@ -127,7 +136,7 @@ bool CldataReader::read_record() {
   const size_t hb = layout_.header_bytes();
   if (!ensure(hb)) {
     if (len_ > pos_) {
-      error(SourceLoc{ordinal_ + 1, loc_at(bytes_read()).col},
+      error(SourceLoc{ordinal_ + 1, loc_at(logical_read()).col},
             fmt::format("truncated record: {} bytes where a {}-byte header should be", len_ - pos_,
                         hb));
       stop();
@@ -136,7 +145,7 @@ bool CldataReader::read_record() {
     return false;
   }
   ++ordinal_;
-  record_at_ = bytes_read();
+  record_at_ = logical_read();
   header_ = read_header(layout_, data_ + pos_);
   const SourceLoc at = loc_at(record_at_);
   if (header_.length < 0 || header_.length > kMaxRecordWords) {
@@ -164,9 +173,8 @@ bool CldataReader::read_record() {
 CldataReader::Word CldataReader::word(size_t i) const {
   const char* p = words_ + i * layout_.word_bytes;
   const uint64_t bits = read_word(layout_, p);
-  // A minor word is an integer code in a word; as a double it would be a denormal, which no
-  // CAM system writes as a coordinate.
-  if (bits != 0 && bits <= 0xFFFFFFFFu) return Word{Word::Kind::kCode, 0, int64_t(bits), {}};
+  if (const std::optional<int64_t> code = word_code(layout_, bits))
+    return Word{Word::Kind::kCode, 0, *code, {}};
   const std::string_view chars(p, layout_.word_bytes);
   const std::string_view text = chars.substr(0, layout_.text_chars);
   bool name = true, blank = true;
@@ -182,8 +190,10 @@ CldataReader::Word CldataReader::word(size_t i) const {
   return Word{Word::Kind::kNumber, word_double(bits), 0, {}};
 }
 
-// Record and byte: SourceLoc{record, byte + 1} (column 0, no byte, past 4 GB).
-SourceLoc CldataReader::loc_at(size_t byte) const {
+// Record and byte: SourceLoc{record, byte + 1} (column 0, no byte, past 4 GB). `logical`, a byte
+// of the record stream, is shown as its offset in the file.
+SourceLoc CldataReader::loc_at(size_t logical) const {
+  const size_t byte = file_offset(layout_, logical);
   return SourceLoc{ordinal_, byte + 1 > UINT32_MAX ? 0 : static_cast<uint32_t>(byte + 1)};
 }
 
@@ -202,6 +212,8 @@ bool CldataReader::next(Statement& out) {
 // The next statement of the current record; false when it has no more (in_record_ cleared).
 bool CldataReader::statement_of_record(Statement& out) {
   const SourceLoc at = loc_at(record_at_);
+  if (layout_.flavor == Flavor::kNcl)
+    if (const std::optional<bool> r = ncl_record(out)) return *r;
   switch (header_.type) {
     case kPostWord:
       in_record_ = false;
@@ -237,7 +249,9 @@ bool CldataReader::statement_of_record(Statement& out) {
   }
   diags_.warning(at, {},
                  fmt::format("unknown {} {} (subtype {}, {} words); skipped",
-                             is_known_type(header_.type) ? "subtype of record type" : "record type",
+                             is_known_type(header_.type, layout_.flavor == Flavor::kNcl)
+                                 ? "subtype of record type"
+                                 : "record type",
                              header_.type, header_.subtype, count_));
   comment_of_record();
   return false;
@@ -245,41 +259,16 @@ bool CldataReader::statement_of_record(Statement& out) {
 
 bool CldataReader::post_word(Statement& out) {
   const SourceLoc at = loc_at(record_at_);
-  std::string_view major = major_name(header_.subtype);
+  const bool ncl = layout_.flavor == Flavor::kNcl;
+  std::string_view major = ncl ? ncl_major_name(header_.subtype) : major_name(header_.subtype);
   std::string code;
   if (major.empty()) major = code = fmt::format("CODE{}", header_.subtype);
-  if (is_text_major(header_.subtype)) {
+  if (ncl ? ncl_is_text_major(header_.subtype) : is_text_major(header_.subtype)) {
     std::string& text = comment_text_;
     text.clear();
-    bool odd = false;
-    for (size_t i = 0; i < count_; ++i) {
-      for (size_t c = 0; c < layout_.text_chars; ++c) {
-        const char ch = words_[i * layout_.word_bytes + c];
-        const bool printable = ch >= 0x20 && ch < 0x7f;
-        odd = odd || !printable;
-        text += printable ? ch : '?';
-      }
-    }
-    if (odd)
-      diags_.warning(at, {},
-                     fmt::format("{} text holds bytes that are not text, read as '?'", major));
-    // A text ending in one '$' would continue onto the next line when read as APT: its APT
-    // text (cl2apt) could not say it, so the '$' is read as '?', like a byte that is not text.
-    const std::string_view end = trim_blanks(text);
-    if (reader::comment_continues(end)) {
-      text[static_cast<size_t>(end.data() - text.data()) + end.size() - 1] = '?';
-      diags_.warning(at, {},
-                     fmt::format("{} text ends in '$', which APT reads as a continuation: read as "
-                                 "'?'",
-                                 major));
-    }
-    begin(out, major, Statement::Form::kText, at);
-    const std::string_view trimmed = trim_blanks(text);
-    // A text that starts with '/' keeps it: the text reader takes one '/' after the major.
-    if (!trimmed.empty()) line_.append(trimmed.front() == '/' ? " /" : " ").append(trimmed);
-    finish(out);
-    out.text = std::string_view(line_).substr(line_.size() - trimmed.size());
-    return true;
+    for (size_t i = 0; i < count_; ++i)
+      text.append(words_ + i * layout_.word_bytes, layout_.text_chars);
+    return text_statement(out, major, text);
   }
   begin(out, major, count_ ? Statement::Form::kRecord : Statement::Form::kBare, at);
   for (size_t i = 0; i < count_; ++i)
@@ -288,10 +277,42 @@ bool CldataReader::post_word(Statement& out) {
   return true;
 }
 
+// A text statement (PARTNO, PPRINT, INSERT; NCL's REMARK) of `text`, the record's characters.
+bool CldataReader::text_statement(Statement& out, std::string_view major, std::string& text) {
+  const SourceLoc at = loc_at(record_at_);
+  bool odd = false;
+  for (char& ch : text) {
+    const bool printable = ch >= 0x20 && ch < 0x7f;
+    odd = odd || !printable;
+    if (!printable) ch = '?';
+  }
+  if (odd)
+    diags_.warning(at, {},
+                   fmt::format("{} text holds bytes that are not text, read as '?'", major));
+  // A text ending in one '$' would continue onto the next line when read as APT: its APT text
+  // (cl2apt) could not say it, so the '$' is read as '?', like a byte that is not text.
+  const std::string_view end = trim_blanks(text);
+  if (reader::comment_continues(end)) {
+    text[static_cast<size_t>(end.data() - text.data()) + end.size() - 1] = '?';
+    diags_.warning(at, {},
+                   fmt::format("{} text ends in '$', which APT reads as a continuation: read as "
+                               "'?'",
+                               major));
+  }
+  begin(out, major, Statement::Form::kText, at);
+  const std::string_view trimmed = trim_blanks(text);
+  // A text that starts with '/' keeps it: the text reader takes one '/' after the major.
+  if (!trimmed.empty()) line_.append(trimmed.front() == '/' ? " /" : " ").append(trimmed);
+  finish(out);
+  out.text = std::string_view(line_).substr(line_.size() - trimmed.size());
+  return true;
+}
+
 // One statement per point of a FROM, GOTO or continuation record; one statement of all its
 // numbers for the other kinds (GODLTA, INDIRV, ...).
 bool CldataReader::motion(Statement& out) {
-  if (next_word_ == 0) next_word_ = std::min<size_t>(2, count_);  // the surface name pair
+  if (next_word_ == 0)  // APT360: after the surface name pair
+    next_word_ = std::min<size_t>(layout_.motion_name_words, count_);
   const int64_t sub = header_.subtype;
   std::string_view major = sub == kMotionContinuation ? motion_major_ : subtype_name(kMotion, sub);
   if (major.empty()) {
@@ -329,7 +350,7 @@ bool CldataReader::numbered(Statement& out, std::string_view major, size_t from)
   for (size_t i = from; i < next_word_; ++i) {
     // A coordinate is a double, whatever its bytes look like, unless it is a word code.
     const uint64_t bits = read_word(layout_, words_ + i * layout_.word_bytes);
-    if (bits != 0 && bits <= 0xFFFFFFFFu) {
+    if (word_code(layout_, bits)) {
       error(loc_of_word(i), fmt::format("{} coordinate {} is not a number", major, i - from + 1));
       return false;
     }
@@ -356,7 +377,8 @@ bool CldataReader::add_word_arg(Statement& out, size_t i) {
       add_word(out, w.text, loc_of_word(i));
       return true;
     case Word::Kind::kCode: {
-      const std::string_view name = minor_name(w.code);
+      const std::string_view name =
+          layout_.flavor == Flavor::kNcl ? ncl_minor_name(w.code) : minor_name(w.code);
       if (!name.empty()) {
         add_word(out, name, loc_of_word(i));
       } else {
@@ -451,13 +473,19 @@ void CldataReader::comment_of_record() {
   comment_(c);
 }
 
-// FINI ends the file: what follows (tape padding) is not read as records.
+// FINI ends the file: what follows (tape padding) is not read as records. A blocked layout's
+// last block is filled up after FINI: that is not noted.
 void CldataReader::after_fini() {
+  const size_t fini_end = logical_read();
   size_t rest = 0;
   for (;;) {
     rest += len_ - pos_;
     pos_ = len_;
     if (eof_ || !ensure(1)) break;
+  }
+  if (layout_.block_words != 0) {
+    const size_t data = layout_.block_data_bytes();
+    rest -= std::min(rest, (data - fini_end % data) % data);
   }
   if (rest > 0 && !gave_up_)
     diags_.note(loc_at(record_at_), {}, fmt::format("{} bytes after FINI ignored", rest));

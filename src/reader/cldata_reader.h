@@ -1,5 +1,6 @@
 #pragma once
-// Reader of binary CLDATA files (ISO 3592 records: 2000 post words, 5000 motion, ...). It yields
+// Reader of binary CLDATA files (ISO 3592 records: 2000 post words, 5000 motion, ...), in APT360's
+// layouts and NCL's (its physical blocks joined, its own records read: cldata_ncl.cc). It yields
 // the statements the text reader yields for the equivalent APT source — the same major words,
 // minor words, numbers and text — so everything after the reader works on either. A record
 // of many points gives one GOTO per point. Sequence numbers (1000) and surface data (3000) make
@@ -9,6 +10,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,7 +35,11 @@ class CldataReader {
   // As ClReader::next().
   bool next(Statement& out);
 
-  size_t bytes_read() const { return base_ + pos_; }
+  // Bytes of the file read (NCL: the blocks' unused words counted).
+  size_t bytes_read() const {
+    const size_t at = cldata::file_offset(layout_, logical_read());
+    return layout_.block_words != 0 && at > raw_read_ ? raw_read_ : at;
+  }
   uint32_t record() const { return ordinal_; }
   bool gave_up() const { return gave_up_; }
   const cldata::Layout& layout() const { return layout_; }
@@ -48,10 +54,19 @@ class CldataReader {
 
  private:
   struct Word;
+  size_t logical_read() const { return base_ + pos_; }
+  void take_raw(std::string_view raw);
   bool read_record();
   bool ensure(size_t n);
   bool statement_of_record(Statement& out);
   bool post_word(Statement& out);
+  bool text_statement(Statement& out, std::string_view major, std::string& text);
+  // NCL's own records (cldata_ncl.cc): true or false as statement_of_record() returns, nothing
+  // for a record read as APT360's.
+  std::optional<bool> ncl_record(Statement& out);
+  bool ncl_header(Statement& out);
+  bool ncl_multax(Statement& out);
+  bool ncl_cutter(Statement& out);
   bool motion(Statement& out);
   bool numbered(Statement& out, std::string_view major, size_t from);
   void comment_of_record();
@@ -73,12 +88,14 @@ class CldataReader {
 
   // Input: data_[0, len_) holds bytes from offset base_; pos_ is the next unread byte.
   std::FILE* in_ = nullptr;
-  std::string storage_;  // file input
+  std::string storage_;  // file input (blocked layouts: also memory input), blocks joined
+  std::string raw_;      // the bytes of the last read, before joining
   const char* data_ = nullptr;
   size_t len_ = 0;
   size_t pos_ = 0;
   size_t base_ = 0;
   bool eof_ = false;
+  size_t raw_read_ = 0;  // bytes of the file read (blocked layouts: before joining)
 
   // The record being turned into statements.
   cldata::RecordHeader header_;

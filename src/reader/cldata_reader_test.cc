@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "reader/cl_reader.h"
+#include "reader/cldata_ncl.h"
 #include "reader/cldata_words.h"
 #include "reader/cldata_writer.h"
 
@@ -316,6 +318,185 @@ TEST(CldataReader, AptTextReadsBackToTheSameStatements) {
   EXPECT_EQ(st[2], "2 PARTNO ''");
 }
 
+// ---- NCL's layout: 16-bit headers, 36-word physical blocks, its own records and codes ----------
+
+const cldata::Layout& ncl_layout() {
+  for (const cldata::Layout& l : cldata::known_layouts())
+    if (l.flavor == cldata::Flavor::kNcl) return l;
+  ADD_FAILURE() << "no NCL layout";
+  return cldata::known_layouts().front();
+}
+
+// A lathe program as NCL would write it: its header record, post words with NCL's codes (UNITS
+// 841, MMPR 316, FLOOD 89, GOHOME 17, REMARK 1091), a cutter of one parameter, points in records
+// that run over the end of a 36-word block, MULTAX/ON and OFF (9000, subtype 0 and 1).
+std::string ncl_program(double nan_at = 0) {
+  Writer w(ncl_layout());
+  const auto n = [](double v) { return Writer::number(v); };
+  std::vector<uint64_t> head;
+  head.push_back(w.text("SHAFT12"));
+  for (int i = 1; i < 10; ++i) head.push_back(w.text(""));
+  for (const char* f : {" 5-JAN-2", "021", "17:05:20", "NCLCAM", " 2020.00"})
+    head.push_back(w.text(f));
+  head.push_back(0);
+  w.record(cldata::kNclHeader, 0, head);
+  w.record(cldata::kPostWord, 1045, std::vector<uint64_t>{w.text("SHAFT 12")});
+  w.record(cldata::kPostWord, 841, std::vector<uint64_t>{Writer::code(296)});
+  w.record(cldata::kPostWord, 1055, std::vector<uint64_t>{n(7)});
+  w.record(cldata::kTool, 6, std::vector<uint64_t>{n(0.8)});
+  w.record(cldata::kPostWord, 1031,
+           std::vector<uint64_t>{n(600), Writer::code(78), Writer::code(60)});
+  w.record(cldata::kPostWord, 1009, std::vector<uint64_t>{n(0.2), Writer::code(316)});
+  w.record(cldata::kPostWord, 1030, std::vector<uint64_t>{Writer::code(89)});
+  w.record(cldata::kPostWord, 5, {});
+  w.record(cldata::kMotion, 3, std::vector<uint64_t>{n(50), n(0), n(50)});
+  std::vector<uint64_t> pts;
+  for (int i = 0; i < 6; ++i) pts.insert(pts.end(), {n(20 - i), n(0), n(5 - i)});
+  w.record(cldata::kMotion, 5, pts);
+  pts.clear();
+  for (int i = 0; i < 5; ++i) pts.insert(pts.end(), {n(14), n(0), n(-1 - i)});
+  if (nan_at != 0) pts[static_cast<size_t>(nan_at)] = n(NAN);
+  w.record(cldata::kMotion, 5, pts);
+  w.record(cldata::kMultiAxis, 0, {});
+  w.record(cldata::kMotion, 5, std::vector<uint64_t>{n(20), n(0), n(0), n(0), n(0), n(1)});
+  w.record(cldata::kMultiAxis, 1, {});
+  w.record(cldata::kPostWord, 17, {});
+  w.record(cldata::kPostWord, 1091, std::vector<uint64_t>{w.text("END OF"), w.text(" SHAFT")});
+  w.record(cldata::kFini, 0, {});
+  return w.bytes();
+}
+
+TEST(CldataLayout, NclDetectedFromItsHeaderRecord) {
+  const std::string bin = ncl_program();
+  EXPECT_EQ(bin.size(), 3 * 288u);  // the last block filled up after FINI
+  EXPECT_EQ(cldata::detect_layout(bin), &ncl_layout());
+  EXPECT_EQ(cldata::detect_layout(bin.substr(0, 8)), &ncl_layout());
+  EXPECT_EQ(cldata::detect_layout(real_file()), &cldata::known_layouts().front());
+  // Not NCL's header (type 7300), or too short a one to hold name, date, time and version.
+  std::string other = bin;
+  other[2] = static_cast<char>(7300 & 0xff), other[3] = static_cast<char>(7300 >> 8);
+  EXPECT_EQ(cldata::detect_layout(other), nullptr);
+  other = bin;
+  other[0] = 10;
+  EXPECT_EQ(cldata::detect_layout(other), nullptr);
+  const cldata::RecordHeader h = cldata::read_header(ncl_layout(), bin.data() + 136);
+  EXPECT_EQ(h.length, 1);  // PARTNO: a word count of 2, the header counted
+  EXPECT_EQ(h.type, 2000);
+  EXPECT_EQ(h.subtype, 1045);
+  EXPECT_EQ(h.isn, 2);
+}
+
+TEST(CldataReader, NclRecordsAndCodes) {
+  const Read r = read_all(ncl_program());
+  EXPECT_EQ(r.diags, "");
+  EXPECT_EQ(
+      r.st,
+      (std::vector<std::string>{
+          "2 REMARK 'SHAFT12      5-JAN-2021  17:05:20  NCLCAM     2020.00'",
+          "2 PARTNO 'SHAFT 12'",
+          "0 UNITS wMM",
+          "0 LOADTL #7=7.000000",
+          "0 CUTTER #0.8=0.800000 #0=0.000000 #0=0.000000 #0=0.000000 #0=0.000000 #0=0.000000 "
+          "#0=0.000000",
+          "0 SPINDL #600=600.000000 wRPM wCLW",
+          "0 FEDRAT #0.2=0.200000 wMMPR",
+          "0 COOLNT wFLOOD",
+          "1 RAPID",
+          "0 FROM #50=50.000000 #0=0.000000 #50=50.000000",
+          "0 GOTO #20=20.000000 #0=0.000000 #5=5.000000",
+          "0 GOTO #19=19.000000 #0=0.000000 #4=4.000000",
+          "0 GOTO #18=18.000000 #0=0.000000 #3=3.000000",
+          "0 GOTO #17=17.000000 #0=0.000000 #2=2.000000",
+          "0 GOTO #16=16.000000 #0=0.000000 #1=1.000000",
+          "0 GOTO #15=15.000000 #0=0.000000 #0=0.000000",
+          "0 GOTO #14=14.000000 #0=0.000000 #-1=-1.000000",
+          "0 GOTO #14=14.000000 #0=0.000000 #-2=-2.000000",
+          "0 GOTO #14=14.000000 #0=0.000000 #-3=-3.000000",
+          "0 GOTO #14=14.000000 #0=0.000000 #-4=-4.000000",
+          "0 GOTO #14=14.000000 #0=0.000000 #-5=-5.000000",
+          "0 MULTAX wON",
+          "0 GOTO #20=20.000000 #0=0.000000 #0=0.000000 #0=0.000000 #0=0.000000 #1=1.000000",
+          "0 MULTAX wOFF",
+          "1 GOHOME",
+          "2 REMARK 'END OF   SHAFT'",
+          "1 FINI",
+      }));
+  // From a FILE*, in chunks, as `clpost part.cl` reads it: the same, every byte counted.
+  const std::string bin = ncl_program();
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  std::fwrite(bin.data(), 1, bin.size(), f);
+  std::rewind(f);
+  Diagnostics diags("t.cl");
+  ClReader file_reader(f, diags);
+  std::vector<std::string> st;
+  Statement s;
+  while (file_reader.next(s)) st.push_back(describe(s));
+  std::fclose(f);
+  EXPECT_EQ(st, r.st);
+  EXPECT_EQ(file_reader.bytes_read(), bin.size());
+  EXPECT_EQ(diags.render_all(), "");
+}
+
+// The records' APT text (cl2apt) reads back to the same statements: REMARK is a text statement
+// for the text reader too.
+TEST(CldataReader, NclAptTextReadsBack) {
+  Diagnostics diags("t.cl");
+  const std::string bin = ncl_program();
+  CldataReader r(ncl_layout(), bin, diags);
+  std::vector<std::string> st;
+  std::string apt;
+  Statement s;
+  while (r.next(s)) st.push_back(describe(s)), apt += std::string(s.lines.front()) + "\n";
+  EXPECT_EQ(read_all(apt).st, st);
+  EXPECT_EQ(apt.substr(0, apt.find('\n')),
+            "REMARK SHAFT12      5-JAN-2021  17:05:20  NCLCAM     2020.00");
+  EXPECT_NE(apt.find("\nCUTTER/0.8,0,0,0,0,0,0\n"), std::string::npos) << apt;
+}
+
+// Locations are the file's bytes: the unused word that ends each 288-byte block is counted.
+TEST(CldataReader, NclDiagnosticsNameTheFileByte) {
+  // The second GOTO record's header is file word 59 (byte 472); its words follow, word 71 (the
+  // last of the second block) left out: point 5's Y, its word 13, is file word 74, byte 592.
+  Read r = read_all(ncl_program(13));
+  EXPECT_EQ(r.diags,
+            "t.cl: record 12 (byte 592): error: GOTO coordinate 2 is not a finite number\n");
+  // Cut inside that record: truncated, at the record's own byte.
+  const std::string bin = ncl_program();
+  r = read_all(bin.substr(0, 560));
+  EXPECT_EQ(r.diags,
+            "t.cl: record 12 (byte 472): error: truncated record: type 5000 of 15 words (120 "
+            "bytes), 80 bytes left\n");
+  // A MULTAX record of another subtype: the points after it cannot be read.
+  std::string multax = bin;
+  const size_t at = multax.find(std::string("\x01\x00\x28\x23", 4));
+  ASSERT_NE(at, std::string::npos);
+  multax[at + 4] = 5;
+  r = read_all(multax);
+  EXPECT_EQ(r.diags,
+            "t.cl: record 13 (byte " + std::to_string(at) +
+                "): error: MULTAX record of subtype 5: NCL writes 0 (ON) or 1 (OFF); the points "
+                "after it could not be read\n");
+}
+
+TEST(CldataNcl, CutterAsAptWritesIt) {
+  using A = std::array<double, 7>;
+  // upside_down.cl's cutter: diameter, corner radius, height.
+  EXPECT_EQ(cldata::ncl_apt_cutter(std::vector<double>{0.75, 0.125, 2.25}),
+            (A{0.75, 0.125, 0.25, 0.125, 0, 0, 2.25}));
+  EXPECT_EQ(cldata::ncl_apt_cutter(std::vector<double>{10}), (A{10, 0, 0, 0, 0, 0, 0}));
+  // A cone cutter of side angle 90 - 2·45: the diameter where APT measures it.
+  const A cone = cldata::ncl_apt_cutter(std::vector<double>{10, 1, 20, 0.0 + 0});
+  EXPECT_EQ(cone, (A{10, 1, 4, 1, 0, 0, 20}));
+  const A c45 = cldata::ncl_apt_cutter(std::vector<double>{10, 1, 20, 45});
+  EXPECT_NEAR(c45[0], 10 - 2 + 2 * std::tan(22.5 * M_PI / 180), 1e-12);
+  EXPECT_EQ(c45[2], 4);
+  EXPECT_EQ(c45[5], 45);
+  // Five parameters and more: APT's order.
+  EXPECT_EQ(cldata::ncl_apt_cutter(std::vector<double>{10, 1, 20, 2, 3, 4}),
+            (A{10, 2, 3, 3, 1, 4, 20}));
+}
+
 // The fuzz target's seeds (fuzz/seeds/cldata/) are the files these tests write and read: the
 // test fails when one is stale; CLPOST_WRITE_SEEDS=1 rewrites them.
 TEST(CldataReader, FuzzSeedsAreTheFilesTheTestsWrite) {
@@ -323,7 +504,8 @@ TEST(CldataReader, FuzzSeedsAreTheFilesTheTestsWrite) {
   const std::vector<std::pair<std::string, std::string>> seeds = {
       {"every_record.bin", encode(kEveryRecord)},
       {"every_record_merged.bin", encode(kEveryRecord, {false, 50})},
-      {"thread_m20.bin", encode(read_file(CLPOST_SOURCE_DIR "/samples/thread-m20.apt"))}};
+      {"thread_m20.bin", encode(read_file(CLPOST_SOURCE_DIR "/samples/thread-m20.apt"))},
+      {"ncl_program.bin", ncl_program()}};
   for (const auto& [name, bytes] : seeds) {
     if (std::getenv("CLPOST_WRITE_SEEDS") != nullptr)
       std::ofstream(dir + name, std::ios::binary) << bytes;

@@ -362,6 +362,64 @@ int64_t code_of(const Entry (&table)[N], std::string_view name) {
   return -1;
 }
 
+// NCL's codes (NCCS NCL's vocabulary, src/nclfiles/nclvoc.ncl in its public sources) for the
+// words clpost's tables and interpreter know: the post words of 2000 records (NCL's own where
+// they differ from APT360's: END 499, GOHOME 17, OPSKIP 1012, INTOL 1064, UNITS 841, REMARK
+// 1091, …) and the minor words (MMPM 315, MMPR 316, DEPTH 510, RETURN 322, SMM 505, …).
+constexpr Entry kNclMajors[] = {
+    {2, "STOP"},      {3, "OPSTOP"},    {5, "RAPID"},     {7, "RETRCT"},    {10, "UNLOAD"},
+    {15, "RESET"},    {17, "GOHOME"},   {129, "PENUP"},   {130, "PENDWN"},  {499, "END"},
+    {802, "DNTCUT"},  {803, "CUT"},     {841, "UNITS"},   {1001, "PLUNGE"}, {1002, "HEAD"},
+    {1003, "MODE"},   {1004, "CLEARP"}, {1005, "TMARK"},  {1006, "REWIND"}, {1007, "CUTCOM"},
+    {1008, "REVERS"}, {1009, "FEDRAT"}, {1010, "DELAY"},  {1011, "AIR"},    {1012, "OPSKIP"},
+    {1013, "LEADER"}, {1014, "PPLOT"},  {1015, "MACHIN"}, {1016, "MCHTOL"}, {1017, "PIVOTZ"},
+    {1019, "SEQNO"},  {1020, "INTCOD"}, {1021, "DISPLY"}, {1022, "AUXFUN"}, {1023, "CHECK"},
+    {1024, "POSTN"},  {1025, "TOOLNO"}, {1026, "ROTABL"}, {1027, "ORIGIN"}, {1028, "SAFETY"},
+    {1029, "ARCSLP"}, {1030, "COOLNT"}, {1031, "SPINDL"}, {1033, "TURRET"}, {1035, "ROTHED"},
+    {1036, "THREAD"}, {1037, "TRANS"},  {1042, "OVPLOT"}, {1043, "LETTER"}, {1044, "PPRINT"},
+    {1045, "PARTNO"}, {1046, "INSERT"}, {1048, "PREFUN"}, {1049, "COUPLE"}, {1050, "PITCH"},
+    {1052, "MDEND"},  {1054, "CYCLE"},  {1055, "LOADTL"}, {1056, "SELCTL"}, {1057, "CLRSRF"},
+    {1059, "DRAFT"},  {1060, "CLAMP"},  {1061, "PLABEL"}, {1062, "MAXDPM"}, {1063, "SLOWDN"},
+    {1064, "INTOL"},  {1065, "LPRINT"}, {1074, "SELECT"}, {1075, "LOAD"},   {1080, "OUTTOL"},
+    {1091, "REMARK"},
+};
+
+constexpr Entry kNclMinors[] = {
+    {1, "ATANGL"},   {8, "LEFT"},     {9, "LENGTH"},    {10, "MINUS"},   {14, "NOX"},
+    {15, "NOY"},     {16, "NOZ"},     {19, "PLUS"},     {23, "RADIUS"},  {24, "RIGHT"},
+    {25, "SCALE"},   {28, "TIMES"},   {30, "UNIT"},     {33, "XYPLAN"},  {37, "YZPLAN"},
+    {39, "NORMPS"},  {41, "ZXPLAN"},  {50, "OPEN"},     {52, "LAST"},    {53, "NOMORE"},
+    {57, "START"},   {59, "CCLW"},    {60, "CLW"},      {61, "MEDIUM"},  {62, "HIGH"},
+    {63, "LOW"},     {65, "DECR"},    {66, "INCR"},     {67, "GRID"},    {68, "ROTREF"},
+    {71, "ON"},      {72, "OFF"},     {73, "IPM"},      {74, "IPR"},     {75, "CIRCUL"},
+    {76, "LINEAR"},  {77, "PARAB"},   {78, "RPM"},      {79, "MAXRPM"},  {80, "TURN"},
+    {81, "FACE"},    {82, "BORE"},    {83, "BOTH"},     {84, "XAXIS"},   {85, "YAXIS"},
+    {86, "ZAXIS"},   {88, "AUTO"},    {89, "FLOOD"},    {90, "MIST"},    {92, "STEP"},
+    {93, "MAIN"},    {94, "SIDE"},    {95, "LINCIR"},   {96, "MAXIPM"},  {97, "REV"},
+    {98, "TYPE"},    {107, "THETAR"}, {110, "TRFORM"},  {112, "UP"},     {113, "DOWN"},
+    {114, "LOCK"},   {115, "SFM"},    {116, "XCOORD"},  {117, "YCOORD"}, {118, "ZCOORD"},
+    {123, "SOLID"},  {124, "DASH"},   {125, "DOTTED"},  {127, "DITTO"},  {128, "PEN"},
+    {134, "INTENS"}, {139, "COLLET"}, {140, "AAXIS"},   {141, "BAXIS"},  {142, "CAXIS"},
+    {143, "TPI"},    {144, "OPTION"}, {145, "RANGE"},   {148, "FRONT"},  {149, "REAR"},
+    {150, "SADDLE"}, {151, "MILL"},   {152, "THRU"},    {153, "DEEP"},   {154, "TRAV"},
+    {157, "HOLDER"}, {158, "MANUAL"}, {159, "ADJUST"},  {160, "CUTANG"}, {161, "NOW"},
+    {162, "NEXT"},   {163, "DRILL"},  {168, "TAP"},     {170, "ZIGZAG"}, {172, "OMIT"},
+    {182, "ARC"},    {189, "AT"},     {197, "DWELL"},   {237, "CAM"},    {246, "ORIENT"},
+    {260, "PART"},   {262, "REAM"},   {280, "RAPTO"},   {281, "FEDTO"},  {296, "MM"},
+    {303, "INCHES"}, {315, "MMPM"},   {316, "MMPR"},    {322, "RETURN"}, {326, "RANDOM"},
+    {327, "AVOID"},  {328, "CONST"},  {329, "RETAIN"},  {505, "SMM"},    {510, "DEPTH"},
+    {617, "TOOL"},   {628, "SPLINE"}, {629, "SLOPE"},   {630, "PERPTO"}, {634, "CENTER"},
+    {637, "PARLEL"}, {638, "XLARGE"}, {639, "YLARGE"},  {640, "ZLARGE"}, {641, "XSMALL"},
+    {642, "YSMALL"}, {643, "ZSMALL"}, {646, "TANTO"},   {649, "TRANSL"}, {652, "IN"},
+    {653, "OUT"},    {654, "POSX"},   {655, "POSY"},    {656, "POSZ"},   {657, "NEGX"},
+    {658, "NEGY"},   {659, "NEGZ"},   {662, "LARGE"},   {663, "SMALL"},  {666, "OFFSET"},
+    {700, "LATHE"},  {714, "TO"},     {715, "PAST"},    {723, "FAN"},    {727, "INTOF"},
+    {729, "PSTAN"},  {730, "SAME"},   {732, "MODIFY"},  {733, "XYROT"},  {734, "YZROT"},
+    {735, "ZXROT"},  {816, "ALL"},    {819, "CROSS"},   {820, "NORMAL"}, {821, "MIRROR"},
+    {822, "INVERS"}, {904, "BLACK"},  {906, "BLUE"},    {907, "RED"},    {908, "GREEN"},
+    {961, "CHAMFR"}, {1011, "AIR"},   {1036, "THREAD"}, {1073, "CHUCK"},
+};
+
 }  // namespace
 
 std::string_view major_name(int64_t code) {
@@ -389,6 +447,22 @@ int64_t minor_code(std::string_view name) {
   return code_of(kMinors, name);
 }
 
+std::string_view ncl_major_name(int64_t code) {
+  return name_of(kNclMajors, code);
+}
+int64_t ncl_major_code(std::string_view name) {
+  return code_of(kNclMajors, name);
+}
+bool ncl_is_text_major(int64_t code) {
+  return (code >= 1044 && code <= 1046) || code == 1091;
+}
+std::string_view ncl_minor_name(int64_t code) {
+  return name_of(kNclMinors, code);
+}
+int64_t ncl_minor_code(std::string_view name) {
+  return code_of(kNclMinors, name);
+}
+
 std::string_view subtype_name(int32_t type, int64_t subtype) {
   for (const SubtypeEntry& e : kSubtypes)
     if (e.type == type && e.subtype == subtype) return e.name;
@@ -404,7 +478,8 @@ std::string_view surface_name(int64_t type) {
   return name_of(kSurfaces, type);
 }
 
-bool is_known_type(int64_t type) {
+bool is_known_type(int64_t type, bool ncl) {
+  if (ncl && (type == kNclCutterDisplay || type == kNclHeader)) return true;
   return type == kSequence || type == kPostWord || type == kSurface || type == kMotion ||
          type == kTool || type == kMultiAxis || type == kFini;
 }

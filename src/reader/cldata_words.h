@@ -18,6 +18,10 @@ enum RecordType : int32_t {
   kTool = 6000,       // tool and tolerance data: CUTTER, INTOL, ...
   kMultiAxis = 9000,  // MULTAX and the like
   kFini = 14000,
+  // NCL's own (postworks/pwmacro/clfile.f): a cutter for display only, and the clfile header
+  // (the clfile's name, date, time, CAM system and version).
+  kNclCutterDisplay = 7100,
+  kNclHeader = 7400,
 };
 
 inline constexpr int32_t kMotionContinuation = 6;
@@ -36,6 +40,14 @@ std::string_view minor_name(int64_t code);
 // Code of a minor word; -1 if none.
 int64_t minor_code(std::string_view name);
 
+// The same with NCL's codes (its vocabulary): PPRINT, PARTNO, INSERT and REMARK carry text. Only
+// the words clpost's tables and interpreter know; unknown: empty, -1.
+std::string_view ncl_major_name(int64_t code);
+int64_t ncl_major_code(std::string_view name);
+bool ncl_is_text_major(int64_t code);
+std::string_view ncl_minor_name(int64_t code);
+int64_t ncl_minor_code(std::string_view name);
+
 // Major word of a record of type 5000, 6000 or 9000 by its subtype; empty if unknown
 // (5000/6, a continuation, is the major of the record it continues).
 std::string_view subtype_name(int32_t type, int64_t subtype);
@@ -45,7 +57,7 @@ int64_t subtype_code(int32_t type, std::string_view name);
 // Name of a surface type of a 3000 record's canonical form (4 CIRCLE, ...); empty if unknown.
 std::string_view surface_name(int64_t type);
 
-// The record types above.
-bool is_known_type(int64_t type);
+// The record types above; NCL's own only with `ncl`.
+bool is_known_type(int64_t type, bool ncl = false);
 
 }  // namespace clpost::cldata

@@ -18,14 +18,31 @@ void Writer::put(uint64_t v, size_t bytes) {
   }
 }
 
+// Blocked layouts: the unused last word of a physical block before the next word.
+void Writer::skip_unused() {
+  if (layout_.block_words == 0) return;
+  const size_t word = out_.size() / layout_.word_bytes;
+  if (word % layout_.block_words == layout_.block_words - 1u) out_.append(layout_.word_bytes, '\0');
+}
+
 void Writer::record(int64_t type, int64_t subtype, std::span<const uint64_t> words) {
   int64_t f[8] = {};
-  f[layout_.number_at] = ++number_;
-  f[layout_.length_at] = static_cast<int64_t>(words.size());
+  ++number_;
+  if (layout_.number_at >= 0) f[layout_.number_at] = number_;
+  if (layout_.isn_at >= 0) f[layout_.isn_at] = number_;
+  f[layout_.length_at] =
+      static_cast<int64_t>(words.size()) + (layout_.length_counts_header ? 1 : 0);
   f[layout_.type_at] = type;
   f[layout_.subtype_at] = subtype;
+  skip_unused();  // a blocked layout's header is one word
   for (size_t i = 0; i < layout_.fields; ++i) put(static_cast<uint64_t>(f[i]), layout_.field_bytes);
-  for (uint64_t w : words) put(w, layout_.word_bytes);
+  for (uint64_t w : words) {
+    skip_unused();
+    put(w, layout_.word_bytes);
+  }
+  // NCL fills the last block up after FINI.
+  if (type == kFini && layout_.block_words != 0 && out_.size() % layout_.block_bytes() != 0)
+    out_.append(layout_.block_bytes() - out_.size() % layout_.block_bytes(), '\0');
 }
 
 uint64_t Writer::number(double v) {

@@ -16,7 +16,8 @@ class Writer {
  public:
   explicit Writer(const Layout& layout = known_layouts().front()) : layout_(layout) {}
 
-  // A record of the given words (as read_word() reads them).
+  // A record of the given words (as read_word() reads them); in a blocked layout (NCL) through
+  // its physical blocks, the last one filled up after FINI.
   void record(int64_t type, int64_t subtype, std::span<const uint64_t> words);
   static uint64_t number(double v);
   static uint64_t code(int64_t minor) { return static_cast<uint64_t>(minor); }
@@ -28,6 +29,7 @@ class Writer {
 
  private:
   void put(uint64_t v, size_t bytes);
+  void skip_unused();
   const Layout& layout_;
   std::string out_;
   int64_t number_ = 0;

@@ -25,33 +25,6 @@ char to_upper(char c) {
   return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
 }
 
-// Text for a message: control and non-ASCII bytes as \xNN, long text cut.
-std::string shown(std::string_view s) {
-  constexpr size_t kMax = 40;
-  std::string out;
-  for (size_t i = 0; i < s.size() && i < kMax; ++i) {
-    unsigned char c = static_cast<unsigned char>(s[i]);
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      static constexpr char kHex[] = "0123456789ABCDEF";
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    }
-  }
-  if (s.size() > kMax) out += "...";
-  return out;
-}
-
-std::string quoted(std::string_view s) {
-  // Appended piece by piece: `"'" + shown(s) + "'"` trips GCC 12's -Wrestrict at -O3.
-  std::string out = "'";
-  out += shown(s);
-  out += '\'';
-  return out;
-}
-
 bool equals_upper(std::string_view word, std::string_view upper) {
   if (word.size() != upper.size()) return false;
   for (size_t i = 0; i < word.size(); ++i) {
@@ -83,7 +56,8 @@ bool StatementLexer::is_text_statement(std::string_view line) {
   auto [i, j] = first_word(line);
   std::string_view word = line.substr(i, j - i);
   if (!equals_upper(word, "PARTNO") && !equals_upper(word, "PPRINT") &&
-      !equals_upper(word, "INSERT") && !equals_upper(word, "TPRINT")) {
+      !equals_upper(word, "INSERT") && !equals_upper(word, "TPRINT") &&
+      !equals_upper(word, "REMARK")) {
     return false;
   }
   return j == line.size() || is_blank_char(line[j]) || line[j] == '/';
@@ -269,9 +243,17 @@ bool StatementLexer::modifiers(Statement& st, size_t after_comma) {
 bool StatementLexer::lex_args(Statement& st, std::vector<Arg>& out, int depth) {
   auto closed = [&] { return at_end() || (depth > 0 && cur() == ')'); };
   if (closed()) return true;
+  size_t comma = std::string_view::npos;  // the ',' before the argument
   for (;;) {
     if (closed() || cur() == ',') {
-      out.push_back(Arg{Arg::Kind::kEmpty, {}, {0}, loc()});
+      // An empty last argument is shown just after its ',' on the comma's line, not at the
+      // start of a blank continuation line.
+      SourceLoc at = loc();
+      if (pos_ == src_.size() && comma != std::string_view::npos) {
+        at = loc_at(comma);
+        ++at.col;
+      }
+      out.push_back(Arg{Arg::Kind::kEmpty, {}, {0}, at});
     } else if (cur() == '/' || cur() == ')') {
       break;
     } else if (!lex_arg(st, out, depth)) {
@@ -279,7 +261,7 @@ bool StatementLexer::lex_args(Statement& st, std::vector<Arg>& out, int depth) {
     }
     if (closed()) return true;
     if (cur() != ',') break;
-    ++pos_;
+    comma = pos_++;
   }
   if (cur() == '/') return problem(st, loc(), "unexpected '/' in arguments");
   if (cur() == ')') return problem(st, loc(), "unexpected ')' without a '('");

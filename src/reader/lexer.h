@@ -23,7 +23,7 @@ class StatementLexer {
   };
   enum class Result { kOk, kEmpty, kError };
 
-  // PARTNO, PPRINT, INSERT, TPRINT (any case) as the first word of `line`, followed by a
+  // PARTNO, PPRINT, INSERT, TPRINT, REMARK (any case) as the first word of `line`, followed by a
   // blank, a '/' or nothing: the rest of the statement is text, not arguments.
   static bool is_text_statement(std::string_view line);
 

@@ -19,7 +19,8 @@ bool is_major_tail(char c) {
 }
 
 bool is_text_major(std::string_view major) {
-  return major == "PARTNO" || major == "PPRINT" || major == "INSERT" || major == "TPRINT";
+  return major == "PARTNO" || major == "PPRINT" || major == "INSERT" || major == "TPRINT" ||
+         major == "REMARK";
 }
 
 // Exact powers of ten: with a mantissa below 10^15 one division is correctly rounded, and it is

@@ -59,7 +59,7 @@ struct Statement {
     kRecord,  // MAJOR/arg,arg,...   (args filled; `RAPID/` is a record with no args); also the
               // comma form `CHANNEL,1` (no '/': the first ',' stands for it)
     kBare,    // MAJOR alone on its line: RAPID, END, FINI, STOP, END-OF-PATH ...
-    kText,    // PARTNO, PPRINT, INSERT, TPRINT: `text` holds the rest of the line verbatim
+    kText,    // PARTNO, PPRINT, INSERT, TPRINT, REMARK: `text` holds the rest of the line verbatim
   };
   Form form = Form::kBare;
   std::string_view major;  // upper-cased; inner runs of blanks collapsed to one ("TOOL PATH")
@@ -113,5 +113,18 @@ struct SavedLines {
     return lines[line - first_line];
   }
 };
+
+// Text for a message: control and non-ASCII bytes as \xNN, long text cut; quoted: between '…'.
+std::string shown(std::string_view s);
+std::string quoted(std::string_view s);
+
+// What argument `i` of `args` is, for "found …" in messages: 'WORD', number 2.5, the text 'A B',
+// (CIRCLE/…), an empty argument, the end of the statement after ',' (an empty last argument),
+// the end of the statement (no argument `i`). Never an empty ''. `whole`: what `args` are the
+// arguments of ("the definition" for a nested one's).
+std::string describe_arg(std::span<const Arg> args, size_t i,
+                         std::string_view whole = "the statement");
+// The same for `a`, one of `st.args`.
+std::string describe_arg(const Statement& st, const Arg& a);
 
 }  // namespace clpost

@@ -184,7 +184,9 @@ bool read_plan_json(std::string_view text, const Machine& m, std::vector<ThreadP
   }
   const std::string units = r.word(root, "units");
   if (r.ok && units != units_name(LengthUnit::kMm) && units != units_name(LengthUnit::kInch))
-    r.error(root["units"].Mark(), fmt::format("plan JSON: units '{}', expected mm or in", units));
+    r.error(root["units"].Mark(),
+            units.empty() ? std::string("plan JSON: units empty, expected mm or in")
+                          : fmt::format("plan JSON: units '{}', expected mm or in", units));
   YAML::Node threads = r.need(root, "threads");
   if (!r.ok) return false;
   for (const YAML::Node& t : threads)
