@@ -2,8 +2,8 @@
 //   oracle_run --seed N               one program: its CL, NC, events and first difference
 //   oracle_run --seconds S [--from N] fresh seeds from N (default: the clock) for S seconds
 //   oracle_run --count C [--from N]   C programs from seed N (default 1)
-// Prints the count, the classes of difference and the first program of each class; exit status 1
-// when any program differs, 2 on a usage error.
+// Prints the count, the classes of difference with their first seed and the first program that
+// differs in full; exit status 1 when any program differs, 2 on a usage error.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   const oracle::Summary s = d.run(static_cast<uint32_t>(from), count, seconds);
   std::printf("seeds %lld to %lld\n%s", from, from + s.programs - 1,
               oracle::summary_text(s).c_str());
-  for (const oracle::ProgramResult& r : s.firsts) std::printf("\n%s", oracle::report(r).c_str());
+  if (!s.firsts.empty())  // the first program that differs; any other: --seed N
+    std::printf("\nthe first program that differs:\n%s", oracle::report(s.firsts[0]).c_str());
   return s.differing > 0 ? 1 : 0;
 }

@@ -69,7 +69,7 @@ std::string summary_text(const Summary& s) {
   std::string t = head;
   for (const auto& [klass, c] : s.classes) {
     char line[64];
-    std::snprintf(line, sizeof line, "  %5d programs, first seed %-8u ", c.programs, c.first_seed);
+    std::snprintf(line, sizeof line, "  %5d programs, first seed %-10u ", c.programs, c.first_seed);
     t += line + klass + "\n";
   }
   return t;
