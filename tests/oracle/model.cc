@@ -32,7 +32,7 @@ void Model::push(Event e, const ClStatement& st) {
 bool Model::statement(const ClStatement& st) {
   const std::string& w = st.major;
   if (w == "FINI") return false;
-  if (w == "PARTNO" || w == "PPRINT" || w == "INSERT" || w == "END") return true;
+  if (w == "PARTNO" || w == "PPRINT" || w == "END") return true;  // INSERT: verbatim NC, unknown
   if (w == "GOTO" || w == "GODLTA" || w == "FROM" || w == "GOHOME" || w == "CIRCLE" || w == "RAPID")
     return dispatch_motion(st);
   return dispatch_state(st);
