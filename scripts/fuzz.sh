@@ -5,11 +5,18 @@
 # left in build-fuzz/artifacts/ and the fuzzer's log in build-fuzz/logs/.
 #
 # Usage: scripts/fuzz.sh [--round-trip] [SECONDS | --runs N] [TARGET...]
+#        scripts/fuzz.sh --oracle [SECONDS]
 #   targets: cl_post_fuzzer cldata_fuzzer machine_yaml_fuzzer nc_verify_fuzzer
 #   --runs N: run each target for N inputs instead of a time (e.g. --runs 1000000).
 #   --round-trip: cl_post_fuzzer also posts on every shipped machine and verifies the program
 #     against the CL; a clean post that does not verify stops the run (a bug in the post or in
 #     verify). Not in CI's smoke run: a hunt, run for as long as there is time.
+#   --oracle: the oracle's differential test (tests/oracle/, docs/cl-meaning.md) on fresh seeds
+#     for SECONDS (default 60): random lathe programs posted on linuxcnc-lathe, run through
+#     LinuxCNC's rs274 with block delete off and on, every event compared with the model of what
+#     the CL means. Builds build/ (Release, the tests' build) rather than build-fuzz/; prints the
+#     count, the classes of difference with their first seed, and the first program that differs
+#     in full (any other: build/tests/oracle_run --seed N). Exit status 1 when one differs.
 #
 # ASan keeps 5 frames of allocation stack and a 32 MB quarantine unless ASAN_OPTIONS says
 # otherwise: the same checks, with shorter allocation stacks in reports and a fifth of the memory.
@@ -19,6 +26,16 @@
 # ../shared/realcl/ when that folder is there (read in place, never copied into the tree).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = --oracle ]; then
+  seconds=${2:-60}
+  case "$seconds" in '' | *[!0-9]*) echo "fuzz.sh: --oracle takes a number of seconds" >&2; exit 2 ;; esac
+  build=${CLPOST_ORACLE_BUILD:-build}
+  scripts/deps.sh test
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" -j "$(nproc)" --target oracle_run
+  echo "== oracle: fresh seeds for $seconds s"
+  exec "$build/tests/oracle_run" --seconds "$seconds"
+fi
 if [ "${1:-}" = --round-trip ]; then
   export CLPOST_FUZZ_ROUND_TRIP=1
   shift

@@ -1,0 +1,241 @@
+#include "differential.h"
+
+#include <fcntl.h>
+#include <stdlib.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "canon.h"
+#include "generator.h"
+#include "interpreter/post.h"
+#include "machine/machine_loader.h"
+#include "model.h"
+
+namespace oracle {
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+struct Output {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+// rs274 crashes when two run at once: every rs274 on this machine runs under
+// /tmp/clpost-rs274.lock (tests/test_util.h) and /tmp/rs274.lock (by hand, `flock`), so the
+// oracle takes both, always in this order, for each run and no longer.
+class Rs274Lock {
+ public:
+  Rs274Lock() {
+    for (int i = 0; i < 2; ++i) {
+      fd_[i] = ::open(kPaths[i], O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+      if (fd_[i] >= 0) ::flock(fd_[i], LOCK_EX);
+    }
+  }
+  ~Rs274Lock() {
+    for (int i = 1; i >= 0; --i)
+      if (fd_[i] >= 0) ::close(fd_[i]);
+  }
+  Rs274Lock(const Rs274Lock&) = delete;
+  Rs274Lock& operator=(const Rs274Lock&) = delete;
+
+ private:
+  static constexpr const char* kPaths[2] = {"/tmp/rs274.lock", "/tmp/clpost-rs274.lock"};
+  int fd_[2] = {-1, -1};
+};
+
+// `rs274 -t table [-b] -g ngc` in `dir`, its output and errors collected in files there.
+Output rs274(const std::string& dir, const std::string& table, const std::string& ngc, bool bd) {
+  const std::string out = dir + "/canon.out", err = dir + "/canon.err";
+  Output r;
+  {
+    Rs274Lock lock;
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      const int in = ::open("/dev/null", O_RDONLY);
+      const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (in < 0 || o < 0 || e < 0 || ::chdir(dir.c_str()) != 0) ::_exit(126);
+      ::dup2(in, 0), ::dup2(o, 1), ::dup2(e, 2);
+      if (bd)
+        ::execlp("rs274", "rs274", "-t", table.c_str(), "-b", "-g", ngc.c_str(), nullptr);
+      else
+        ::execlp("rs274", "rs274", "-t", table.c_str(), "-g", ngc.c_str(), nullptr);
+      ::_exit(127);
+    }
+    int status = 0;
+    if (pid > 0 && ::waitpid(pid, &status, 0) == pid)
+      r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  r.out = read_text(out);
+  r.err = read_text(err);
+  return r;
+}
+
+// The first line of rs274's errors that says something ("executing" is its banner).
+std::string first_error(const std::string& err) {
+  std::istringstream in(err);
+  std::string line;
+  while (std::getline(in, line))
+    if (!line.empty() && line != "executing") return line;
+  return "no message";
+}
+
+// The message of clpost's first error.
+std::string first_post_error(const std::string& diags) {
+  const size_t at = diags.find("error: ");
+  if (at == std::string::npos) return "no message";
+  const size_t end = diags.find('\n', at);
+  return diags.substr(at + 7, end == std::string::npos ? std::string::npos : end - at - 7);
+}
+
+}  // namespace
+
+bool rs274_installed() {
+  return std::system("command -v rs274 >/dev/null 2>&1") == 0;
+}
+
+bool Differential::init(const std::string& source_dir, std::string& error) {
+  if (!clpost::load_machine("linuxcnc-lathe", {source_dir}, {}, machine_, error)) return false;
+  table_ = source_dir + "/tests/oracle/data/offsets.tbl";
+  std::string templ = (std::filesystem::temp_directory_path() / "clpost-oracle-XXXXXX").string();
+  if (!::mkdtemp(templ.data())) {
+    error = "cannot make a temporary directory";
+    return false;
+  }
+  dir_ = templ;
+  return true;
+}
+
+Differential::~Differential() {
+  if (!dir_.empty()) std::filesystem::remove_all(dir_);
+}
+
+Differential::Run Differential::run_rs274(const ProgramResult& r, bool block_delete) {
+  const Output o = rs274(dir_, table_, "oracle.ngc", block_delete);
+  Run run;
+  std::vector<Event> want;
+  for (size_t i = 0; i < r.model.size(); ++i)
+    if (!block_delete || !r.model[i].skipped) want.push_back(r.model[i]), run.to_model.push_back(i);
+  const std::vector<Event> got = canon_events(o.out);
+  run.c = compare_events(want, got, block_delete);
+  run.events = got.size();
+  run.exit_code = o.exit_code;
+  run.err = o.err;
+  // rs274 stopped where the events stop lining up: its error is the difference there.
+  if (o.exit_code == 0 || run.c.lined_up != got.size()) return run;
+  std::vector<Found>& f = run.c.found;
+  if (!f.empty() && f.back().d.field == "missing event") f.pop_back();
+  Difference d;
+  d.found = true;
+  d.index = got.size();
+  d.field = "rs274 error: " + without_numbers(first_error(o.err));
+  d.detail = "rs274 stops after " + std::to_string(got.size()) + " events";
+  d.have_model = got.size() < want.size();
+  if (d.have_model) d.model = want[got.size()];
+  d.klass = d.have_model ? class_of(d.field, d.model, block_delete) : d.field;
+  f.push_back({d, d.have_model ? class_of(d.field, d.model, false) : d.field});
+  return run;
+}
+
+namespace {
+
+// Whether the run with block delete off shows the difference `f` of the run with it on: at the
+// same CL event where both runs line up, else by its class.
+bool also_without_block_delete(const Found& f, size_t model_index, const Differential::Run& off,
+                               const std::vector<std::string>& classes) {
+  if (model_index >= off.c.lined_up)
+    return std::find(classes.begin(), classes.end(), f.plain) != classes.end();
+  return std::any_of(off.c.found.begin(), off.c.found.end(), [&](const Found& g) {
+    return g.d.index == model_index && g.d.field == f.d.field;
+  });
+}
+
+}  // namespace
+
+// Adds what `run` shows to `r`: every class once; with block delete on, only what the run with
+// it off does not show (the ranges' own differences).
+void Differential::add(ProgramResult& r, const Run& run, bool block_delete, const Run* off) {
+  if (run.c.found.empty() && run.exit_code == 0) return;
+  RunDifference d{block_delete, "", {}, ""};
+  for (const Found& f : run.c.found) {
+    const size_t at = f.d.index < run.to_model.size() ? run.to_model[f.d.index] : r.model.size();
+    if (block_delete && off && also_without_block_delete(f, at, *off, r.classes)) continue;
+    const std::string k = f.d.klass + (block_delete ? " (block delete on)" : "");
+    if (d.klass.empty()) d.klass = k, d.first = f.d;
+    if (std::find(r.classes.begin(), r.classes.end(), k) == r.classes.end()) r.classes.push_back(k);
+  }
+  if (d.klass.empty()) return;  // nothing of its own
+  if (run.exit_code != 0)
+    d.message = "rs274 exit status " + std::to_string(run.exit_code) + ": " + run.err;
+  if (!r.differs) r.klass = d.klass;
+  r.differs = true;
+  r.runs.push_back(std::move(d));
+}
+
+ProgramResult Differential::check(uint32_t seed) {
+  ProgramResult r;
+  r.seed = seed;
+  r.cl = generate_program(seed);
+  ModelResult m = model_events(r.cl, {machine_.default_units == "in", machine_.max_rpm});
+  r.model = std::move(m.events);
+  if (!m.error.empty()) {
+    r.differs = true;
+    r.klass = "the model cannot read the generated program";
+    r.classes = {r.klass};
+    r.message = m.error;
+    return r;
+  }
+  clpost::PostedText p = clpost::post_text(r.cl, machine_, "seed-" + std::to_string(seed) + ".cl");
+  r.nc = p.program;
+  if (p.diags.has_errors()) {
+    r.differs = true;
+    r.message = p.diags.render_all();
+    r.klass = "clpost error: " + without_numbers(first_post_error(r.message));
+    r.classes = {r.klass};
+    return r;
+  }
+  std::ofstream(dir_ + "/oracle.ngc", std::ios::binary) << r.nc;
+  const Run off = run_rs274(r, false);
+  add(r, off, false, nullptr);
+  if (r.nc.find("\n/") != std::string::npos) add(r, run_rs274(r, true), true, &off);
+  return r;
+}
+
+Summary Differential::run(uint32_t first, int count, double seconds) {
+  Summary s;
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  for (uint32_t seed = first;
+       (count <= 0 || s.programs < count) && (seconds <= 0 || elapsed() < seconds); ++seed) {
+    ProgramResult r = check(seed);
+    ++s.programs;
+    if (!r.differs) continue;
+    ++s.differing;
+    for (const std::string& k : r.classes)
+      if (s.classes[k].programs++ == 0) s.classes[k].first_seed = seed;
+    const auto first = s.classes.find(r.klass);
+    if (first != s.classes.end() && first->second.first_seed == seed)
+      s.firsts.push_back(std::move(r));
+  }
+  s.seconds = elapsed();
+  return s;
+}
+
+}  // namespace oracle

@@ -1,0 +1,82 @@
+#pragma once
+// The differential test: a generated CL program, posted by clpost on linuxcnc-lathe (through the
+// library, post_text()), run through LinuxCNC's interpreter (rs274) with block delete off and —
+// when the program has a block to delete — on, and rs274's events compared with the model's.
+// The only place where the oracle touches clpost.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "compare.h"
+#include "events.h"
+#include "machine/machine.h"
+
+namespace oracle {
+
+// The first difference of one rs274 run.
+struct RunDifference {
+  bool block_delete = false;
+  std::string klass;
+  Difference first;     // when the events differ
+  std::string message;  // rs274's errors
+};
+
+struct ProgramResult {
+  uint32_t seed = 0;
+  std::string cl, nc;
+  std::vector<Event> model;
+  bool differs = false;
+  std::string klass;                 // the class of its first difference
+  std::vector<std::string> classes;  // every class of difference it shows
+  std::string message;               // clpost's errors, or the model's
+  std::vector<RunDifference> runs;   // the runs that differ, block delete off first
+};
+
+struct ClassCount {
+  int programs = 0;
+  uint32_t first_seed = 0;
+};
+
+struct Summary {
+  int programs = 0, differing = 0;
+  double seconds = 0;
+  std::map<std::string, ClassCount> classes;
+  std::vector<ProgramResult> firsts;  // the first program whose first difference is of a class
+};
+
+class Differential {
+ public:
+  // `source_dir`: the source tree (machines, posts, tests/oracle/data/offsets.tbl). False (with
+  // the reason in `error`) when linuxcnc-lathe does not load.
+  bool init(const std::string& source_dir, std::string& error);
+  ~Differential();
+
+  ProgramResult check(uint32_t seed);
+  // Seeds first, first + 1, … until `count` programs or `seconds` have run (0: no limit).
+  Summary run(uint32_t first, int count, double seconds);
+
+  // One rs274 run of the program and its comparison with the model.
+  struct Run {
+    Comparison c;
+    std::vector<size_t> to_model;  // each compared event's index among all the model's events
+    size_t events = 0;             // rs274's
+    int exit_code = 0;
+    std::string err;
+  };
+
+ private:
+  Run run_rs274(const ProgramResult& r, bool block_delete);
+  void add(ProgramResult& r, const Run& run, bool block_delete, const Run* off);
+
+  clpost::Machine machine_;
+  std::string table_, dir_;
+};
+
+bool rs274_installed();
+// Everything needed to see a difference: seed, class, the CL and NC programs with line numbers,
+// the model's and rs274's events.
+std::string report(const ProgramResult& r);
+std::string summary_text(const Summary& s);
+
+}  // namespace oracle

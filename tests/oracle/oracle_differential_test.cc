@@ -1,0 +1,52 @@
+// The seeded set CI runs: 300 generated programs (seeds 1…300), each posted on linuxcnc-lathe
+// and run through rs274 with block delete off and on, every event compared with the model's.
+// It fails with the count of programs that differ, one line per class of difference, and the
+// first program of each class in full (reproduce one with `build/tests/oracle_run --seed N`;
+// longer runs on fresh seeds: `scripts/fuzz.sh --oracle SECONDS`).
+#include <gtest/gtest.h>
+
+#include "differential.h"
+
+namespace oracle {
+namespace {
+
+TEST(OracleDifferential, SeededProgramsMatchRs274) {
+  if (!rs274_installed())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  Differential d;
+  std::string error;
+  ASSERT_TRUE(d.init(CLPOST_SOURCE_DIR, error)) << error;
+  const Summary s = d.run(1, 300, 0);
+  std::printf("%s", summary_text(s).c_str());  // the count, the time and the classes
+  std::string firsts;
+  for (size_t i = 0; i < s.firsts.size() && i < 3; ++i) firsts += "\n" + report(s.firsts[i]);
+  EXPECT_EQ(s.programs, 300);
+  EXPECT_EQ(s.differing, 0) << s.differing << " of " << s.programs
+                            << " programs differ (classes above; build/tests/oracle_run --seed N "
+                               "shows any); the first ones:"
+                            << firsts;
+}
+
+// The oracle sees a wrong program: the model's events against rs274's for a program that cuts
+// the arc the other way (G2 for the CL's G3) and at another feed.
+TEST(OracleDifferential, AWrongProgramDiffers) {
+  std::vector<Event> model(1), rs274(1);
+  model[0].motion = rs274[0].motion = MotionKind::kArc;
+  model[0].rotation = 1, rs274[0].rotation = -1;
+  Difference d = compare_events(model, rs274).first;
+  ASSERT_TRUE(d.found);
+  EXPECT_EQ(d.field, "arc sense");
+  rs274[0].rotation = 1;
+  model[0].state.feed_given = rs274[0].state.feed_given = true;
+  model[0].state.feed = 0.2, rs274[0].state.feed = 5.08;
+  rs274[0].inch = true;
+  d = compare_events(model, rs274).first;
+  ASSERT_TRUE(d.found);
+  EXPECT_EQ(d.field, "feed");
+  EXPECT_EQ(d.detail, "model 0.2 mm/min, rs274 5.08 mm/min (G20)");
+  rs274[0].state.feed = 0.2 + 1e-3;  // within half the last digit of F in inches (0.00127 mm)
+  EXPECT_FALSE(compare_events(model, rs274).first.found);
+}
+
+}  // namespace
+}  // namespace oracle
