@@ -4,6 +4,8 @@
 // nothing is dropped silently.
 #include <fmt/format.h>
 
+#include <utility>
+
 #include <cmath>
 
 #include "interpreter/statement_table.h"
@@ -57,7 +59,8 @@ void end_skip_range(PostState& s, const Statement& st) {
   s.before_skip.reset();
   s.prog.forget_modal();
   const SpindleState& now = s.spindle;
-  if (now.on != spindle.on || now.css != spindle.css || now.value != spindle.value ||
+  const bool written = std::exchange(s.spindle_in_skip, false);  // perhaps skipped, then
+  if (written || now.on != spindle.on || now.css != spindle.css || now.value != spindle.value ||
       now.css_max_rpm != spindle.css_max_rpm || now.dir != spindle.dir) {
     if (now.on) {
       restate_spindle(s, st);
@@ -65,7 +68,11 @@ void end_skip_range(PostState& s, const Statement& st) {
       error(s, st, st.loc, template_error(s.m, r));
     }
   }
-  if (s.coolant != coolant) s.prog.coolant(s.coolant);
+  if (s.coolant != coolant) {
+    // One coolant at a time: the one before the range may still run (block delete on).
+    if (coolant != Coolant::kOff && s.coolant != Coolant::kOff) s.prog.coolant(Coolant::kOff);
+    s.prog.coolant(s.coolant);
+  }
 }
 
 }  // namespace

@@ -100,6 +100,7 @@ struct PostState {
   // OPSKIP/ON … OFF: the spindle and coolant before the range, which the blocks after it must
   // state again when a skipped block changed them.
   std::optional<std::pair<SpindleState, Coolant>> before_skip;
+  bool spindle_in_skip = false;  // a SPINDL/ inside the range wrote the spindle
   // The CL lines that last set the tool, the feed and the spindle (verify's messages).
   uint32_t tool_line = 0, feed_line = 0, spindle_line = 0;
   // The lathe frame: the CL axis of the radius. With cl.radial_axis: auto it is found at the

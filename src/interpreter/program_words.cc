@@ -60,6 +60,9 @@ void units_stmt(PostState& s, const Statement& st) {
   }
   if (u != s.units) convert_units(s, u);
   s.units = u;
+  // The control reads the surface speed in force in the new units (G96 S200 after G20 is 200
+  // ft/min): it is written again, converted.
+  if (s.started && s.spindle.on && s.spindle.css) restate_spindle(s, st);
 }
 
 // COOLNT/ with nothing after it: CATIA's tool change writes COOLNT/%MFG_COOLNT_SNTX, empty for a
@@ -101,6 +104,10 @@ void coolnt_stmt(PostState& s, const Statement& st) {
     warning(s, st, st.args[1].loc,
             fmt::format("COOLNT/{}: the words after it are not written ('{}')", a.text, rest));
   ensure_started(s);
+  // One coolant at a time (docs/cl-meaning.md): M7 after M8 would add mist to the flood on the
+  // control, so the one in force is turned off first.
+  if (c != s.coolant && c != Coolant::kOff && s.coolant != Coolant::kOff)
+    s.prog.coolant(Coolant::kOff);
   s.coolant = c;
   s.prog.coolant(c);
 }

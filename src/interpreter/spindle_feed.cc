@@ -207,6 +207,7 @@ void restate_spindle(PostState& s, const Statement& st) {
 void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_text) {
   if (!s.spindle_stopped) return;
   s.spindle_stopped = false;
+  if (s.before_skip) s.spindle_in_skip = true;  // a skipped block: stated again after the range
   restate_spindle(s, loc, line_text);
 }
 
@@ -218,6 +219,7 @@ void spindl_stmt(PostState& s, const Statement& st) {
   SpindleWords w;
   if (!read_spindle_words(s, st, w)) return;
   s.spindle_stopped = false;  // this statement says what the spindle does
+  if (s.before_skip) s.spindle_in_skip = true;
   surface_speed_unit(s, st, w);
   ensure_started(s);
   if (w.off) {
@@ -233,8 +235,10 @@ void spindl_stmt(PostState& s, const Statement& st) {
 // DELAY/t dwells t seconds, DELAY/REV,n n spindle revolutions. The machine's dwell template
 // asks for {seconds} or {revolutions}; one becomes the other through the spindle speed in RPM.
 void delay_stmt(PostState& s, const Statement& st) {
-  const bool in_revs = !st.args.empty() && st.args[0].is("REV");
-  const size_t i = in_revs ? 1 : 0;
+  // DELAY/REV,n and DELAY/n,REV (the order CATIA's tables write) are revolutions.
+  const bool rev_first = !st.args.empty() && st.args[0].is("REV");
+  const bool in_revs = rev_first || (st.args.size() == 2 && st.args[1].is("REV"));
+  const size_t i = rev_first ? 1 : 0;
   double v = 0;
   if (!number_arg(s, st, i, in_revs ? "a dwell in revolutions" : "a dwell time in seconds", v))
     return;
