@@ -77,6 +77,11 @@ struct Machine : ControlSettings {
                                    // ends at the cycle's Z)
   bool accept_pass_end = false;    // a fixed pass end may differ from the plan's (noted)
   double chamfer_angle = 45;       // the control's thread chamfer angle (a parameter of it)
+  // How the lead axis follows the spindle into and out of a synchronized cut (the law of
+  // planner/run_in.h): its servo time constant T1 in seconds, and the lead error a (a fraction
+  // of the lead) below which the lead counts as right.
+  double servo_time_constant = 0.033;
+  double lead_error = 0.01;
 
   // Holes on the spindle axis (CYCLE/DRILL …)
   bool rigid_tapping = false;   // CYCLE/TAP uses hole_tap_rigid

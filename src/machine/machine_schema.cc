@@ -168,6 +168,16 @@ constexpr KeySpec kEarlierKeys[] = {
     {"threading.accept_pass_end", kFacts, kBool, &M::accept_pass_end,
      "with `fixed`, accept that shallower flank passes end at Z rather than where the plan ends "
      "them; the NC says so in a comment"},
+    {"threading.servo_time_constant", kFacts, kNumber, &M::servo_time_constant,
+     "T1, the time constant of the feed axes' servo, seconds: the lead is not yet right over "
+     "the first δ1 = T1·V·(a − 1 − ln a) and no longer right over the last δ2 = T1·V of every "
+     "synchronized cut, V = rpm × lead / 60 (Fanuc Series 15i operator's manual, appendix "
+     "\"Incorrect threaded length\": usually 0.033 s; docs/threading.md section 15)",
+     0, 1},
+    {"threading.lead_error", kFacts, kNumber, &M::lead_error,
+     "a, the lead error that still counts as a right lead, a fraction of the lead (0.01: 1 %), "
+     "in the same law (Fanuc Series 15i, appendix \"Incorrect threaded length\")",
+     1e-4, 0.5},
 };
 
 // The keys after the controls' own (controls/registry_schema.h).
