@@ -14,6 +14,18 @@
 
 namespace clpost {
 
+double thread_rpm(const PostState& s, double radius) {
+  const SpindleState& sp = s.spindle;
+  if (!sp.on) return 0;
+  if (!sp.css) return sp.value;
+  // Constant surface speed cannot cut a thread: the rpm it gives at the thread's largest
+  // diameter, limited by the CSS speed limit.
+  const double diameter = 2 * std::max(std::abs(radius), 1e-9);
+  const double per_unit = s.units == LengthUnit::kInch ? 12.0 : 1000.0;  // ft/min or m/min
+  const double rpm = std::floor(sp.value * per_unit / (std::numbers::pi * diameter));
+  return std::max(std::min(rpm, sp.css_max_rpm), 1.0);
+}
+
 bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
   restart_stopped_spindle(s, at.loc, at.line);
   const SpindleState& sp = s.spindle;
@@ -26,12 +38,8 @@ bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
   t.rpm = sp.value;
   t.forced_rpm = false;
   if (!sp.css) return true;
-  // Constant surface speed cannot cut a thread: turn it into the rpm it gives at the thread's
-  // largest diameter, limited by the CSS speed limit, and restore CSS afterwards.
-  const double diameter = 2 * std::max(std::abs(radius), 1e-9);
-  const double per_unit = s.units == LengthUnit::kInch ? 12.0 : 1000.0;  // ft/min or m/min
-  double rpm = std::floor(sp.value * per_unit / (std::numbers::pi * diameter));
-  rpm = std::max(std::min(rpm, sp.css_max_rpm), 1.0);
+  // Turned into the rpm at the thread's largest diameter; CSS is restored afterwards.
+  const double rpm = thread_rpm(s, radius);
   ensure_started(s);
   s.prog.comment(
       fmt::format("constant surface speed {} off for the thread: {} rpm", sp.value, rpm));

@@ -19,6 +19,10 @@ struct CutSite {
 // turned into the rpm at the thread's largest radius `radius` and restored by
 // end_thread_spindle). False (reported at `at`) when the thread cannot be cut.
 bool begin_thread_spindle(PostState& s, double radius, CutSite at);
+// The spindle speed a thread whose largest radius is `radius` is cut at (the one
+// begin_thread_spindle sets): the rpm in force, or the one constant surface speed gives there;
+// 0 when the spindle is stopped.
+double thread_rpm(const PostState& s, double radius);
 void end_thread_spindle(PostState& s);
 
 // Whether the machine can feed the synchronized move `from` → `to` at `lead` × the thread's rpm:

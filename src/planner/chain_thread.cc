@@ -261,6 +261,7 @@ bool plan_chain_thread(const MultiThreadInput& in, const PlannerSettings& settin
       !check_infeed_crosses(in, g, r))
     return false;
   ThreadPlan plan = chain_header(in, settings, pitch, g);
+  set_run_in_out(plan, in.rpm, settings.lead_law);
   DepthLadder ladder;
   if (!make_depth_ladder(in.words, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))
     return false;

@@ -116,6 +116,7 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
   if (!check_pitch(pitch, on_site(in), in.on_word, settings, r)) return false;
   if (!make_infeed_direction(in, g, r)) return false;
   ThreadPlan plan = plan_header(in, settings, pitch, g);
+  set_run_in_out(plan, in.rpm, settings.lead_law);
 
   DepthLadder ladder;
   if (!make_depth_ladder(in.words, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))

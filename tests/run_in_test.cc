@@ -1,0 +1,69 @@
+// Run-in and run-out (docs/threading.md section 15) through the whole program: what the plan
+// says. The numbers are Fanuc's law, worked out by hand in each test.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "test_util.h"
+
+namespace clpost::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An M20x2 (lead 2) external thread from Z 2 to Z -30 at 1500 rpm, 4 cuts of `option`.
+std::string thread_cl(int option) {
+  return "UNITS/MM\nPITCH/2,MMPR\nSPINDL/RPM,1500,CLW\nRAPID\nGOTO/12,0,5\n"
+         "THREAD/ON,DEPTH,1.2,CUTS,4,OPTION," +
+         std::to_string(option) + "\nGOTO/10,0,2\nGOTO/10,0,-30\nTHREAD/OFF\nFINI\n";
+}
+
+// Runs clpost `args` on `cl` (written to t.cl in a fresh directory).
+RunResult clpost(const std::string& cl, const std::string& args) {
+  const std::string dir = temp_dir();
+  write_file(dir + "/t.cl", cl);
+  RunResult r = run("cd " + quote(dir) + " && " + quote(clpost_bin()) + " " + args + " t.cl");
+  fs::remove_all(dir);
+  return r;
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// V = 1500 x 2 / 60 = 50 mm/s; δ2 = T1·V = 0.033 x 50 = 1.65; δ1 = T1·V·(a − 1 − ln a) =
+// 1.65 x (0.01 − 1 + 4.605170) = 1.65 x 3.615170 = 5.965031 (5.97). OPTION 0 has no flank
+// shift: every pass runs Z 2 to -30, so the lead is right from 2 - 5.965031 = -3.965031 to
+// -30 + 1.65 = -28.35.
+TEST(RunIn, ThePlanGivesRunInAndRunOut) {
+  RunResult json = clpost(thread_cl(0), "plan --format json");
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_TRUE(
+      has(json.out,
+          "      \"rpm\": 1500,\n"
+          "      \"run_in\": 5.965031,\n"
+          "      \"run_out\": 1.65,\n"
+          "      \"run_in_added\": false,\n"
+          "      \"lead_right\": {\"axis\": \"z\", \"from\": -3.965031, \"to\": -28.35},\n"))
+      << json.out;
+  RunResult text = clpost(thread_cl(0), "plan");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_TRUE(has(text.out,
+                  "  run-in 5.965031, run-out 1.65 at 1500 rpm; lead right from Z -3.965031 to "
+                  "Z -28.35\n"))
+      << text.out;
+  EXPECT_EQ(json.err, "");  // 32 mm is long enough: no warning
+}
+
+// T1 0.066: both double, 11.930062 and 3.3; right from 2 - 11.930062 = -9.930062 to -26.7.
+TEST(RunIn, DoublingTheTimeConstantDoublesBoth) {
+  RunResult r = clpost(thread_cl(0), "plan --set threading.servo_time_constant=0.066");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out,
+                  "  run-in 11.930062, run-out 3.3 at 1500 rpm; lead right from Z -9.930062 to "
+                  "Z -26.7\n"))
+      << r.out;
+}
+
+}  // namespace
+}  // namespace clpost::test
