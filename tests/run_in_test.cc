@@ -1,5 +1,6 @@
 // Run-in and run-out (docs/threading.md section 15) through the whole program: what the plan
-// says. The numbers are Fanuc's law, worked out by hand in each test.
+// says and the warning when no length of a thread has the right lead. The numbers are Fanuc's law,
+// worked out by hand in each test.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -63,6 +64,27 @@ TEST(RunIn, DoublingTheTimeConstantDoublesBoth) {
                   "  run-in 11.930062, run-out 3.3 at 1500 rpm; lead right from Z -9.930062 to "
                   "Z -26.7\n"))
       << r.out;
+}
+
+// A 5 mm single-pass thread at 2000 rpm and a 3 mm lead: V = 100 mm/s, δ2 = 3.3, δ1 = 3.3 x
+// 3.615170 = 11.930062; together 15.230062 > 5. Below 5 / (0.033 x 3 / 60 x 4.615170) = 656.6
+// rpm they leave some of it: 656 rpm.
+TEST(RunIn, WarnsAtTheThreadWhenNoLengthHasTheRightLead) {
+  const std::string cl =
+      "UNITS/MM\nSPINDL/RPM,2000,CLW\nRAPID\nGOTO/12,0,5\nTHREAD/TURN,MMPR,3\nRAPID\n"
+      "GOTO/10,0,2\nGOTO/10,0,-3\nRAPID\nGOTO/12,0,5\nFINI\n";
+  RunResult r = clpost(cl, "-o t.nc");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.err,
+            "t.cl:5:1: warning: run-in 11.930062 and run-out 3.3 at 2000 rpm, lead 3, cover the "
+            "whole synchronized cut (5 long): no length of this thread has the right lead; 656 "
+            "rpm or less leaves one\n"
+            "  THREAD/TURN,MMPR,3\n"
+            "  ^\n");
+  // At 600 rpm: δ1 3.579018, δ2 0.99, 4.569018 < 5: no warning.
+  std::string slow = cl;
+  slow.replace(slow.find("2000"), 4, "600");
+  EXPECT_EQ(clpost(slow, "-o t.nc").err, "");
 }
 
 }  // namespace

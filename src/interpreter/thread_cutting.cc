@@ -92,6 +92,11 @@ bool check_thread_feed(PostState& s, Vec2 from, Vec2 to, double lead, CutSite at
   return true;
 }
 
+void warn_no_right_lead(PostState& s, const ThreadPlan& plan, CutSite at) {
+  const std::string why = no_right_lead_warning(plan, s.thread.settings.lead_law);
+  if (!why.empty()) s.diags.warning(at.loc, at.line, why);
+}
+
 void thread_planned(PostState& s, const ThreadPlan& plan) {
   ++s.stats.threads;
   if (s.on_thread) s.on_thread(plan);
@@ -114,6 +119,7 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
   if (fits && plan.pullout && !plan.pullout_linear && !plan.passes.empty())
     fits = check_thread_feed(s, plan.passes[0].to, plan.passes[0].pullout_end, plan.lead, at);
   if (!fits) return;
+  warn_no_right_lead(s, plan, at);
   thread_planned(s, plan);
   s.stats.passes += plan.passes.size();
   s.prog.comment(fmt::format("thread line {}: {} passes, pitch {:.6g}, depth {:.6g}", plan.loc.line,

@@ -37,6 +37,8 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines);
 // limits. False (reported at `at`) when it cannot be cut.
 bool cut_path_move(PostState& s, const ThreadPlan& plan, const ThreadPass& pass, double travel,
                    CutSite at);
+// The warning at `at` when no length of the thread has the right lead (planner/run_in.h).
+void warn_no_right_lead(PostState& s, const ThreadPlan& plan, CutSite at);
 // A planned thread is done: counted and handed to the on_thread callback.
 void thread_planned(PostState& s, const ThreadPlan& plan);
 

@@ -117,6 +117,7 @@ void close_single(PostState& s) {
   if (!begin_thread_spindle(s, std::max(std::abs(plan.p1.x), std::abs(plan.p2.x)), at)) return;
   if (cut_path_move(s, plan, plan.passes.front(), 0, at)) {
     set_run_in_out(plan, s.thread.rpm, t.settings.lead_law);
+    warn_no_right_lead(s, plan, at);
     thread_planned(s, plan);
     record_exit(s, plan.loc.line, plan.passes.front().to);
   }
@@ -157,6 +158,7 @@ void close_couple(PostState& s) {
   ThreadPlan plan;
   if (!t.couple.finish(plan, s.diags)) return;
   set_run_in_out(plan, s.thread.rpm, t.settings.lead_law);
+  warn_no_right_lead(s, plan, CutSite{t.loc, t.lines.text(t.loc.line)});
   thread_planned(s, plan);
   if (!plan.path.empty()) record_exit(s, plan.loc.line, plan.path.back());
   end_thread_spindle(s);
