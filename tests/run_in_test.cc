@@ -1,6 +1,6 @@
 // Run-in and run-out (docs/threading.md section 15) through the whole program: what the plan
-// says and the warning when no length of a thread has the right lead. The numbers are Fanuc's law,
-// worked out by hand in each test.
+// says, the warning when no length of a thread has the right lead, and threading.run_in `auto`
+// in the cycles' words. The numbers are Fanuc's law, worked out by hand in each test.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -85,6 +85,30 @@ TEST(RunIn, WarnsAtTheThreadWhenNoLengthHasTheRightLead) {
   std::string slow = cl;
   slow.replace(slow.find("2000"), 4, "600");
   EXPECT_EQ(clpost(slow, "-o t.nc").err, "");
+}
+
+// Without a cycle word (generic-lathe's emulation) `auto` starts every pass δ1 before the CL's
+// start: pass 1 (OPTION 0, depth 1.2 x 1 x 8 / 20 = 0.48) cuts from Z 2 + 5.965031 = 7.965031.
+TEST(RunIn, AutoStartsEveryPassBeforeTheThreadOnEveryMachine) {
+  RunResult plan = clpost(thread_cl(0), "plan --set threading.run_in=auto");
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_TRUE(has(plan.out, "(X 9.52, Z 7.965031) -> (X 9.52, Z -30)")) << plan.out;
+  EXPECT_TRUE(has(plan.out,
+                  "  run-in 5.965031 (before the thread start), run-out 1.65 at 1500 rpm; lead "
+                  "right from Z 2 to Z -28.35\n"))
+      << plan.out;
+  RunResult nc = clpost(thread_cl(0), "--set threading.run_in=auto --verify -o -");
+  ASSERT_EQ(nc.exit_code, 0) << nc.err;
+  EXPECT_TRUE(has(nc.out, "Z7.965")) << nc.out;
+}
+
+TEST(RunIn, RunInIsANumberOrAuto) {
+  RunResult r = clpost(thread_cl(0), "--set threading.run_in=atuo -o -");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(has(r.err,
+                  "'threading.run_in' must be a number or auto, not 'atuo' (did you mean "
+                  "'auto'?)"))
+      << r.err;
 }
 
 }  // namespace

@@ -20,6 +20,7 @@ struct PlannerSettings {
   bool start_angle_word = false;   // multi-start by spindle start angle instead of offset
   bool variable_lead = false;      // the control can cut INCR/DECR (G34/G35)
   LeadLaw lead_law;                // threading.servo_time_constant, threading.lead_error
+  bool add_run_in = false;         // threading.run_in auto: passes begin the run-in before P1
   std::string machine_name;        // for diagnostics
 };
 

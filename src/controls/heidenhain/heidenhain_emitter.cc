@@ -87,7 +87,7 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
   w.d = 1;
   w.c = 0;
   w.bd = plan.side == ThreadSide::kInternal ? 1 : 0;
-  w.b = as_read(m, "B", m.run_in);
+  w.b = as_read(m, "B", m.run_in.value);
   w.p = 0;
   w.k = 0;
   w.from = {as_read(m, "X", dm * plan.p1.x) / dm, as_read(m, "Z", plan.p1.z)};

@@ -177,7 +177,7 @@ std::string runout_words(const ThreadPlan& plan, const Machine& m, const Cycle99
     rop = along;
   }
   w.rop = as_read(m, kDepthFormat, rop);
-  w.app = as_read(m, kDepthFormat, m.run_in);
+  w.app = as_read(m, kDepthFormat, m.run_in.value);
   return {};
 }
 
@@ -189,7 +189,7 @@ std::string end_point_words(const Machine& m, const Cycle99Frame& f, const Threa
       dot(deepest.to - f.p1, f.t) - (deepest.depth / f.cosv) * dot(f.a_in, f.t) + rop;
   if (w.app >= end_t)
     return fmt::format("threading.run_in {} is not shorter than the thread ({})",
-                       num_text(m.run_in), num_text(end_t));
+                       num_text(m.run_in.value), num_text(end_t));
   const Vec2 sp = f.p1 + w.app * f.t, fp = f.p1 + end_t * f.t;
   w.spl = as_read(m, "Z", sp.z);
   w.dm1 = as_read(m, "X", 2 * sp.x);
