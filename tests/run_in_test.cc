@@ -87,6 +87,50 @@ TEST(RunIn, WarnsAtTheThreadWhenNoLengthHasTheRightLead) {
   EXPECT_EQ(clpost(slow, "-o t.nc").err, "");
 }
 
+// OPTION 3 (flank infeed, IANG 30) on sinumerik-840d. With `auto` the CL's start Z 2 stays SPL
+// and the cut begins APP = δ1 = 5.965031 (5.965 at cycle99_depth's 4 decimals) before it; by
+// default APP is 0 as before. VRT = 2 sqrt(3) / 2 = 1.7321, the default return height.
+TEST(RunIn, AutoWritesTheRunInAsCycle99App) {
+  RunResult r = clpost(thread_cl(3), "-m sinumerik-840d --set threading.run_in=auto --verify -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out,
+                  "CYCLE99(2, 20, -30, 20, 5.965, 0, 1.2, 0, 30, 0, 4, 0, 2, 300101, 0, 1.7321, "
+                  "0, 0, 0, 0, 0, 0, 1, \"\", \"\", \"\", 0)\n"))
+      << r.out;
+  RunResult d = clpost(thread_cl(3), "-m sinumerik-840d -o -");
+  EXPECT_TRUE(has(d.out,
+                  "CYCLE99(2, 20, -30, 20, 0, 0, 1.2, 0, 30, 0, 4, 0, 2, 300101, 0, 1.7321, 0, 0, "
+                  "0, 0, 0, 0, 1, \"\", \"\", \"\", 0)\n"))
+      << d.out;
+}
+
+// G31 on heidenhain-pilot: `auto` keeps the contour's start at the CL's Z 2 with B = δ1 5.965
+// before it, and ends the contour δ2 = 1.65 before Z -30 (Z -28.35) with the run-out P1.65 after
+// it: the control cuts the same passes, which verify checks.
+TEST(RunIn, AutoWritesRunInAndRunOutAsG31BAndP) {
+  RunResult r =
+      clpost(thread_cl(3), "-m heidenhain-pilot --set threading.run_in=auto --verify -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out,
+                  "G31 F2. U1.2 IC4 V1 H1 A30. D1 Q0 C0. BD0 B5.965 P1.65 K0.\n"
+                  "N 50 G0 X20. Z2.\n"
+                  "N 60 G1 X20. Z-28.35\n"
+                  "N 70 G80\n"))
+      << r.out;
+}
+
+// A number is a run-in taken from the start of the CL's thread: the contour starts B = 2 after
+// Z 2, at Z 0, so the cut still starts at Z 2 (before, G31 fell back to its G33 loop).
+TEST(RunIn, ANumberIsTakenFromTheCLsThreadOnG31) {
+  RunResult r = clpost(thread_cl(3), "-m heidenhain-pilot --set threading.run_in=2 --verify -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(has(r.out,
+                  "G31 F2. U1.2 IC4 V1 H1 A30. D1 Q0 C0. BD0 B2. P0. K0.\n"
+                  "N 50 G0 X20. Z0.\n"
+                  "N 60 G1 X20. Z-30.\n"))
+      << r.out;
+}
+
 // Without a cycle word (generic-lathe's emulation) `auto` starts every pass δ1 before the CL's
 // start: pass 1 (OPTION 0, depth 1.2 x 1 x 8 / 20 = 0.48) cuts from Z 2 + 5.965031 = 7.965031.
 TEST(RunIn, AutoStartsEveryPassBeforeTheThreadOnEveryMachine) {
