@@ -146,6 +146,30 @@ TEST(RunIn, AutoStartsEveryPassBeforeTheThreadOnEveryMachine) {
   EXPECT_TRUE(has(nc.out, "Z7.965")) << nc.out;
 }
 
+// LinuxCNC's G76 has no run-in word: with `auto` the drive line starts where the cuts do, Z 2 +
+// 5.965031 = 7.96503 (its start Z), and LinuxCNC's own interpreter cuts pass 1 (OPTION 3, depth
+// 0.3, shifted 0.3 tan 30 = 0.173205 in the cutting direction) from Z 7.965031 - 0.173205 =
+// 7.791826 to -30 - 1.2 tan 30 + 0.173205 = -29.480385, at radius 10 - 0.3 = 9.7.
+TEST(RunIn, AutoOnLinuxcncG76AsRs274CutsIt) {
+  if (!rs274_available()) GTEST_SKIP() << "rs274 not installed (linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir();
+  write_file(dir + "/t.cl", thread_cl(3));
+  RunResult post = run("cd " + quote(dir) + " && " + quote(clpost_bin()) +
+                       " -m linuxcnc-lathe --set threading.run_in=auto --verify -o t.ngc t.cl");
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  const std::string nc = read_file(dir + "/t.ngc");
+  EXPECT_TRUE(has(nc, "X23.4641 Z7.96503\n")) << nc;
+  EXPECT_TRUE(has(nc, "G76 P2. Z-30. I-3.4641 J0.6 K2.4 R1 Q30. H0\n")) << nc;
+  RunResult r = run_rs274(dir, "t.ngc");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<CanonSegment> cuts = rs274_synced_moves(r.out);
+  ASSERT_EQ(cuts.size(), 4u) << r.out;
+  EXPECT_NEAR(cuts[0].from.z, 7.791826, 0.001);
+  EXPECT_NEAR(cuts[0].to.z, -29.480385, 0.001);
+  EXPECT_NEAR(cuts[0].from.x, 9.7, 0.001);
+  fs::remove_all(dir);
+}
+
 TEST(RunIn, RunInIsANumberOrAuto) {
   RunResult r = clpost(thread_cl(0), "--set threading.run_in=atuo -o -");
   EXPECT_EQ(r.exit_code, 2);
