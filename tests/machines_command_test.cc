@@ -44,10 +44,10 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
             ":61"})
     EXPECT_TRUE(has_line(lines, l)) << l << "\n" << r.out;
-  // The heading, 58 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
+  // The heading, 60 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
   // g76_depth g76_angle g76_taper) of 5 keys, 19 codes and 17 templates (9, 6 hole cycles,
   // auxfun and prefun).
-  EXPECT_EQ(lines.size(), 1u + 58 + 12 * 5 + 19 + 17);
+  EXPECT_EQ(lines.size(), 1u + 60 + 12 * 5 + 19 + 17);
 }
 
 TEST(MachinesShow, WithoutOriginAndAnUnknownMachine) {

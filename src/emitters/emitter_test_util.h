@@ -23,15 +23,17 @@ inline Machine shipped_machine(const std::string& name, std::vector<std::string>
 }
 
 // THREAD/ON `on` (line 2) with the tool at `p0` and the GOTOs `gotos`, planned for `m`. The
-// approach is fed (the CL had a feed in force), as in the shipped samples.
+// approach is fed (the CL had a feed in force), as in the shipped samples; the spindle turns at
+// `rpm` (0: not known, no run-in or run-out).
 inline ThreadPlan plan_for(const Machine& m, const std::string& on, Vec2 p0,
                            const std::vector<Vec2>& gotos, bool feed_approach = true,
-                           LengthUnit units = LengthUnit::kMm) {
+                           LengthUnit units = LengthUnit::kMm, double rpm = 0) {
   TestStatement st(on, 2);
   Diagnostics d("t.cl");
   MultiCase c = make_multi(st, units, p0, gotos, d);
   EXPECT_TRUE(c.parsed) << d.render_all();
   c.in.feed_approach = feed_approach;
+  c.in.rpm = rpm;
   PlannerSettings s = planner_settings(m);
   ThreadPlan plan;
   const bool ok = c.in.words.chain.set ? plan_chain_thread(c.in, s, plan, d)

@@ -14,6 +14,18 @@
 
 namespace clpost {
 
+double thread_rpm(const PostState& s, double radius) {
+  const SpindleState& sp = s.spindle;
+  if (!sp.on) return 0;
+  if (!sp.css) return sp.value;
+  // Constant surface speed cannot cut a thread: the rpm it gives at the thread's largest
+  // diameter, limited by the CSS speed limit.
+  const double diameter = 2 * std::max(std::abs(radius), 1e-9);
+  const double per_unit = s.units == LengthUnit::kInch ? 12.0 : 1000.0;  // ft/min or m/min
+  const double rpm = std::floor(sp.value * per_unit / (std::numbers::pi * diameter));
+  return std::max(std::min(rpm, sp.css_max_rpm), 1.0);
+}
+
 bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
   restart_stopped_spindle(s, at.loc, at.line);
   const SpindleState& sp = s.spindle;
@@ -26,12 +38,8 @@ bool begin_thread_spindle(PostState& s, double radius, CutSite at) {
   t.rpm = sp.value;
   t.forced_rpm = false;
   if (!sp.css) return true;
-  // Constant surface speed cannot cut a thread: turn it into the rpm it gives at the thread's
-  // largest diameter, limited by the CSS speed limit, and restore CSS afterwards.
-  const double diameter = 2 * std::max(std::abs(radius), 1e-9);
-  const double per_unit = s.units == LengthUnit::kInch ? 12.0 : 1000.0;  // ft/min or m/min
-  double rpm = std::floor(sp.value * per_unit / (std::numbers::pi * diameter));
-  rpm = std::max(std::min(rpm, sp.css_max_rpm), 1.0);
+  // Turned into the rpm at the thread's largest diameter; CSS is restored afterwards.
+  const double rpm = thread_rpm(s, radius);
   ensure_started(s);
   s.prog.comment(
       fmt::format("constant surface speed {} off for the thread: {} rpm", sp.value, rpm));
@@ -84,6 +92,11 @@ bool check_thread_feed(PostState& s, Vec2 from, Vec2 to, double lead, CutSite at
   return true;
 }
 
+void warn_no_right_lead(PostState& s, const ThreadPlan& plan, CutSite at) {
+  const std::string why = no_right_lead_warning(plan, s.thread.settings.lead_law);
+  if (!why.empty()) s.diags.warning(at.loc, at.line, why);
+}
+
 void thread_planned(PostState& s, const ThreadPlan& plan) {
   ++s.stats.threads;
   if (s.on_thread) s.on_thread(plan);
@@ -106,6 +119,7 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
   if (fits && plan.pullout && !plan.pullout_linear && !plan.passes.empty())
     fits = check_thread_feed(s, plan.passes[0].to, plan.passes[0].pullout_end, plan.lead, at);
   if (!fits) return;
+  warn_no_right_lead(s, plan, at);
   thread_planned(s, plan);
   s.stats.passes += plan.passes.size();
   s.prog.comment(fmt::format("thread line {}: {} passes, pitch {:.6g}, depth {:.6g}", plan.loc.line,

@@ -19,6 +19,10 @@ struct CutSite {
 // turned into the rpm at the thread's largest radius `radius` and restored by
 // end_thread_spindle). False (reported at `at`) when the thread cannot be cut.
 bool begin_thread_spindle(PostState& s, double radius, CutSite at);
+// The spindle speed a thread whose largest radius is `radius` is cut at (the one
+// begin_thread_spindle sets): the rpm in force, or the one constant surface speed gives there;
+// 0 when the spindle is stopped.
+double thread_rpm(const PostState& s, double radius);
 void end_thread_spindle(PostState& s);
 
 // Whether the machine can feed the synchronized move `from` → `to` at `lead` × the thread's rpm:
@@ -33,6 +37,8 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines);
 // limits. False (reported at `at`) when it cannot be cut.
 bool cut_path_move(PostState& s, const ThreadPlan& plan, const ThreadPass& pass, double travel,
                    CutSite at);
+// The warning at `at` when no length of the thread has the right lead (planner/run_in.h).
+void warn_no_right_lead(PostState& s, const ThreadPlan& plan, CutSite at);
 // A planned thread is done: counted and handed to the on_thread callback.
 void thread_planned(PostState& s, const ThreadPlan& plan);
 

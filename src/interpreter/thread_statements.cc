@@ -4,6 +4,7 @@
 // and thread_cutting.cc writes the plan.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "interpreter/statement_table.h"
@@ -49,12 +50,22 @@ void open_multi(PostState& s, const Statement& st, size_t first) {
   s.rapid_next = false;
 }
 
+// The largest radius of a THREAD/ON thread's line (a chain: of its contour), as
+// cut_multi_thread takes it for the spindle speed.
+double thread_radius(const MultiThreadInput& in) {
+  const size_t n = in.words.chain.set ? in.gotos.size() : std::min<size_t>(in.gotos.size(), 2);
+  double radius = 0;
+  for (size_t j = 0; j < n; ++j) radius = std::max(radius, std::abs(in.gotos[j].point.x));
+  return radius;
+}
+
 void close_multi(PostState& s, const Statement& st) {
   ThreadSequence& t = s.thread;
   t.kind = Kind::kNone;
   t.multi.off_loc = st.loc;
   ThreadPlan plan;
   if (t.failed) return;
+  t.multi.rpm = thread_rpm(s, thread_radius(t.multi));
   const bool planned = t.multi.words.chain.set
                            ? plan_chain_thread(t.multi, t.settings, plan, s.diags)
                            : plan_multi_thread(t.multi, t.settings, plan, s.diags);
@@ -105,6 +116,8 @@ void close_single(PostState& s) {
   ensure_started(s);
   if (!begin_thread_spindle(s, std::max(std::abs(plan.p1.x), std::abs(plan.p2.x)), at)) return;
   if (cut_path_move(s, plan, plan.passes.front(), 0, at)) {
+    set_run_in_out(plan, s.thread.rpm, t.settings.lead_law);
+    warn_no_right_lead(s, plan, at);
     thread_planned(s, plan);
     record_exit(s, plan.loc.line, plan.passes.front().to);
   }
@@ -144,6 +157,8 @@ void close_couple(PostState& s) {
   if (t.failed) return;
   ThreadPlan plan;
   if (!t.couple.finish(plan, s.diags)) return;
+  set_run_in_out(plan, s.thread.rpm, t.settings.lead_law);
+  warn_no_right_lead(s, plan, CutSite{t.loc, t.lines.text(t.loc.line)});
   thread_planned(s, plan);
   if (!plan.path.empty()) record_exit(s, plan.loc.line, plan.path.back());
   end_thread_spindle(s);

@@ -30,6 +30,12 @@ enum class ThreadLoop : uint8_t { kG33, kG92 };
 // non-axial axes that is not constantly 0).
 enum class ClAxis : uint8_t { kX, kY, kZ, kAuto };
 
+// A length a machine file gives as a number, or as `auto`: clpost works it out.
+struct LengthOrAuto {
+  bool automatic = false;
+  double value = 0;  // when not automatic
+};
+
 struct Machine : ControlSettings {
   std::string name;         // machine file stem, e.g. "generic-lathe"
   std::string post;         // the post (dialect) it extends, e.g. "iso-lathe"
@@ -68,7 +74,7 @@ struct Machine : ControlSettings {
   ThreadLoop thread_loop = ThreadLoop::kG33;
   std::string thread_lead_address_x;  // lead word when the X travel dominates ("" = same)
   std::string tpi_address;            // threads-per-inch word used when the CL gave TPI ("" none)
-  double run_in = 0;                  // run-in length before the thread start (cycle words)
+  LengthOrAuto run_in;                // threading.run_in: the cycle words' run-in, or auto
   bool extra_spring_passes = false;   // a cycle may add full-depth passes the plan lacks
   double thread_tolerance = 0;        // largest cut difference that counts as exact, CL units
                                       // (0 = one least increment of the Z format)
@@ -77,6 +83,11 @@ struct Machine : ControlSettings {
                                    // ends at the cycle's Z)
   bool accept_pass_end = false;    // a fixed pass end may differ from the plan's (noted)
   double chamfer_angle = 45;       // the control's thread chamfer angle (a parameter of it)
+  // How the lead axis follows the spindle into and out of a synchronized cut (the law of
+  // planner/run_in.h): its servo time constant T1 in seconds, and the lead error a (a fraction
+  // of the lead) below which the lead counts as right.
+  double servo_time_constant = 0.033;
+  double lead_error = 0.01;
 
   // Holes on the spindle axis (CYCLE/DRILL …)
   bool rigid_tapping = false;   // CYCLE/TAP uses hole_tap_rigid

@@ -100,6 +100,28 @@ bool get_number(Ctx& c, const YAML::Node& n, std::string_view key, double lo, do
   return true;
 }
 
+// A number in [lo, hi] or the word `auto`.
+bool get_number_or_auto(Ctx& c, const YAML::Node& n, std::string_view key, double lo, double hi,
+                        LengthOrAuto& out) {
+  if (n.IsScalar() && n.Scalar() == "auto") return out = {true, 0}, true;
+  double v = 0;
+  bool number = n.IsScalar();
+  if (number) {
+    const std::string& s = n.Scalar();
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    number = ec == std::errc() && p == s.data() + s.size();
+  }
+  if (!number) {
+    const std::string text = n.IsScalar() ? n.Scalar() : "a collection";
+    c.error(n, fmt::format("'{}' must be a number or auto, not '{}'{}", key, text,
+                           did_you_mean(text, std::vector<std::string_view>{"auto"})));
+    return false;
+  }
+  if (!get_number(c, n, key, lo, hi, v)) return false;
+  out = {false, v};
+  return true;
+}
+
 bool get_int(Ctx& c, const YAML::Node& n, std::string_view key, double lo, double hi, int& out) {
   double v = 0;
   if (!get_number(c, n, key, lo, hi, v)) return false;
@@ -156,6 +178,8 @@ bool set_member(Ctx& c, const YAML::Node& n, std::string_view path, KeyType type
     return get_list(c, n, path, v);
   } else if constexpr (std::is_same_v<V, double>) {
     return get_number(c, n, path, lo, hi, v);
+  } else if constexpr (std::is_same_v<V, LengthOrAuto>) {
+    return get_number_or_auto(c, n, path, lo, hi, v);
   } else if constexpr (std::is_same_v<V, int>) {
     return get_int(c, n, path, lo, hi, v);
   } else {

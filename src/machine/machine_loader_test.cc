@@ -223,11 +223,25 @@ TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
   ASSERT_NE(m.control, nullptr);
   EXPECT_EQ(m.control->cycle, "fanuc_g76");
   EXPECT_EQ(m.thread_loop, ThreadLoop::kG92);
-  EXPECT_DOUBLE_EQ(m.run_in, 2.5);
+  EXPECT_DOUBLE_EQ(m.run_in.value, 2.5);
   EXPECT_DOUBLE_EQ(m.thread_tolerance, 0.005);
   EXPECT_TRUE(m.extra_spring_passes);
   EXPECT_EQ(m.tpi_address, "E");
   EXPECT_EQ(m.thread_lead_address_x, "I");
+  // run_in is a number (above) or auto; anything else is an error naming both.
+  EXPECT_FALSE(m.run_in.automatic);
+  EXPECT_TRUE(apply_machine_yaml("m.yaml", "threading: {run_in: auto}\n", false, m, errors))
+      << errors;
+  EXPECT_TRUE(m.run_in.automatic);
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading: {run_in: -1}\n", false, m, errors));
+  EXPECT_NE(errors.find("m.yaml:1:21: error: 'threading.run_in' is -1 but must be between 0 and "
+                        "1000"),
+            std::string::npos)
+      << errors;
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading: {run_in: [1]}\n", false, m, errors));
+  EXPECT_NE(errors.find("'threading.run_in' must be a number or auto, not 'a collection'"),
+            std::string::npos)
+      << errors;
 }
 
 // Issue 14: every name under codes, formats and templates is declared; an unknown one is an

@@ -157,8 +157,12 @@ constexpr KeySpec kEarlierKeys[] = {
      "that word (`SF=` on Siemens)"},
     {"threading.variable_lead", kThr, kBool, &M::variable_lead,
      "the control cuts INCR/DECR leads (G34/G35); otherwise such a CL thread is an error"},
-    {"threading.run_in", kThr, kNumber, &M::run_in,
-     "run-in written into cycle words that have one (CYCLE99 `APP`, G31 `B`)", 0, 1000},
+    {"threading.run_in", kThr, kNumberOrAuto, &M::run_in,
+     "run-in written into cycle words that have one (CYCLE99 `APP`, G31 `B`), taken from the "
+     "start of the CL's thread; `auto`: the run-in δ1 of the servo law (docs/threading.md "
+     "section 15) is added before the CL's start in every output, and written there (APP, "
+     "CYCLE98 `APP`, G31 `B`; G31 `P` gets the run-out δ2)",
+     0, 1000},
     {"threading.chamfer_angle", kFacts, kNumber, &M::chamfer_angle,
      "the control's thread chamfer angle, degrees (Fanuc parameter 5131, Haas setting 96)", 1, 89},
     {"threading.cycle_pass_end", kFacts, kChoice, &M::cycle_shifted_end,
@@ -168,6 +172,16 @@ constexpr KeySpec kEarlierKeys[] = {
     {"threading.accept_pass_end", kFacts, kBool, &M::accept_pass_end,
      "with `fixed`, accept that shallower flank passes end at Z rather than where the plan ends "
      "them; the NC says so in a comment"},
+    {"threading.servo_time_constant", kFacts, kNumber, &M::servo_time_constant,
+     "T1, the time constant of the feed axes' servo, seconds: the lead is not yet right over "
+     "the first δ1 = T1·V·(a − 1 − ln a) and no longer right over the last δ2 = T1·V of every "
+     "synchronized cut, V = rpm × lead / 60 (Fanuc Series 15i operator's manual, appendix "
+     "\"Incorrect threaded length\": usually 0.033 s; docs/threading.md section 15)",
+     0, 1},
+    {"threading.lead_error", kFacts, kNumber, &M::lead_error,
+     "a, the lead error that still counts as a right lead, a fraction of the lead (0.01: 1 %), "
+     "in the same law (Fanuc Series 15i, appendix \"Incorrect threaded length\")",
+     1e-4, 0.5},
 };
 
 // The keys after the controls' own (controls/registry_schema.h).
@@ -375,6 +389,8 @@ std::string key_value_text(const KeySpec& k, const Machine& m) {
           return fmt::format("{}", v);
         } else if constexpr (std::is_same_v<V, const Control*>) {
           return std::string(v != nullptr ? v->cycle : "none");
+        } else if constexpr (std::is_same_v<V, LengthOrAuto>) {
+          return v.automatic ? std::string("auto") : number_text(v.value);
         } else {  // an enum: the choice of its index
           const size_t i = static_cast<size_t>(v);
           return i < k.choices.size() ? std::string(k.choices[i].name) : std::string("?");

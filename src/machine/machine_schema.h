@@ -14,7 +14,8 @@
 
 namespace clpost {
 
-enum class KeyType : uint8_t { kString, kBool, kNumber, kInt, kChoice, kList };
+// kNumberOrAuto: a number in the range, or the word `auto` (a LengthOrAuto member).
+enum class KeyType : uint8_t { kString, kBool, kNumber, kInt, kChoice, kList, kNumberOrAuto };
 
 // One value a choice key may take. `stored` is what a string field holds for it ("\r\n" for
 // crlf); enum and bool fields hold the choice's index.
@@ -28,7 +29,7 @@ using MachineMember =
     std::variant<std::string Machine::*, bool Machine::*, double Machine::*, int Machine::*,
                  std::vector<std::string> Machine::*, ThreadStrategy Machine::*,
                  ThreadFallback Machine::*, const Control * Machine::*, ThreadLoop Machine::*,
-                 ClAxis Machine::*>;
+                 ClAxis Machine::*, LengthOrAuto Machine::*>;
 using FormatMember =
     std::variant<int NumberFormat::*, bool NumberFormat::*, double NumberFormat::*>;
 
@@ -38,7 +39,7 @@ struct KeySpec {
   KeyType type;
   MachineMember member;
   std::string_view doc;
-  double lo = 0, hi = 0;  // kNumber, kInt: the accepted range, both ends included
+  double lo = 0, hi = 0;  // kNumber, kInt, kNumberOrAuto: the accepted range, both ends included
   std::span<const Choice> choices = {};
   bool machine_only = false;  // `extends`
 };

@@ -61,11 +61,13 @@ TEST(MachineSchema, ValuesAsAMachineFileWritesThem) {
   m.thread_strategy = ThreadStrategy::kLoop;
   m.line_ending = "\r\n";
   m.cycle_shifted_end = true;
-  m.run_in = 2.5;
+  m.run_in.value = 2.5;
   EXPECT_EQ(key_value_text(*find_key("threading.strategy"), m), "loop");
   EXPECT_EQ(key_value_text(*find_key("output.line_ending"), m), "crlf");
   EXPECT_EQ(key_value_text(*find_key("threading.cycle_pass_end"), m), "shifted");
   EXPECT_EQ(key_value_text(*find_key("threading.run_in"), m), "2.5");
+  m.run_in.automatic = true;
+  EXPECT_EQ(key_value_text(*find_key("threading.run_in"), m), "auto");
   EXPECT_EQ(key_value_text(*find_key("block_numbers.skip"), m), "[\"%\", \"O\"]");
   EXPECT_EQ(find_key("threading.strategi"), nullptr);
 }

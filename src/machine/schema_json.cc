@@ -54,6 +54,12 @@ std::string key_schema(const KeySpec& k, size_t indent) {
       m.push_back({"maximum", num(k.hi)});
       m.push_back({"default", def});
       break;
+    case KeyType::kNumberOrAuto:
+      m.push_back({"anyOf", fmt::format(R"([{{"type": "number", "minimum": {}, "maximum": {}}}, )"
+                                        R"({{"const": "auto"}}])",
+                                        num(k.lo), num(k.hi))});
+      m.push_back({"default", def});
+      break;
     case KeyType::kChoice: {
       std::string e;
       for (const Choice& c : k.choices) e += (e.empty() ? "" : ", ") + str(c.name);

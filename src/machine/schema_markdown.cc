@@ -44,6 +44,8 @@ std::string type_text(const KeySpec& k) {
       return "bool";
     case KeyType::kNumber:
       return "number " + range(k.lo, k.hi);
+    case KeyType::kNumberOrAuto:
+      return "number " + range(k.lo, k.hi) + " \\| `auto`";
     case KeyType::kInt:
       return "whole number " + range(k.lo, k.hi);
     case KeyType::kList:

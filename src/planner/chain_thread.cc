@@ -138,6 +138,7 @@ struct ChainFrame {
   int starts = 1;
   double pitch = 0;
   bool by_angle = false;
+  double run_in = 0;  // every start begins this much earlier along the first segment (auto)
 };
 
 // The point on the clear line with the lead-axis coordinate of `p`.
@@ -155,10 +156,11 @@ ThreadPass chain_pass(const ChainFrame& f, const DepthLadder& ladder, size_t i, 
   p.depth = d;
   p.kind = ladder.kinds[i];
   p.shift = f.shifts.sigma[i];
-  const double run_in = f.by_angle ? 0 : k * f.pitch / std::fabs(lead_of(f.first.t, along_z));
+  const double earlier =
+      f.run_in + (f.by_angle ? 0 : k * f.pitch / std::fabs(lead_of(f.first.t, along_z)));
   const std::vector<ThreadGoto>& pts = f.in.gotos;
   p.path.reserve(pts.size());
-  p.path.push_back(pts.front().point + base - run_in * f.first.t);
+  p.path.push_back(pts.front().point + base - earlier * f.first.t);
   for (size_t j = 1; j + 1 < pts.size(); ++j) p.path.push_back(pts[j].point + base);
   p.path.push_back(pts.back().point + base - f.slide * f.last.t);
   p.from = p.path.front();
@@ -261,6 +263,7 @@ bool plan_chain_thread(const MultiThreadInput& in, const PlannerSettings& settin
       !check_infeed_crosses(in, g, r))
     return false;
   ThreadPlan plan = chain_header(in, settings, pitch, g);
+  plan_run_in_out(plan, in.rpm, settings.lead_law, settings.add_run_in);
   DepthLadder ladder;
   if (!make_depth_ladder(in.words, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))
     return false;
@@ -283,6 +286,7 @@ bool plan_chain_thread(const MultiThreadInput& in, const PlannerSettings& settin
   f.starts = std::clamp(pitch.starts, 1, kMaxStarts);
   f.pitch = pitch.pitch;
   f.by_angle = plan.starts_by_angle = f.starts > 1 && settings.start_angle_word;
+  f.run_in = added_run_in_along(plan);
   for (size_t i = 0; i < ladder.depths.size(); ++i)
     for (int k = 0; k < f.starts; ++k) plan.passes.push_back(chain_pass(f, ladder, i, k));
   plan.end_position = on_clear_line(f, plan.p1);

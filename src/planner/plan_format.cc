@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "planner/run_in.h"
 #include "support/json_text.h"
 #include "support/number_text.h"
 
@@ -84,6 +85,37 @@ std::string text_points(const std::vector<Vec2>& v) {
   return o;
 }
 
+// "rpm", "run_in", "run_out", "run_in_added" and "lead_right" (run_in.h), each on its line.
+std::string json_lead(const ThreadPlan& p) {
+  const LeadSpan s = lead_span(p);
+  if (!s.known)
+    return "      \"rpm\": null,\n      \"run_in\": null,\n      \"run_out\": null,\n"
+           "      \"run_in_added\": false,\n      \"lead_right\": null,\n";
+  std::string o = fmt::format("      \"rpm\": {},\n", json_num(p.rpm));
+  o += fmt::format("      \"run_in\": {},\n", json_num(p.run_in));
+  o += fmt::format("      \"run_out\": {},\n", json_num(p.run_out));
+  o += fmt::format("      \"run_in_added\": {},\n", p.run_in_added ? "true" : "false");
+  o += fmt::format("      \"lead_right\": {},\n",
+                   s.any ? fmt::format("{{\"axis\": \"{}\", \"from\": {}, \"to\": {}}}",
+                                       s.along_z ? "z" : "x", json_num(s.from), json_num(s.to))
+                         : "null");
+  return o;
+}
+
+// "  run-in …, run-out … at … rpm; lead right from Z … to Z …" (empty when the speed is not
+// known).
+std::string text_lead(const ThreadPlan& p) {
+  const LeadSpan s = lead_span(p);
+  if (!s.known) return {};
+  const char* axis = s.along_z ? "Z" : "X";
+  return fmt::format("  run-in {}{}, run-out {} at {} rpm; {}\n", num_text(p.run_in),
+                     p.run_in_added ? " (before the thread start)" : "", num_text(p.run_out),
+                     num_text(p.rpm),
+                     s.any ? fmt::format("lead right from {} {} to {} {}", axis, num_text(s.from),
+                                         axis, num_text(s.to))
+                           : std::string("no length has the right lead"));
+}
+
 // A multi-pass form: multi or chain.
 bool is_multi(const ThreadPlan& p) {
   return p.form == ThreadForm::kMulti || p.form == ThreadForm::kChain;
@@ -121,6 +153,7 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
     o += fmt::format("      \"p2\": {},\n", json_point(p.p2));
     if (chain) o += fmt::format("      \"points\": {},\n", json_points(p.points));
     o += fmt::format("      \"pullout\": {},\n", p.pullout ? json_point(*p.pullout) : "null");
+    o += json_lead(p);
     if (p.passes.empty()) {
       o += "      \"passes\": []\n";
     } else {
@@ -199,6 +232,7 @@ std::string plan_to_text(const std::string& file, LengthUnit units,
     } else {
       o += fmt::format("  ends at {}\n", text_point(p.end_position));
     }
+    o += text_lead(p);
   }
   return o;
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "planner/planner_test_util.h"
+#include "planner/run_in.h"
 #include "support/number_text.h"
 
 namespace clpost {
@@ -67,6 +68,11 @@ TEST(PlanJson, SmallThread) {
       "p1": {"x": 10, "z": 2},
       "p2": {"x": 10, "z": -20},
       "pullout": {"x": 1, "z": -1},
+      "rpm": null,
+      "run_in": null,
+      "run_out": null,
+      "run_in_added": false,
+      "lead_right": null,
       "passes": [
         {"n": 1, "start": 0, "depth": 0.5, "kind": "rough", "shift": 0.288675, "from": {"x": 9.5, "z": 1.711325}, "to": {"x": 9.5, "z": -19.711325}},
         {"n": 2, "start": 0, "depth": 1, "kind": "rough", "shift": 0.57735, "from": {"x": 9, "z": 1.42265}, "to": {"x": 9, "z": -20}}
@@ -119,6 +125,11 @@ TEST(PlanJson, CoupledThreadHasNoInfeed) {
       "p1": {"x": 10, "z": 0},
       "p2": {"x": 10, "z": -5},
       "pullout": null,
+      "rpm": null,
+      "run_in": null,
+      "run_out": null,
+      "run_in_added": false,
+      "lead_right": null,
       "passes": [
         {"n": 1, "start": 0, "depth": 0, "kind": "rough", "shift": 0, "from": {"x": 10, "z": 0}, "to": {"x": 10, "z": -5}}
       ]
@@ -138,6 +149,11 @@ TEST(PlanJson, CoupledThreadHasNoInfeed) {
       "p1": {"x": 10, "z": 0},
       "p2": {"x": 10, "z": -5},
       "pullout": null,
+      "rpm": null,
+      "run_in": null,
+      "run_out": null,
+      "run_in_added": false,
+      "lead_right": null,
       "passes": [
         {"n": 1, "start": 0, "depth": 0, "kind": "rough", "shift": 0, "from": {"x": 10, "z": 0}, "to": {"x": 10, "z": -5}}
       ]
@@ -187,6 +203,39 @@ TEST(PlanText, SmallThread) {
             "     2     0          1        0.5    0.57735  rough   (X 9, Z 1.42265) -> (X 9, Z "
             "-20)\n"
             "  returns 1.299038 above the thread line; ends at (X 11.299038, Z 2)\n");
+}
+
+// At 1000 rpm: V = 1000 x 1.5 / 60 = 25, δ2 = 0.033 x 25 = 0.825, δ1 = 0.825 x (0.01 - 1 - ln 0.01)
+// = 0.825 x 3.615170 = 2.982515. Both passes cover Z 1.42265 (pass 2's start, 2 - tan 30 =
+// 1.4226497) to -19.711325 (pass 1's end): the lead is right from 1.4226497 - 2.9825154 =
+// -1.559866 to -19.711325 + 0.825 = -18.886325.
+TEST(PlanText, RunInRunOutAndWhereTheLeadIsRight) {
+  ThreadPlan p = small_thread();
+  set_run_in_out(p, 1000, {0.033, 0.01});
+  const std::string text = plan_to_text("small.cl", LengthUnit::kMm, {p});
+  EXPECT_EQ(text.substr(text.rfind("  returns")),
+            "  returns 1.299038 above the thread line; ends at (X 11.299038, Z 2)\n"
+            "  run-in 2.982515, run-out 0.825 at 1000 rpm; lead right from Z -1.559866 to Z "
+            "-18.886325\n");
+  const std::string json = plan_to_json("small.cl", LengthUnit::kMm, {p});
+  EXPECT_NE(json.find("      \"pullout\": {\"x\": 1, \"z\": -1},\n"
+                      "      \"rpm\": 1000,\n"
+                      "      \"run_in\": 2.982515,\n"
+                      "      \"run_out\": 0.825,\n"
+                      "      \"run_in_added\": false,\n"
+                      "      \"lead_right\": {\"axis\": \"z\", \"from\": -1.559866, \"to\": "
+                      "-18.886325},\n"
+                      "      \"passes\": [\n"),
+            std::string::npos)
+      << json;
+  // At 20000 rpm δ1 + δ2 = 0.033 x 500 x 4.615170 = 76.15 covers the whole cut.
+  set_run_in_out(p, 20000, {0.033, 0.01});
+  EXPECT_NE(plan_to_text("small.cl", LengthUnit::kMm, {p})
+                .find("  run-in 59.650308, run-out 16.5 at 20000 rpm; no length has the right "
+                      "lead\n"),
+            std::string::npos);
+  EXPECT_NE(plan_to_json("small.cl", LengthUnit::kMm, {p}).find("\"lead_right\": null"),
+            std::string::npos);
 }
 
 TEST(PlanText, MultiStartByAngleShowsTheAngleAndPerStartSteps) {

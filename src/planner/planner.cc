@@ -54,6 +54,7 @@ struct PassFrame {
   int starts;        // MULTRD, 1 to kMaxStarts
   double pitch;      // start k begins k pitches earlier, measured along the lead axis ...
   double t_lead;     // ... along which t has this length: k * pitch / t_lead along t
+  double run_in;     // and every start this much earlier along t (threading.run_in auto)
 };
 
 // Pass `i` of the depth ladder for start `k`: the cut, its pull-out, the clear position and the
@@ -70,7 +71,7 @@ ThreadPass make_pass(const PassFrame& f, const DepthLadder& ladder, size_t i, in
   p.depth = d;
   p.kind = ladder.kinds[i];
   p.shift = sigma;
-  const double offset = by_angle ? 0 : k * f.pitch / f.t_lead;
+  const double offset = f.run_in + (by_angle ? 0 : k * f.pitch / f.t_lead);
   p.from = g.p1 + base - offset * g.t;
   p.to = g.p2 + base - (f.shifts.max + f.pullout.shorten) * g.t;
   p.pullout_end = f.pullout.delta ? p.to + *f.pullout.delta : p.to;
@@ -116,6 +117,7 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
   if (!check_pitch(pitch, on_site(in), in.on_word, settings, r)) return false;
   if (!make_infeed_direction(in, g, r)) return false;
   ThreadPlan plan = plan_header(in, settings, pitch, g);
+  plan_run_in_out(plan, in.rpm, settings.lead_law, settings.add_run_in);
 
   DepthLadder ladder;
   if (!make_depth_ladder(in.words, plan.option, in.on_lines, in.on_loc, in.on_word, ladder, diags))
@@ -129,7 +131,8 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
   const double shallowest = *std::min_element(ladder.depths.begin(), ladder.depths.end());
   if (!clearance_height(in, g, pitch.pitch, pullout, shallowest, plan.clearance, r)) return false;
 
-  // Start k begins k pitches (measured along the lead axis) earlier; the end stays.
+  // Start k begins k pitches (measured along the lead axis) earlier, and every start the run-in
+  // earlier when it is added; the end stays.
   const double t_lead = g.lead_along_z ? std::fabs(g.t.z) : std::fabs(g.t.x);
   const PassFrame frame{.g = g,
                         .shifts = shifts,
@@ -137,7 +140,8 @@ bool plan_multi_thread(const MultiThreadInput& in, const PlannerSettings& settin
                         .clearance = plan.clearance,
                         .starts = std::clamp(pitch.starts, 1, kMaxStarts),
                         .pitch = pitch.pitch,
-                        .t_lead = t_lead};
+                        .t_lead = t_lead,
+                        .run_in = added_run_in_along(plan)};
   if (!make_passes(in, settings, ladder, frame, plan, r)) return false;
   plan.end_position = g.p1 + plan.clearance * g.out_dir;
   out = std::move(plan);

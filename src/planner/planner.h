@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "planner/run_in.h"
 #include "planner/thread_plan.h"
 #include "planner/thread_words.h"
 #include "reader/statement.h"
@@ -18,6 +19,8 @@ struct PlannerSettings {
   double default_tool_angle = 60;  // TLANGL when the CL gives none
   bool start_angle_word = false;   // multi-start by spindle start angle instead of offset
   bool variable_lead = false;      // the control can cut INCR/DECR (G34/G35)
+  LeadLaw lead_law;                // threading.servo_time_constant, threading.lead_error
+  bool add_run_in = false;         // threading.run_in auto: passes begin the run-in before P1
   std::string machine_name;        // for diagnostics
 };
 
@@ -36,6 +39,7 @@ struct MultiThreadInput {
   LengthUnit units = LengthUnit::kMm;
   Vec2 p0;  // tool position before THREAD/ON
   bool feed_approach = false;
+  double rpm = 0;  // the spindle speed the thread is cut at (0: not known), for run_in.h
   std::vector<ThreadGoto> gotos;  // as read (2 or 3 is valid)
   SourceLoc off_loc;
   // How the statements are named in messages (the Pro/E form: "OP/THREAD", "OP/THREAD,NOMORE").

@@ -152,6 +152,11 @@ TEST(ProEThread, Json) {
       "p1": {"x": 1.25, "z": 4},
       "p2": {"x": 1.25, "z": 2},
       "pullout": null,
+      "rpm": null,
+      "run_in": null,
+      "run_out": null,
+      "run_in_added": false,
+      "lead_right": null,
       "passes": [
         {"n": 1, "start": 0, "depth": 0.030672, "kind": "rough", "shift": 0, "from": {"x": 1.219329, "z": 4}, "to": {"x": 1.219329, "z": 2}},
         {"n": 2, "start": 0, "depth": 0.051119, "kind": "rough", "shift": 0, "from": {"x": 1.198881, "z": 4}, "to": {"x": 1.198881, "z": 2}},

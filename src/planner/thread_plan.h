@@ -77,6 +77,12 @@ struct ThreadPlan {
   // A chained thread: the contour P1 ... Pk as the CL gives it (the passes are it translated).
   std::vector<Vec2> points;
   size_t passes_not_kept = 0;  // a coupled path longer than the plan keeps: moves cut, not listed
+  // Where the lead is not yet right (planner/run_in.h): the spindle speed the thread is cut at
+  // (0: not known) and, along the lead axis, the run-in δ1 and run-out δ2 of every cut.
+  double rpm = 0;
+  double run_in = 0;
+  double run_out = 0;
+  bool run_in_added = false;  // threading.run_in auto: every pass begins run_in before P1
 };
 
 }  // namespace clpost

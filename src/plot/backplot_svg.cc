@@ -252,7 +252,70 @@ void draw_start(SvgWriter& w, const Toolpath& tp, const Frame& f) {
                      {"stroke-width", "1.5"}});
 }
 
-void draw_legend(SvgWriter& w, double y) {
+// Whether any section knows its thread's run-in and run-out.
+bool any_lead(const std::vector<ThreadSection>* sections) {
+  return sections != nullptr && std::any_of(sections->begin(), sections->end(),
+                                            [](const ThreadSection& s) { return s.zones.known; });
+}
+
+// The hatch of a length whose lead is not right: dark lines on grey, usable without colour.
+void lead_hatch(SvgWriter& w) {
+  w.open("pattern", {{"id", "lead-hatch"},
+                     {"patternUnits", "userSpaceOnUse"},
+                     {"width", "6"},
+                     {"height", "6"},
+                     {"patternTransform", "rotate(-45)"}});
+  w.empty("rect", {{"width", "6"}, {"height", "6"}, {"fill", "#e4e4e4"}});
+  w.empty("line", {{"x1", "0"},
+                   {"y1", "0"},
+                   {"x2", "0"},
+                   {"y2", "6"},
+                   {"stroke", "#6f6f6f"},
+                   {"stroke-width", "1.2"}});
+  w.close();
+}
+
+// A band from `a` to `b` along the thread's lead axis, across what its passes span (and 3 px).
+void lead_band(SvgWriter& w, const Frame& f, const SectionLead& g, double a, double b,
+               const std::string& title) {
+  if (a == b) return;
+  const double pad = 3 / f.k, lo = g.across_lo - pad, hi = g.across_hi + pad;
+  const double z0 = g.along_z ? std::min(a, b) : lo, z1 = g.along_z ? std::max(a, b) : hi;
+  const double x0 = g.along_z ? lo : std::min(a, b), x1 = g.along_z ? hi : std::max(a, b);
+  w.open("rect", {{"class", "lead-zone"},
+                  {"x", svg_num(f.px(z0))},
+                  {"y", svg_num(f.py(x1))},
+                  {"width", svg_num((z1 - z0) * f.k)},
+                  {"height", svg_num((x1 - x0) * f.k)},
+                  {"fill", "url(#lead-hatch)"},
+                  {"fill-opacity", "0.8"}});
+  w.text("title", {}, title);
+  w.close();
+}
+
+// Every thread's run-in and run-out as hatched bands under the moves (a chain's sections share
+// one thread: drawn once).
+void draw_lead_zones(SvgWriter& w, const Frame& f, const std::vector<ThreadSection>* sections) {
+  if (!any_lead(sections)) return;
+  w.open("g", {{"class", "lead-zones"}});
+  const SectionLead* last = nullptr;
+  for (const ThreadSection& s : *sections) {
+    const SectionLead& g = s.zones;
+    if (!g.known || (last != nullptr && last->cut_from == g.cut_from && last->cut_to == g.cut_to &&
+                     last->run_in == g.run_in))
+      continue;
+    last = &g;
+    if (!g.any) {
+      lead_band(w, f, g, g.cut_from, g.cut_to, "no length has the right lead");
+      continue;
+    }
+    lead_band(w, f, g, g.cut_from, g.right_from, "run-in " + svg_num(g.run_in, 3));
+    lead_band(w, f, g, g.right_to, g.cut_to, "run-out " + svg_num(g.run_out, 3));
+  }
+  w.close();
+}
+
+void draw_legend(SvgWriter& w, double y, bool lead) {
   double x = kLeft;
   w.open("g", {{"class", "legend"}});
   for (size_t i = 0; i < kClass.size(); ++i) {
@@ -268,6 +331,17 @@ void draw_legend(SvgWriter& w, double y) {
   }
   w.empty("circle", {{"cx", svg_num(x + 6)}, {"cy", svg_num(y)}, {"r", "5"}, {"fill", "#2ca02c"}});
   w.text("text", {{"x", svg_num(x + 16)}, {"y", svg_num(y + 4)}, {"font-size", "13"}}, "start");
+  if (lead) {
+    x += 16 + 7.5 * 5 + 26;
+    w.empty("rect", {{"x", svg_num(x)},
+                     {"y", svg_num(y - 7)},
+                     {"width", "26"},
+                     {"height", "14"},
+                     {"fill", "url(#lead-hatch)"},
+                     {"stroke", "#555555"}});
+    w.text("text", {{"x", svg_num(x + 32)}, {"y", svg_num(y + 4)}, {"font-size", "13"}},
+           "lead not yet right (run-in, run-out)");
+  }
   w.close();
 }
 
@@ -370,7 +444,10 @@ std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* s
                    {"width", svg_num(f.w)},
                    {"height", svg_num(f.h)}});
   w.close();
+  const bool lead = any_lead(sections);
+  if (lead) lead_hatch(w);
   w.open("g", {{"clip-path", "url(#plot-clip)"}});
+  draw_lead_zones(w, f, sections);
   const Totals t = draw_moves(w, tp, f);
   draw_start(w, tp, f);
   w.close();
@@ -380,7 +457,7 @@ std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* s
          {{"class", "summary"}, {"x", "16"}, {"y", "54"}, {"font-size", "13"}, {"fill", "#444444"}},
          summary(t, drawn, unit) +
              (clipped ? "; fitted to the cutting moves, far rapids run off the frame" : ""));
-  draw_legend(w, 78);
+  draw_legend(w, 78, lead);
   draw_insets(w, insets);
   return w.finish();
 }

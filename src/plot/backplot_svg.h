@@ -20,6 +20,9 @@ namespace clpost {
 //    100k-move program stays a few thousand elements; moves with non-finite coordinates are
 //    skipped;
 //  - a circle where the motion starts, a legend and a line of move counts and path lengths;
+//  - under the moves, each section's run-in and run-out (ThreadSection::zones, when known) as a
+//    band hatched in grey across what its passes span, so that where the lead is not yet right
+//    shows without colour; the legend names the hatch;
 //  - `title` (escaped) at the top; empty: "Backplot";
 //  - when `sections` is given and not empty, each thread's section picture
 //    (thread_section_svg.h) under the plot, scaled to the width.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -190,6 +191,36 @@ TEST(BackplotSvg, SectionInsets) {
   EXPECT_EQ(d.with_tag("svg").size(), 3u);  // the root and one nested per section
   EXPECT_EQ(count_of(svg, "id=\"s1-clip\""), 1u);
   EXPECT_EQ(count_of(svg, "id=\"s2-clip\""), 1u);
+}
+
+// The thread of small_part() cut from Z 2 to Z -18 at radius 9.2 to 10: a run-in of 2 and a
+// run-out of 1 are hatched bands under the moves, as long as they are along Z, and the legend
+// says what the hatch means.
+TEST(BackplotSvg, LeadZonesUnderTheMoves) {
+  ThreadSection s;
+  s.pitch = 1.5;
+  s.lead = 1.5;
+  std::vector<ThreadSection> sections = {s};
+  const XmlDoc plain = parsed(backplot_svg(small_part(), &sections));
+  EXPECT_TRUE(plain.with_class("lead-zone").empty());
+  EXPECT_FALSE(std::any_of(plain.elements.begin(), plain.elements.end(), [](const auto& e) {
+    return e.text == "lead not yet right (run-in, run-out)";
+  }));
+  sections[0].zones = {true, true, 2, -18, 0, -17, true, 2, 1, 600, 9.2, 10};
+  sections.push_back(sections[0]);  // a chain's sections: drawn once
+  const XmlDoc d = parsed(backplot_svg(small_part(), &sections));
+  const auto zones = d.with_class("lead-zone");
+  ASSERT_EQ(zones.size(), 2u);
+  const double in_w = std::stod(zones[0]->attr("width")),
+               out_w = std::stod(zones[1]->attr("width"));
+  EXPECT_NEAR(in_w, 2 * out_w, 0.01);
+  EXPECT_EQ(zones[0]->attr("height"), zones[1]->attr("height"));
+  // The run-in from Z 2 to 0 (Z grows to the right: its left edge is Z 0), the run-out from Z -17
+  // to -18 (its left edge Z -18): 18 run-out widths apart (the page has 2 decimals).
+  EXPECT_NEAR(std::stod(zones[0]->attr("x")) - std::stod(zones[1]->attr("x")), 18 * out_w, 0.1);
+  EXPECT_TRUE(std::any_of(d.elements.begin(), d.elements.end(), [](const auto& e) {
+    return e.text == "lead not yet right (run-in, run-out)";
+  }));
 }
 
 TEST(MoveGeometry, ArcSweepsAndBounds) {

@@ -7,9 +7,47 @@
 #include <utility>
 #include <vector>
 
+#include "planner/run_in.h"
 #include "support/number_text.h"
 
 namespace clpost {
+
+namespace {
+
+// The run-in and run-out of `plan` along its lead axis, and what its passes span across it.
+SectionLead section_lead(const ThreadPlan& plan) {
+  SectionLead l;
+  const LeadSpan s = lead_span(plan);
+  if (!s.known) return l;
+  l.known = true;
+  l.along_z = s.along_z;
+  l.cut_from = s.cut_from;
+  l.cut_to = s.cut_to;
+  l.right_from = s.from;
+  l.right_to = s.to;
+  l.any = s.any;
+  l.run_in = plan.run_in;
+  l.run_out = plan.run_out;
+  l.rpm = plan.rpm;
+  bool first = true;
+  auto across = [&](Vec2 p) {
+    const double v = s.along_z ? p.x : p.z;
+    l.across_lo = first ? v : std::min(l.across_lo, v);
+    l.across_hi = first ? v : std::max(l.across_hi, v);
+    first = false;
+  };
+  across(plan.p1);
+  across(plan.p2);
+  for (const Vec2& p : plan.points) across(p);
+  for (const Vec2& p : plan.path) across(p);
+  for (const ThreadPass& p : plan.passes) {
+    across(p.from);
+    across(p.to);
+  }
+  return l;
+}
+
+}  // namespace
 
 ThreadSection section_from_plan(const ThreadPlan& plan, std::string title) {
   ThreadSection s;
@@ -27,6 +65,7 @@ ThreadSection section_from_plan(const ThreadPlan& plan, std::string title) {
   s.starts = plan.pitch.starts;
   s.depth = plan.depth;
   s.tool_angle = plan.tool_angle;
+  s.zones = section_lead(plan);
   s.passes.reserve(plan.passes.size());
   for (const ThreadPass& p : plan.passes) {
     SectionPass q;
@@ -65,7 +104,9 @@ ThreadSection segment_section(const ThreadPlan& plan, size_t j) {
     // multi-start offset), so segment 1 is measured at its end when that is a corner.
     const bool at_end = j == 1 && p.path.size() > 2;
     const Vec2 on = at_end ? p.path[1] : p.path[j - 1], ref = at_end ? b : a;
-    const Vec2 d{on.x - ref.x, on.z - ref.z};
+    // A run-in clpost added (threading.run_in auto) moves the first point back along segment 1.
+    const double run_in = j == 1 && !at_end ? added_run_in_along(plan) : 0;
+    const Vec2 d{on.x - ref.x + run_in * t.x, on.z - ref.z + run_in * t.z};
     s.passes[i].depth = d.x * n.x + d.z * n.z;
     s.passes[i].shift = d.x * t.x + d.z * t.z;
   }

@@ -12,6 +12,7 @@ namespace clpost {
 // from the plan, and one SectionPass per planned pass in cutting order, with the plan's pass
 // number n (the depth ladder index, so the starts of a multi-start thread share it), start index,
 // cumulative depth, flank shift and kind. Coupled and single-pass threads have no passes.
+// `zones`: the run-in and run-out of the plan (planner/run_in.h) when its speed is known.
 // An empty `title` becomes "thread at line L - pitch P, depth D, OPTION o" (numbers as in
 // `clpost plan`; without the OPTION part for threads that have no infeed).
 ThreadSection section_from_plan(const ThreadPlan& plan, std::string title);

@@ -25,7 +25,8 @@ constexpr double kMinAreaH = 220;  // flatter sections get more part and air, ne
 constexpr double kTableGap = 56;   // drawing to table
 constexpr double kTableW = 372;
 constexpr double kRowH = 17;
-constexpr double kBelowArea = 92;  // scale bar and legend under the drawing
+constexpr double kBelowArea = 92;   // scale bar and legend under the drawing
+constexpr double kLeadStripH = 66;  // the run-in and run-out along the thread, at the bottom
 constexpr const char* kMono = "DejaVu Sans Mono, Consolas, monospace";
 
 const char* kind_colour(PassKind k) {
@@ -103,6 +104,7 @@ struct Layout {
   double height = 0;
   int decimals = 3;
   const char* unit = "mm";
+  double strip_y = 0;  // top of the lead strip (when the section's lead is known)
 };
 
 Layout layout_of(const ThreadSection& s) {
@@ -146,6 +148,10 @@ Layout layout_of(const ThreadSection& s) {
   l.width = l.table_x + kTableW + 16;
   const double table_bottom = f.oy + 44 + static_cast<double>(s.passes.size()) * kRowH + 24;
   l.height = std::max(f.oy + f.h + kBelowArea, table_bottom);
+  if (s.zones.known) {
+    l.strip_y = l.height;
+    l.height += kLeadStripH;
+  }
   return l;
 }
 
@@ -504,6 +510,105 @@ void draw_legend(SvgWriter& w, const ThreadSection& s, const Frame& f, std::stri
   w.close();
 }
 
+// The hatch of a length whose lead is not right: dark lines on grey, slanted against the part's.
+void lead_hatch(SvgWriter& w, std::string_view id) {
+  w.open("pattern", {{"id", fmt::format("{}lead", id)},
+                     {"patternUnits", "userSpaceOnUse"},
+                     {"width", "6"},
+                     {"height", "6"},
+                     {"patternTransform", "rotate(-45)"}});
+  w.empty("rect", {{"width", "6"}, {"height", "6"}, {"fill", "#e4e4e4"}});
+  w.empty("line", {{"x1", "0"},
+                   {"y1", "0"},
+                   {"x2", "0"},
+                   {"y2", "6"},
+                   {"stroke", "#5f5f5f"},
+                   {"stroke-width", "1.4"}});
+  w.close();
+}
+
+// The strip's line of text: the two lengths, the speed and where the lead is right.
+std::string lead_text(const SectionLead& g, int decimals, const char* unit) {
+  const char* axis = g.along_z ? "Z" : "X";
+  std::string t = fmt::format("lead not yet right ({}): run-in {}, run-out {} at {} rpm; ", unit,
+                              fixed_text(g.run_in, decimals), fixed_text(g.run_out, decimals),
+                              svg_num(g.rpm, 1));
+  if (!g.any) return t + "no length has the right lead";
+  return t + fmt::format("right from {} {} to {} {}", axis, fixed_text(g.right_from, decimals),
+                         axis, fixed_text(g.right_to, decimals));
+}
+
+// A hatched stretch of the strip's bar, from page x `a` to `b`.
+void lead_zone(SvgWriter& w, std::string_view cls, double a, double b, double y,
+               std::string_view id, const std::string& title) {
+  if (!(b > a)) return;
+  w.open("rect", {{"class", std::string(cls)},
+                  {"x", svg_num(a)},
+                  {"y", svg_num(y)},
+                  {"width", svg_num(b - a)},
+                  {"height", "16"},
+                  {"fill", fmt::format("url(#{}lead)", id)}});
+  w.text("title", {}, title);
+  w.close();
+}
+
+// Under everything: the synchronized cut as a bar from its start (left) to its end, the run-in
+// and run-out hatched, with the lead-axis coordinates where they end.
+void draw_lead_strip(SvgWriter& w, const ThreadSection& s, const Layout& l, std::string_view id) {
+  const SectionLead& g = s.zones;
+  if (!g.known) return;
+  const double x0 = 16, x1 = l.width - 16, top = l.strip_y, bar = top + 24;
+  const double len = std::fabs(g.cut_to - g.cut_from), dir = g.cut_to < g.cut_from ? -1 : 1;
+  auto at = [&](double v) {
+    return len > 0 ? x0 + std::clamp((v - g.cut_from) * dir, 0.0, len) * (x1 - x0) / len : x0;
+  };
+  w.open("g", {{"class", "lead-strip"}});
+  w.empty("rect", {{"x", svg_num(x0)},
+                   {"y", svg_num(top)},
+                   {"width", "22"},
+                   {"height", "14"},
+                   {"fill", fmt::format("url(#{}lead)", id)},
+                   {"stroke", "#555555"}});
+  w.text("text", {{"x", svg_num(x0 + 30)}, {"y", svg_num(top + 12)}, {"font-size", "13"}},
+         lead_text(g, l.decimals, l.unit));
+  w.empty("rect", {{"class", "lead-cut"},
+                   {"x", svg_num(x0)},
+                   {"y", svg_num(bar)},
+                   {"width", svg_num(x1 - x0)},
+                   {"height", "16"},
+                   {"fill", "#ffffff"}});
+  if (g.any) {
+    lead_zone(w, "lead-run-in", x0, at(g.right_from), bar, id,
+              "run-in " + fixed_text(g.run_in, l.decimals));
+    lead_zone(w, "lead-run-out", at(g.right_to), x1, bar, id,
+              "run-out " + fixed_text(g.run_out, l.decimals));
+  } else {
+    lead_zone(w, "lead-none", x0, x1, bar, id, "no length has the right lead");
+  }
+  w.empty("rect", {{"x", svg_num(x0)},
+                   {"y", svg_num(bar)},
+                   {"width", svg_num(x1 - x0)},
+                   {"height", "16"},
+                   {"fill", "none"},
+                   {"stroke", "#555555"}});
+  // The coordinates under the bar: its ends, and where the lead is right when there is room.
+  auto label = [&](double x, double v, const char* anchor) {
+    w.text("text",
+           {{"x", svg_num(x)},
+            {"y", svg_num(bar + 30)},
+            {"font-size", "11"},
+            {"text-anchor", anchor},
+            {"fill", "#333333"}},
+           fmt::format("{} {}", g.along_z ? "Z" : "X", fixed_text(v, l.decimals)));
+  };
+  label(x0, g.cut_from, "start");
+  label(x1, g.cut_to, "end");
+  const double a = at(g.right_from), b = at(g.right_to);
+  if (g.any && a - x0 >= 90 && x1 - a >= 90) label(a, g.right_from, "middle");
+  if (g.any && b - x0 >= 90 && x1 - b >= 90 && b - a >= 90) label(b, g.right_to, "middle");
+  w.close();
+}
+
 std::string subtitle(const ThreadSection& s, int decimals, const char* unit) {
   std::string t = fmt::format("{} thread, pitch {} {}",
                               s.side == ThreadSide::kInternal ? "internal" : "external",
@@ -555,6 +660,7 @@ void draw_thread_section(SvgWriter& w, const ThreadSection& s, std::string_view 
                    {"stroke", "#b7b0a2"},
                    {"stroke-width", "1.2"}});
   w.close();
+  if (s.zones.known) lead_hatch(w, id);
   w.close();
   w.open("g", {{"clip-path", fmt::format("url(#{}clip)", id)}});
   draw_part(w, s, f, id);
@@ -577,6 +683,7 @@ void draw_thread_section(SvgWriter& w, const ThreadSection& s, std::string_view 
   draw_table(w, s, l);
   draw_scale_bar(w, f, l.unit);
   draw_legend(w, s, f, id);
+  draw_lead_strip(w, s, l, id);
   w.close();
 }
 

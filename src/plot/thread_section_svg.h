@@ -23,7 +23,11 @@ namespace clpost {
 //    which way the helix runs);
 //  - the pass numbers next to the tips (passes sharing a tip share a label, "6,7"), and a side
 //    table "pass start depth step shift kind" in cutting order (3 decimals in mm, 4 in inch);
-//  - the title and a line of thread data, a legend, and a scale bar in mm or in.
+//  - the title and a line of thread data, a legend, and a scale bar in mm or in;
+//  - when the run-in and run-out are known (ThreadSection::zones), a strip at the bottom: the
+//    synchronized cut as a bar from its start (left) to its end, the run-in and the run-out
+//    hatched in grey at its ends (the whole bar when no length has the right lead), with the
+//    lead-axis coordinates and a line giving both lengths, the speed and where the lead is right.
 // Passes with non-finite numbers are listed but not drawn; an empty section gives a valid
 // picture of the nominal V of depth D.
 std::string thread_section_svg(const ThreadSection& section);

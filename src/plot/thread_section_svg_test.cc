@@ -203,6 +203,39 @@ TEST(ThreadSectionSvg, InchUnitsAndEscapedTitle) {
   EXPECT_TRUE(has_text(d, "0.02 in"));  // scale bar: 0.1 in window / 4 = 0.025 -> 0.02
 }
 
+// The strip under the section: the cut Z 2 to Z -30 (32 long) as a bar from x 16 to the width
+// less 16, the run-in 5.965031 and the run-out 1.65 hatched at its ends.
+TEST(ThreadSectionSvg, LeadStripHatchesTheRunInAndRunOut) {
+  ThreadSection s = five_passes_two_starts();
+  EXPECT_TRUE(parsed(thread_section_svg(s)).with_class("lead-cut").empty());  // speed not known
+  const double plain_height = thread_section_size(s).height;
+  s.zones = {true, true, 2, -30, -3.965031, -28.35, true, 5.965031, 1.65, 1500, 9, 10};
+  const SvgSize size = thread_section_size(s);
+  EXPECT_DOUBLE_EQ(size.height, plain_height + 66);
+  const XmlDoc d = parsed(thread_section_svg(s));
+  const double bar = size.width - 32;
+  ASSERT_EQ(d.with_class("lead-run-in").size(), 1u);
+  const XmlElement& in = *d.with_class("lead-run-in")[0];
+  EXPECT_NEAR(std::stod(in.attr("x")), 16, 0.01);
+  EXPECT_NEAR(std::stod(in.attr("width")), bar * 5.965031 / 32, 0.01);
+  ASSERT_EQ(d.with_class("lead-run-out").size(), 1u);
+  const XmlElement& out = *d.with_class("lead-run-out")[0];
+  EXPECT_NEAR(std::stod(out.attr("x")), 16 + bar * 30.35 / 32, 0.01);
+  EXPECT_NEAR(std::stod(out.attr("width")), bar * 1.65 / 32, 0.01);
+  EXPECT_TRUE(has_text(d,
+                       "lead not yet right (mm): run-in 5.965, run-out 1.650 at 1500 rpm; "
+                       "right from Z -3.965 to Z -28.350"));
+  EXPECT_TRUE(has_text(d, "Z 2.000"));
+  EXPECT_TRUE(has_text(d, "Z -30.000"));
+  EXPECT_TRUE(has_text(d, "Z -3.965"));
+  // No length right: the whole bar is hatched.
+  s.zones.any = false;
+  const XmlDoc none = parsed(thread_section_svg(s));
+  ASSERT_EQ(none.with_class("lead-none").size(), 1u);
+  EXPECT_NEAR(std::stod(none.with_class("lead-none")[0]->attr("width")), bar, 0.01);
+  EXPECT_TRUE(none.with_class("lead-run-in").empty());
+}
+
 TEST(ThreadSectionSvg, EmptyAndHostileSectionsStillDraw) {
   ThreadSection empty;
   const XmlDoc a = parsed(thread_section_svg(empty));

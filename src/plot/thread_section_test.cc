@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "planner/run_in.h"
 #include "plot/thread_profile.h"
 
 namespace clpost {
@@ -147,6 +148,35 @@ namespace clpost {
 namespace {
 
 // A chain (threading.md section 11): one section per segment. Contour (X 15, Z 0) - (X 15,
+// A single-pass thread from Z 2 to Z -30 at radius 10, lead 2, 1500 rpm: run-in 5.965031,
+// run-out 1.65 (planner/run_in.h), the lead right from Z -3.965031 to -28.35.
+TEST(SectionFromPlan, CarriesTheRunInAndRunOut) {
+  ThreadPlan p;
+  p.form = ThreadForm::kSingle;
+  p.lead = 2;
+  p.p1 = {10, 2};
+  p.p2 = {10, -30};
+  p.path = {p.p1, p.p2};
+  ThreadPass pass;
+  pass.from = p.p1;
+  pass.to = p.p2;
+  p.passes = {pass};
+  EXPECT_FALSE(section_from_plan(p, "").zones.known);  // no speed: nothing known
+  set_run_in_out(p, 1500, {0.033, 0.01});
+  const SectionLead z = section_from_plan(p, "").zones;
+  ASSERT_TRUE(z.known);
+  EXPECT_TRUE(z.along_z);
+  EXPECT_TRUE(z.any);
+  EXPECT_EQ(z.cut_from, 2);
+  EXPECT_EQ(z.cut_to, -30);
+  EXPECT_NEAR(z.right_from, -3.965031, 1e-6);
+  EXPECT_NEAR(z.right_to, -28.35, 1e-12);
+  EXPECT_NEAR(z.run_in, 5.965031, 1e-6);
+  EXPECT_EQ(z.rpm, 1500);
+  EXPECT_EQ(z.across_lo, 10);
+  EXPECT_EQ(z.across_hi, 10);
+}
+
 // Z -10) - (X 18, Z -16), every pass the contour moved 1 toward the axis: on the cylinder the
 // depth is 1 with no shift; on the taper (direction (3, -6)/sqrt(45)) the depth at right angles
 // is cos(26.565 deg) = 2/sqrt(5) = 0.894427 and the pass sits 1/sqrt(5) = 0.447214 back along it.

@@ -65,6 +65,18 @@ struct SectionPass {
   PassKind kind = PassKind::kRough;
 };
 
+// Where a thread's lead is not yet right (planner/run_in.h: its run-in and run-out), along its
+// lead axis in the CL frame, for the pictures. Not `known` when the spindle speed is not.
+struct SectionLead {
+  bool known = false;
+  bool along_z = true;                  // the lead axis: Z, or X for a face-like thread
+  double cut_from = 0, cut_to = 0;      // the stretch every pass cuts, in cutting order
+  double right_from = 0, right_to = 0;  // where in it the lead is right, when `any`
+  bool any = false;                     // some length has the right lead
+  double run_in = 0, run_out = 0, rpm = 0;
+  double across_lo = 0, across_hi = 0;  // the other axis: what the passes span
+};
+
 struct ThreadSection {
   std::string title;  // e.g. "thread at part.cl:12 - pitch 1.5, depth 0.92, OPTION 1"
   LengthUnit units = LengthUnit::kMm;
@@ -75,6 +87,7 @@ struct ThreadSection {
   double depth = 0;        // full thread depth D
   double tool_angle = 60;  // included angle of the tool's V, degrees
   std::vector<SectionPass> passes;
+  SectionLead zones;  // the run-in and run-out along the thread
 };
 
 }  // namespace clpost

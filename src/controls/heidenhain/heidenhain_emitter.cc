@@ -8,6 +8,8 @@
 
 #include "controls/heidenhain/heidenhain_templates.h"
 #include "laws/written_value.h"
+#include "planner/run_in.h"
+#include "support/number_text.h"
 #include "support/vec2_math.h"
 #include "writer/number_format.h"
 
@@ -48,6 +50,31 @@ std::string shape_mismatch(const ThreadPlan& plan) {
   return {};
 }
 
+// The contour G31 is written with, its run-in B and its run-out P. The cuts start where the
+// plan's passes do (P1, or a run-in clpost added before it with threading.run_in `auto`) and end
+// at P2. A number for run_in is taken from the start of the CL's thread: the contour starts B
+// after P1 (as CYCLE99's SPL). With `auto` the contour starts at P1 with B the run-in added
+// before it, and ends the run-out δ2 before P2 with P = δ2 after it. B and P are what is left
+// between the contour's written ends and the cut's, so that only their own rounding counts.
+// Why the contour has no length, or "".
+std::string contour_words(const ThreadPlan& plan, const Machine& m, HeidenhainG31& w) {
+  const double dm = diameter_factor(m);
+  const Vec2 t = (1 / length(plan.p2 - plan.p1)) * (plan.p2 - plan.p1);
+  const double t_lead = std::fabs(plan.lead_along_z ? t.z : t.x);
+  const double added = added_run_in_along(plan);
+  const Vec2 cut_start = plan.p1 - added * t;
+  const double b = m.run_in.automatic ? added : m.run_in.value;
+  const double p = m.run_in.automatic && t_lead > 0 ? plan.run_out / t_lead : 0;
+  auto written = [&](Vec2 q) { return Vec2{as_read(m, "X", dm * q.x) / dm, as_read(m, "Z", q.z)}; };
+  w.from = written(cut_start + b * t);
+  w.to = written(plan.p2 - p * t);
+  w.b = as_read(m, "B", dot(w.from - cut_start, t));
+  w.p = as_read(m, "P", dot(plan.p2 - w.to, t));
+  if (dot(w.to - w.from, t) > 0) return {};
+  return fmt::format("run-in B {} and run-out P {} leave the G31 contour no length (thread {})",
+                     num_text(w.b), num_text(w.p), num_text(length(plan.p2 - plan.p1)));
+}
+
 }  // namespace
 
 std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& plan,
@@ -69,7 +96,6 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
   while (plan.passes[first_full].depth < d_max - 1e-9) ++first_full;
 
   const G31FlankCodes codes = g31_flank_codes(m);
-  const double dm = diameter_factor(m);
   HeidenhainG31 w;
   w.f = as_read(m, "F", plan.pitch.pitch);
   w.u = as_read(m, "U", d_max);
@@ -87,11 +113,8 @@ std::optional<HeidenhainG31> HeidenhainG31Emitter::words_for(const ThreadPlan& p
   w.d = 1;
   w.c = 0;
   w.bd = plan.side == ThreadSide::kInternal ? 1 : 0;
-  w.b = as_read(m, "B", m.run_in);
-  w.p = 0;
   w.k = 0;
-  w.from = {as_read(m, "X", dm * plan.p1.x) / dm, as_read(m, "Z", plan.p1.z)};
-  w.to = {as_read(m, "X", dm * plan.p2.x) / dm, as_read(m, "Z", plan.p2.z)};
+  if (std::string reason = contour_words(plan, m, w); !reason.empty()) return no(reason);
   return w;
 }
 

@@ -8,7 +8,10 @@
 // - OPTION 1 -> V0 with H toward the cutting direction (codes g31_h_minus / g31_h_plus),
 //   OPTION 2 -> V0 H alternating (g31_h_alternating), OPTION 3 -> V1 H toward the cutting
 //   direction, OPTION 4 -> V1 H alternating; A = TLANGL/2; OPTION 0 has no G31 law;
-// - D1 C0 (multi-start is not mapped), BD0/1 from the side, B = threading.run_in, P0, K0;
+// - D1 C0 (multi-start is not mapped), BD0/1 from the side, K0;
+// - B = threading.run_in taken from the start of the CL's thread (the contour starts B after P1),
+//   P0; with run_in `auto` the contour is the thread less its run-out: B the run-in δ1 clpost
+//   adds before P1, P the run-out δ2 (planner/run_in.h), the contour ending P before P2;
 // - not mapped: OPTION 0, a finish allowance (no G31 word), pull-outs, an angled CUTANG,
 //   several starts, a variable lead.
 #include <optional>

@@ -50,6 +50,26 @@ TEST(HeidenhainG31Emitter, OptionFourIsConstantInfeedAlternating) {
       << out.nc;
 }
 
+TEST(HeidenhainG31Emitter, RunInAndRunOut) {
+  const std::string on = "THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,4,OPTION,4";
+  // A number is taken from the start of the CL's thread: B2, the contour from Z 2 - 2 = 0, so
+  // that the cuts still start at the CL's Z 2.
+  Machine num =
+      shipped_machine("heidenhain-pilot", {"block_numbers.enabled=false", "threading.run_in=2"});
+  testing::Emitted n = emit_on(num, plan_for(num, on, kP0, {kP1, kP2}));
+  ASSERT_TRUE(n.ok) << n.diags;
+  EXPECT_NE(n.nc.find("BD0 B2. P0. K0.\nG0 X16. Z0.\nG1 X16. Z-20.\n"), std::string::npos) << n.nc;
+  // `auto` at 1000 rpm, lead 1.5: V = 25 mm/s, δ1 = 0.825 x 3.615170 = 2.982515 (B2.983) before
+  // the CL's Z 2, δ2 = 0.825 (P0.825) after the contour's end, Z -20 + 0.825 = -19.175.
+  Machine aut =
+      shipped_machine("heidenhain-pilot", {"block_numbers.enabled=false", "threading.run_in=auto"});
+  testing::Emitted a =
+      emit_on(aut, plan_for(aut, on, kP0, {kP1, kP2}, true, LengthUnit::kMm, 1000));
+  ASSERT_TRUE(a.ok) << a.diags;
+  EXPECT_NE(a.nc.find("BD0 B2.983 P0.825 K0.\nG0 X16. Z2.\nG1 X16. Z-19.175\n"), std::string::npos)
+      << a.nc;
+}
+
 TEST(HeidenhainG31Emitter, WhatG31IsNotUsedFor) {
   EXPECT_EQ(mismatch("THREAD/ON,MMPR,1.5,DEPTH,0.92,CUTS,4,OPTION,0"),
             "G31 has no infeed type for OPTION 0, steps decreasing by a constant amount");

@@ -8,6 +8,7 @@
 
 #include "controls/linuxcnc/linuxcnc_templates.h"
 #include "laws/written_value.h"
+#include "planner/run_in.h"
 #include "support/vec2_math.h"
 #include "writer/number_format.h"
 
@@ -173,9 +174,11 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
     return no(fmt::format("machine '{}' has no template '{}'", m.name, tname));
 
   const double dm = diameter_factor(m);
-  // The tool waits on the clear line above the thread start: that is G76's drive line.
+  // The tool waits on the clear line above where the cuts start (the thread start, less a run-in
+  // clpost added with threading.run_in auto): that is G76's drive line and start Z.
+  const Vec2 cut_start = plan.p1 - added_run_in_along(plan) * t;
   b.start.x = as_read(m, "X", dm * (plan.p1.x + out_sign * plan.clearance)) / dm;
-  b.start.z = as_read(m, "Z", plan.p1.z);
+  b.start.z = as_read(m, "Z", cut_start.z);
   // The first pass at the deepest depth fixes Z (where it or its exit taper ends) and Q.
   const ThreadPass* full = nullptr;
   for (const ThreadPass& p : plan.passes)
@@ -188,7 +191,7 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
   w.i = as_read(m, "g76_depth", dm * (plan.p1.x - b.start.x));
   w.j = read_up(m, "g76_depth", dm * plan.passes.front().depth);
   w.k = as_read(m, "g76_depth", dm * d_max);
-  w.q = as_read(m, "g76_angle", deg(std::atan2(dot(full->from - plan.p1, t), d_max)));
+  w.q = as_read(m, "g76_angle", deg(std::atan2(dot(full->from - cut_start, t), d_max)));
   w.h = n_full - 1;
   return b;
 }

@@ -10,6 +10,7 @@
 #include "controls/sinumerik/cycle99_emitter.h"
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
+#include "planner/run_in.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 
@@ -48,11 +49,23 @@ std::string cycle98_shape(const ThreadPlan& plan, const Machine& m) {
   return {};
 }
 
+// The first segment's direction.
+Vec2 first_segment(const ThreadPlan& plan) {
+  const Vec2 d = plan.points[1] - plan.points[0];
+  return (1 / length(d)) * d;
+}
+
+// Where the cuts start: the contour's first point, less a run-in clpost added before it
+// (threading.run_in auto), which CYCLE98 cuts as its run-in APP.
+Vec2 cut_start(const ThreadPlan& plan) {
+  return plan.points.front() - added_run_in_along(plan) * first_segment(plan);
+}
+
 // TDEP, FAL, NRC, NID and IANG from the passes of start 0 (paraxial depths along X).
 std::string ladder_words(const ThreadPlan& plan, const Machine& m, Cycle98Words& w) {
   const double in = plan.side == ThreadSide::kInternal ? 1 : -1;
   const double a = plan.points[1].z > plan.points[0].z ? 1 : -1;
-  const Vec2 p1 = plan.points.front();
+  const Vec2 p1 = cut_start(plan);
   const ThreadPass* deepest = nullptr;
   double rough = 0, finish = -1;
   w.nrc = 0;
@@ -122,7 +135,7 @@ Cycle98Call cycle98_call(const ThreadPlan& plan, const Machine& m) {
   call.mismatch = lead_mismatch(m, plan, w.pp[0], fmt::format("PP1 {}", num_text(w.pp[0])),
                                 kLeadFormat, cut_tolerance(m));
   if (!call.mismatch.empty()) return call;
-  w.app = 0;
+  w.app = as_read(m, kDepthFormat, added_run_in_along(plan));  // 0 unless run_in is auto
   w.numth = plan.pitch.starts > 1 ? plan.pitch.starts : 1;
   w.nsp = 0;
   // _VRT: how far the clear line is outside the contour's outermost point.

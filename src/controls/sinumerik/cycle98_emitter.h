@@ -2,7 +2,9 @@
 // SINUMERIK CYCLE98: a chained thread (threading.md section 11) of 1 to 3 segments as one cycle
 // call, written only when the cuts the control makes from the words (cycle98_law.h, after our
 // output rounding) equal the plan's passes. The call's layout is the machine's `cycle98`
-// template; a machine without one cuts chains with its other outputs.
+// template; a machine without one cuts chains with its other outputs. APP is the run-in clpost
+// adds before the first point with threading.run_in `auto` (as CYCLE99's), else 0; ROP the CL's
+// run-out.
 #include <string>
 
 #include "controls/sinumerik/cycle98_law.h"

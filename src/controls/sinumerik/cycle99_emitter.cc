@@ -7,6 +7,7 @@
 
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
+#include "planner/run_in.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 #include "writer/number_format.h"
@@ -49,13 +50,14 @@ std::string cycle99_refusal(const ThreadPlan& plan, const Machine& m) {
 
 // The thread line and the infeed as CYCLE99 reads them.
 struct Cycle99Frame {
-  double tol = 0;   // cut_tolerance
-  Vec2 p1;          // the thread start
-  double len = 0;   // P1 to P2
-  Vec2 t;           // unit cutting direction
-  Vec2 n;           // unit normal toward the material (the side the infeed goes to)
-  Vec2 a_in;        // the paraxial infeed axis
-  double cosv = 1;  // n . a_in
+  double tol = 0;     // cut_tolerance
+  Vec2 p1;            // where the cuts start: the thread start, less a run-in clpost added
+  double run_in = 0;  // that run-in along t (threading.run_in auto), else 0
+  double len = 0;     // p1 to P2
+  Vec2 t;             // unit cutting direction
+  Vec2 n;             // unit normal toward the material (the side the infeed goes to)
+  Vec2 a_in;          // the paraxial infeed axis
+  double cosv = 1;    // n . a_in
 };
 
 // PSYS (the kind, side and infeed axis) and the frame, or why CYCLE99 does not cut this thread
@@ -63,10 +65,11 @@ struct Cycle99Frame {
 std::string frame_words(const ThreadPlan& plan, const Machine& m, Cycle99Frame& f,
                         Cycle99Words& w) {
   f.tol = cut_tolerance(m);
-  f.p1 = plan.p1;
   const Vec2 p1 = plan.p1, p2 = plan.p2;
-  f.len = length(p2 - p1);
-  f.t = (1 / f.len) * (p2 - p1);
+  f.t = (1 / length(p2 - p1)) * (p2 - p1);
+  f.run_in = added_run_in_along(plan);
+  f.p1 = p1 - f.run_in * f.t;
+  f.len = length(p2 - p1) + f.run_in;
   const Vec2 u = direction(plan.cutang);
   f.n = {f.t.z, -f.t.x};
   if (dot(f.n, u) < 0) f.n = -f.n;
@@ -177,19 +180,22 @@ std::string runout_words(const ThreadPlan& plan, const Machine& m, const Cycle99
     rop = along;
   }
   w.rop = as_read(m, kDepthFormat, rop);
-  w.app = as_read(m, kDepthFormat, m.run_in);
+  // APP: the run-in clpost added before the CL's start (auto), else the machine's, taken from
+  // the start of the CL's thread.
+  w.app = as_read(m, kDepthFormat, m.run_in.automatic ? f.run_in : m.run_in.value);
   return {};
 }
 
-// SPL, DM1, FPL, DM2: the start APP into the thread, the full-depth cut's run-out ending at FPL.
+// SPL, DM1, FPL, DM2: the start APP after where the cuts start (the CL's start with `auto`), the
+// full-depth cut's run-out ending at FPL.
 // Along t the deepest cut's end is FPL - ROP plus what its paraxial infeed moves along t.
 std::string end_point_words(const Machine& m, const Cycle99Frame& f, const ThreadPass& deepest,
                             double rop, Cycle99Words& w) {
   const double end_t =
       dot(deepest.to - f.p1, f.t) - (deepest.depth / f.cosv) * dot(f.a_in, f.t) + rop;
   if (w.app >= end_t)
-    return fmt::format("threading.run_in {} is not shorter than the thread ({})",
-                       num_text(m.run_in), num_text(end_t));
+    return fmt::format("threading.run_in {} is not shorter than the thread ({})", num_text(w.app),
+                       num_text(end_t));
   const Vec2 sp = f.p1 + w.app * f.t, fp = f.p1 + end_t * f.t;
   w.spl = as_read(m, "Z", sp.z);
   w.dm1 = as_read(m, "X", 2 * sp.x);

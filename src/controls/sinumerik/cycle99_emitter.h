@@ -2,6 +2,14 @@
 // SINUMERIK CYCLE99: a pass plan as one cycle call, written only when the cuts the control
 // makes from the words (cycle99_law.h, after our output rounding) equal the plan's passes.
 // The call's layout is the machine's `cycle99` template.
+//
+// APP, the run-in, lies before SPL: the cuts begin APP before it. A number for threading.run_in
+// is taken from the start of the CL's thread (SPL lies that far into it, so the cuts still start
+// where the CL's do); with `auto` the planner begins every pass the run-in δ1 before the CL's
+// start (planner/run_in.h), SPL stays the CL's start and APP is δ1. ROP stays the CL's run-out
+// (CHAMFR with a negative length): in the law it is a 45-degree cut out of the thread, not an
+// overtravel, so the run-out δ2 cannot be written there without cutting a chamfer the CL does
+// not ask for.
 #include <string>
 #include <vector>
 

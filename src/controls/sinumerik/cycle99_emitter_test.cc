@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "emitters/planner_settings.h"
 #include "machine/machine_loader.h"
 #include "planner/planner_test_util.h"
@@ -32,11 +35,13 @@ struct Case {
 };
 
 std::unique_ptr<Case> plan(const Machine& m, const std::string& words, Vec2 p0,
-                           std::vector<Vec2> gotos, LengthUnit units = LengthUnit::kMm) {
+                           std::vector<Vec2> gotos, LengthUnit units = LengthUnit::kMm,
+                           double rpm = 0) {
   auto c = std::make_unique<Case>(words);
   Diagnostics d("t.cl");
   testing::MultiCase mc = make_multi(c->on, units, p0, gotos, d);
   EXPECT_TRUE(mc.parsed) << d.render_all();
+  mc.in.rpm = rpm;
   PlannerSettings s = planner_settings(m);
   c->ok = plan_multi_thread(mc.in, s, c->plan, d);
   c->diags = d.render_all();
@@ -213,6 +218,22 @@ TEST(Cycle99Emitter, RunInMovesSplForward) {
   ASSERT_EQ(call.mismatch, "");
   EXPECT_DOUBLE_EQ(call.words.app, 2);
   EXPECT_DOUBLE_EQ(call.words.spl, 0);
+}
+
+TEST(Cycle99Emitter, RunInAutoLiesBeforeSpl) {
+  Machine m = siemens({"threading.run_in=auto"});
+  // 1000 rpm, lead 1.5: V = 25 mm/s, δ1 = 0.825 x 3.615170 = 2.982515. Every pass begins that
+  // much before the CL's Z 2; SPL stays Z 2 and APP is δ1 (2.9825 at 4 decimals).
+  auto c = plan(m, "MMPR,1.5,DEPTH,0.92,CUTS,4,OPTION,3", {10, 5}, {{8, 2}, {8, -20}},
+                LengthUnit::kMm, 1000);
+  EXPECT_NEAR(c->plan.passes.back().from.z, 2 + 2.982515 - 0.92 * std::tan(std::numbers::pi / 6),
+              1e-6);
+  Cycle99Call call = cycle99_call(c->plan, m);
+  ASSERT_EQ(call.mismatch, "");
+  EXPECT_DOUBLE_EQ(call.words.app, 2.9825);
+  EXPECT_DOUBLE_EQ(call.words.spl, 2);
+  EXPECT_DOUBLE_EQ(call.words.fpl, -20);
+  EXPECT_DOUBLE_EQ(call.words.iang, 30);
 }
 
 // ---------------------------------------------------------------------------------------------
