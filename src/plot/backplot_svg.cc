@@ -258,23 +258,6 @@ bool any_lead(const std::vector<ThreadSection>* sections) {
                                             [](const ThreadSection& s) { return s.zones.known; });
 }
 
-// The hatch of a length whose lead is not right: dark lines on grey, usable without colour.
-void lead_hatch(SvgWriter& w) {
-  w.open("pattern", {{"id", "lead-hatch"},
-                     {"patternUnits", "userSpaceOnUse"},
-                     {"width", "6"},
-                     {"height", "6"},
-                     {"patternTransform", "rotate(-45)"}});
-  w.empty("rect", {{"width", "6"}, {"height", "6"}, {"fill", "#e4e4e4"}});
-  w.empty("line", {{"x1", "0"},
-                   {"y1", "0"},
-                   {"x2", "0"},
-                   {"y2", "6"},
-                   {"stroke", "#6f6f6f"},
-                   {"stroke-width", "1.2"}});
-  w.close();
-}
-
 // A band from `a` to `b` along the thread's lead axis, across what its passes span (and 3 px).
 void lead_band(SvgWriter& w, const Frame& f, const SectionLead& g, double a, double b,
                const std::string& title) {
@@ -445,7 +428,7 @@ std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* s
                    {"height", svg_num(f.h)}});
   w.close();
   const bool lead = any_lead(sections);
-  if (lead) lead_hatch(w);
+  if (lead) lead_hatch_pattern(w, "lead-hatch", "#6f6f6f", "1.2");
   w.open("g", {{"clip-path", "url(#plot-clip)"}});
   draw_lead_zones(w, f, sections);
   const Totals t = draw_moves(w, tp, f);

@@ -202,4 +202,21 @@ bool SvgPath::at(double x, double y) const {
   return has_point_ && std::fabs(x - cx_) < 0.005 && std::fabs(y - cy_) < 0.005;
 }
 
+void lead_hatch_pattern(SvgWriter& w, std::string_view id, std::string_view stroke,
+                        std::string_view stroke_width) {
+  w.open("pattern", {{"id", std::string(id)},
+                     {"patternUnits", "userSpaceOnUse"},
+                     {"width", "6"},
+                     {"height", "6"},
+                     {"patternTransform", "rotate(-45)"}});
+  w.empty("rect", {{"width", "6"}, {"height", "6"}, {"fill", "#e4e4e4"}});
+  w.empty("line", {{"x1", "0"},
+                   {"y1", "0"},
+                   {"x2", "0"},
+                   {"y2", "6"},
+                   {"stroke", std::string(stroke)},
+                   {"stroke-width", std::string(stroke_width)}});
+  w.close();
+}
+
 }  // namespace clpost

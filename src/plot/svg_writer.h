@@ -87,4 +87,9 @@ class SvgPath {
   size_t segments_ = 0;
 };
 
+// The hatch pattern `id` of a length whose lead is not right (backplot, thread section): dark
+// lines of `stroke` and `stroke_width` on grey, slanted at -45 degrees, usable without colour.
+void lead_hatch_pattern(SvgWriter& w, std::string_view id, std::string_view stroke,
+                        std::string_view stroke_width);
+
 }  // namespace clpost

@@ -510,23 +510,6 @@ void draw_legend(SvgWriter& w, const ThreadSection& s, const Frame& f, std::stri
   w.close();
 }
 
-// The hatch of a length whose lead is not right: dark lines on grey, slanted against the part's.
-void lead_hatch(SvgWriter& w, std::string_view id) {
-  w.open("pattern", {{"id", fmt::format("{}lead", id)},
-                     {"patternUnits", "userSpaceOnUse"},
-                     {"width", "6"},
-                     {"height", "6"},
-                     {"patternTransform", "rotate(-45)"}});
-  w.empty("rect", {{"width", "6"}, {"height", "6"}, {"fill", "#e4e4e4"}});
-  w.empty("line", {{"x1", "0"},
-                   {"y1", "0"},
-                   {"x2", "0"},
-                   {"y2", "6"},
-                   {"stroke", "#5f5f5f"},
-                   {"stroke-width", "1.4"}});
-  w.close();
-}
-
 // The strip's line of text: the two lengths, the speed and where the lead is right.
 std::string lead_text(const SectionLead& g, int decimals, const char* unit) {
   const char* axis = g.along_z ? "Z" : "X";
@@ -660,7 +643,8 @@ void draw_thread_section(SvgWriter& w, const ThreadSection& s, std::string_view 
                    {"stroke", "#b7b0a2"},
                    {"stroke-width", "1.2"}});
   w.close();
-  if (s.zones.known) lead_hatch(w, id);
+  // Slanted against the part's hatch.
+  if (s.zones.known) lead_hatch_pattern(w, fmt::format("{}lead", id), "#5f5f5f", "1.4");
   w.close();
   w.open("g", {{"clip-path", fmt::format("url(#{}clip)", id)}});
   draw_part(w, s, f, id);
