@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -288,12 +289,25 @@ int post_one_file(const PostCommand& c) {
                   nullptr};
   req.verify = c.verify;
   SheetCapture capture;
-  if (sheet) sheet_request(req, capture);
+  std::unique_ptr<OutputFile> held;  // --sheet: a program file waits for its sheet
+  if (sheet) {
+    sheet_request(req, capture);
+    req.publish_later = [&held](std::unique_ptr<OutputFile> f) { held = std::move(f); };
+  }
   PostOutcome r = post_file(req);
   print_err(r.verify_report);
   print_err(r.diagnostics);
   if (!r.ok) return kExitInput;
-  return !sheet || write_post_sheet(c, r, capture, m, date) ? kExitOk : kExitInput;
+  if (sheet && !write_post_sheet(c, r, capture, m, date)) {
+    if (held) held->abort();  // no program without its sheet, as in a batch
+    return kExitInput;
+  }
+  std::string err;
+  if (held && !held->publish(err)) {
+    print_err(fmt::format("clpost: error: {}\n", err));
+    return kExitInput;
+  }
+  return kExitOk;
 }
 
 int run_post_command(const CLI::App& app, const PostCommand& c) {

@@ -369,6 +369,16 @@ class Batch(unittest.TestCase):
             sheet = os.path.join(d, "sheets", "part-turned.html")
             self.assertEqual(read(sheet),
                              run("sheet", "-m", MACHINE, "--date", DATE, "--nc", nc, cl).stdout)
+            # A sheet that cannot be written: no program either (exit 1, as for a batch's file).
+            os.remove(nc)
+            blocker = os.path.join(d, "file")
+            with open(blocker, "w") as f:
+                f.write("not a directory\n")
+            p = run("-m", MACHINE, "-o", nc, "--sheet", blocker, cl, ok=False)
+            self.assertEqual(p.returncode, 1, p.stderr)
+            self.assertIn(f"clpost: error: cannot create the output directory '{blocker}'", p.stderr)
+            self.assertFalse(os.path.exists(nc))
+            self.assertEqual(sorted(os.listdir(d)), ["file", "sheets"])  # no temporary left
 
 
 if __name__ == "__main__":
