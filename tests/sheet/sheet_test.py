@@ -297,6 +297,22 @@ class PartTurned(unittest.TestCase):
         self.assertIn("SOURCE_DATE_EPOCH 'soon' is not a whole number of seconds", p.stderr)
 
 
+class Fallback(unittest.TestCase):
+    def test_fallback_as_the_program_says(self):
+        # A chained thread on fanuc-0i-t: neither G76 nor G92 cuts it; the program's comment
+        # names the first that was not used and what was written instead.
+        cl = os.path.join(SRC, "samples", "threads", "chain.apt")
+        nc = run("-m", MACHINE, cl).stdout
+        facts = parse(run("sheet", "-m", MACHINE, "--date", DATE, cl).stdout).facts(
+            section="thread-1")
+        self.assertEqual(facts["Output"], "emulation")
+        self.assertEqual(facts["Fallback"],
+                         "G76 not used: a chained thread: G76 cuts one straight thread line; "
+                         "G92 not used: a chained thread: G92 cuts one straight line per pass")
+        first = facts["Fallback"].split("; ")[0]
+        self.assertIn(f"({first}. {facts['Output']} instead)".upper(), nc)
+
+
 HOSTILE = """PARTNO <b>P&Q</b>
 UNITS/MM
 PPRINT TOOL: <script>alert(1)</script> & "x" 'y'
