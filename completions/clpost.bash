@@ -15,7 +15,7 @@
 # Subcommands of clpost and of each subcommand (nested ones as "machines show").
 _clpost_subcommands_of() {
   case $1 in
-    post) echo "check cl2apt machines plan plot schema verify" ;;
+    post) echo "check cl2apt machines plan plot schema sheet verify" ;;
     machines) echo "diff show" ;;
   esac
 }
@@ -26,12 +26,13 @@ _clpost_options() {
   case $1 in
     post)
       echo "-h --help --version $machine -o --output --strict -d --output-dir -r --recursive" \
-        "-j --jobs --keep-going -q --quiet --report --verify"
+        "-j --jobs --keep-going -q --quiet --report --verify --sheet --sheets --date"
       ;;
     check) echo "-h --help $machine --strict" ;;
     plan) echo "-h --help $machine --format" ;;
     verify) echo "-h --help $machine --cl --plan --tolerance" ;;
     plot) echo "-h --help $machine --cl -o --output --thread" ;;
+    sheet) echo "-h --help $machine -o --output --format --nc --date" ;;
     machines | "machines diff") echo "-h --help" ;;
     "machines show") echo "-h --help --set --origin" ;;
     schema) echo "-h --help --markdown" ;;
@@ -51,7 +52,7 @@ _clpost_positionals() {
 
 # Options that take a value (the next word is the value, not a command or an input).
 _clpost_value_options="-m --machine --set -o --output -d --output-dir -j --jobs --report --format
-  --cl --plan --tolerance --thread"
+  --cl --plan --tolerance --thread --sheet --nc --date"
 
 # The shipped machine names: the first column of `clpost machines`, from the clpost being
 # completed (so build/clpost offers its own source tree's machines and $CLPOST_DATA_DIR counts).
@@ -86,13 +87,17 @@ _clpost_complete_value() {
   local opt=$1 cur=$2
   case $opt in
     -m | --machine) _clpost_machines "$cur" ;;
-    --format) mapfile -t COMPREPLY < <(compgen -W "text json" -- "$cur") ;;
-    -d | --output-dir)
+    --format)
+      local formats="text json"
+      [[ $command == sheet ]] && formats="html json"
+      mapfile -t COMPREPLY < <(compgen -W "$formats" -- "$cur")
+      ;;
+    -d | --output-dir | --sheet)
       compopt -o filenames 2>/dev/null || :
       mapfile -t COMPREPLY < <(compgen -d -- "$cur")
       ;;
-    -o | --output | --report | --cl | --plan) _clpost_files "$cur" ;;
-    *) ;;  # --set KEY=VALUE, -j, --tolerance, --thread: nothing to offer
+    -o | --output | --report | --cl | --plan | --nc) _clpost_files "$cur" ;;
+    *) ;;  # --set KEY=VALUE, -j, --tolerance, --thread, --date: nothing to offer
   esac
 }
 

@@ -287,7 +287,7 @@ TEST(Batch, ReportJson) {
           "\"statements\": 5, \"motions\": 1, \"threads\": 0, \"passes\": 0, \"bytes_in\": " +
           n(a) + ", \"bytes_out\": " + n(oa) +
           ", \"seconds\": T, \"cycle_time\": {\"seconds\": T, \"rapids_timed\": true, "
-          "\"tools\": []}, \"diagnostics\": [\n"
+          "\"tools\": []}, \"sheet\": null, \"diagnostics\": [\n"
           "      {\"severity\": \"warning\", \"line\": 3, \"column\": 1, \"message\": "
           "\"unknown statement 'FROB' written as a comment\"}\n"
           "    ]},\n"
@@ -297,7 +297,7 @@ TEST(Batch, ReportJson) {
           "\"errors\": 1, \"warnings\": 0, \"statements\": 8, \"motions\": 1, \"threads\": 0, "
           "\"passes\": 0, \"bytes_in\": " +
           n(b) +
-          ", \"bytes_out\": 0, \"seconds\": T, \"cycle_time\": null, "
+          ", \"bytes_out\": 0, \"seconds\": T, \"cycle_time\": null, \"sheet\": null, "
           "\"diagnostics\": [\n"
           "      {\"severity\": \"error\", \"line\": 7, \"column\": 11, \"message\": "
           "\"invalid number '-1.2.3'\"}\n"
@@ -309,7 +309,7 @@ TEST(Batch, ReportJson) {
           n(c) + ", \"bytes_out\": " + n(oc) +
           ", \"seconds\": T, \"cycle_time\": {\"seconds\": T, \"rapids_timed\": true, "
           "\"tools\": [{\"tool\": 7, \"offset\": 7, \"seconds\": T, \"text\": \"\"}]}, "
-          "\"diagnostics\": []}\n"
+          "\"sheet\": null, \"diagnostics\": []}\n"
           "  ]\n"
           "}\n");
 }

@@ -1,5 +1,7 @@
 #include "cli/batch.h"
 
+#include "cli/sheet_command.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -87,11 +89,34 @@ bool plan_outputs(const std::vector<std::string>& files, const std::string& out_
   return true;
 }
 
+std::string sheet_beside(const std::string& output) {
+  return std::filesystem::path(output).replace_extension(".html").string();
+}
+
 namespace {
 
 FileStatus status_of(const PostOutcome& o) {
   if (!o.ok) return FileStatus::kError;
   return o.warnings > 0 ? FileStatus::kWarnings : FileStatus::kOk;
+}
+
+// --sheets: the sheet of a posted file beside its program; a sheet that cannot be written fails
+// the file (its program is not published).
+void write_sheet(const BatchItem& item, const Machine& machine, const BatchSettings& settings,
+                 SheetCapture& capture, FileResult& r) {
+  const SheetInfo info{item.output, settings.sheet_date, SheetFormat::kHtml};
+  std::string text, diagnostics;
+  const std::string path = sheet_beside(item.output);
+  if (sheet_text(item.input, r.outcome, capture, machine, info, text, diagnostics) &&
+      write_text_file(path, text, diagnostics)) {
+    r.sheet = path;
+    return;
+  }
+  r.outcome.ok = false;
+  ++r.outcome.errors;
+  r.outcome.diagnostics += diagnostics;
+  r.outcome.kept.push_back(
+      Diagnostic{Severity::kError, {}, "the setup sheet: " + diagnostics, {}, 1, false});
 }
 
 // Posts one file; a good program is written out but left unpublished in `written`.
@@ -101,7 +126,16 @@ void post_one(const BatchItem& item, const Machine& machine, const BatchSettings
   PostRequest req{item.input, item.output, &machine, settings.post, nullptr};
   req.verify = settings.verify;
   req.publish_later = [&written](std::unique_ptr<OutputFile> file) { written = std::move(file); };
+  SheetCapture capture;
+  if (settings.sheets) sheet_request(req, capture);
   r.outcome = post_file(req);
+  if (settings.sheets && r.outcome.ok) {
+    write_sheet(item, machine, settings, capture, r);
+    if (!r.outcome.ok && written) {  // no program without its sheet
+      written->abort();
+      written.reset();
+    }
+  }
   r.status = status_of(r.outcome);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -39,6 +39,7 @@ enum class FileStatus { kOk, kWarnings, kError, kNotPosted };
 
 struct FileResult {
   BatchItem item;
+  std::string sheet;  // the setup sheet written next to the program (--sheets), else ""
   FileStatus status = FileStatus::kNotPosted;
   PostOutcome outcome;  // empty when not posted
   double seconds = 0;
@@ -61,8 +62,13 @@ struct BatchSettings {
   unsigned jobs = 1;        // worker threads (at least 1)
   bool keep_going = false;  // without: no new file is started after the first failure
   PostOptions post;
-  bool verify = false;  // --verify: a program that does not cut its plan fails its file
+  bool verify = false;     // --verify: a program that does not cut its plan fails its file
+  bool sheets = false;     // --sheets: a setup sheet next to each program (<stem>.html)
+  std::string sheet_date;  // the date the sheets show (sheet_date())
 };
+
+// Where --sheets puts the sheet of the program `output`: beside it, <stem>.html.
+std::string sheet_beside(const std::string& output);
 
 // Posts every item with `settings.jobs` workers; one more thread publishes the programs they
 // write (fsync and rename, many at a time: see PublishQueue in batch.cc). `on_result` is called

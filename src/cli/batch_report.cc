@@ -62,12 +62,13 @@ std::string batch_report_json(const BatchReportInfo& info, const BatchSummary& s
                    "{}\n    {{\"input\": {}, \"output\": {}, \"status\": \"{}\", \"errors\": {}, "
                    "\"warnings\": {}, \"statements\": {}, \"motions\": {}, \"threads\": {}, "
                    "\"passes\": {}, \"bytes_in\": {}, \"bytes_out\": {}, \"seconds\": {:.6f}, "
-                   "\"cycle_time\": {}, \"diagnostics\": [",
+                   "\"cycle_time\": {}, \"sheet\": {}, \"diagnostics\": [",
                    i ? "," : "", json_string(r.item.input),
                    written ? json_string(r.item.output) : std::string("null"),
                    status_name(r.status), p.errors, p.warnings, p.stats.statements, p.stats.motions,
                    p.stats.threads, p.stats.passes, p.bytes_in, written ? p.bytes_out : 0,
-                   r.seconds, written ? cycle_time_json(p.cycle_time) : std::string("null"));
+                   r.seconds, written ? cycle_time_json(p.cycle_time) : std::string("null"),
+                   written && !r.sheet.empty() ? json_string(r.sheet) : std::string("null"));
     for (size_t k = 0; k < p.kept.size(); ++k) {
       const Diagnostic& d = p.kept[k];
       fmt::format_to(out,

@@ -6,12 +6,14 @@
 //                "errors": 1, "warnings": 2, "bytes_in": 1200, "bytes_out": 900, "seconds": 0.01},
 //    "files": [{"input": "in/a.cl", "output": "out/a.nc", "status": "ok", "errors": 0,
 //               "warnings": 0, "statements": 40, "motions": 31, "threads": 1, "passes": 5,
-//               "bytes_in": 400, "bytes_out": 300, "seconds": 0.002,
+//               "bytes_in": 400, "bytes_out": 300, "seconds": 0.002, "cycle_time": {…},
+//               "sheet": "out/a.html",
 //               "diagnostics": [{"severity": "warning", "line": 5, "column": 1,
 //                                "message": "…"}]}, …]}
 //
 // "status" is ok | warnings | error | not-posted; "output" is null unless the program was
-// written; "line"/"column" are 0 when unknown. Written atomically like the NC programs.
+// written; "sheet" is the setup sheet written beside it (--sheets), else null; "line"/"column"
+// are 0 when unknown. Written atomically like the NC programs.
 #include <string>
 #include <vector>
 

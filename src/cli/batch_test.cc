@@ -197,6 +197,7 @@ TEST(BatchReport, Json) {
   rs[0].outcome.stats.statements = 12;
   rs[0].outcome.stats.motions = 7;
   rs[0].seconds = 0.5;
+  rs[0].sheet = "out/p.html";  // --sheets: the report links the program's sheet
   BatchSummary s = summarize(rs, 1.5);
   EXPECT_EQ(batch_report_json(BatchReportInfo{"generic-lathe", "out", 2}, s, rs),
             R"({
@@ -205,8 +206,8 @@ TEST(BatchReport, Json) {
   "jobs": 2,
   "summary": {"files": 2, "ok": 1, "with_warnings": 0, "failed": 1, "not_posted": 0, "errors": 1, "warnings": 0, "bytes_in": 200, "bytes_out": 80, "seconds": 1.500000},
   "files": [
-    {"input": "in/p.cl", "output": "out/p.nc", "status": "ok", "errors": 0, "warnings": 0, "statements": 12, "motions": 7, "threads": 2, "passes": 9, "bytes_in": 100, "bytes_out": 80, "seconds": 0.500000, "cycle_time": {"seconds": 0.000, "rapids_timed": true, "tools": []}, "diagnostics": []},
-    {"input": "in/p.cl", "output": null, "status": "error", "errors": 1, "warnings": 0, "statements": 0, "motions": 0, "threads": 0, "passes": 0, "bytes_in": 100, "bytes_out": 0, "seconds": 0.000000, "cycle_time": null, "diagnostics": [
+    {"input": "in/p.cl", "output": "out/p.nc", "status": "ok", "errors": 0, "warnings": 0, "statements": 12, "motions": 7, "threads": 2, "passes": 9, "bytes_in": 100, "bytes_out": 80, "seconds": 0.500000, "cycle_time": {"seconds": 0.000, "rapids_timed": true, "tools": []}, "sheet": "out/p.html", "diagnostics": []},
+    {"input": "in/p.cl", "output": null, "status": "error", "errors": 1, "warnings": 0, "statements": 0, "motions": 0, "threads": 0, "passes": 0, "bytes_in": 100, "bytes_out": 0, "seconds": 0.000000, "cycle_time": null, "sheet": null, "diagnostics": [
       {"severity": "error", "line": 7, "column": 11, "message": "invalid number '-1.2.3' \"q\""}
     ]}
   ]

@@ -8,8 +8,10 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -22,10 +24,12 @@
 #include "cli/plot_command.h"
 #include "cli/post_file.h"
 #include "cli/schema_command.h"
+#include "cli/sheet_command.h"
 #include "cli/verify_command.h"
 #include "emitters/emitter.h"
 #include "machine/machine_loader.h"
 #include "planner/plan_format.h"
+#include "sheet/sheet.h"
 #include "support/output_file.h"
 
 #ifndef CLPOST_VERSION
@@ -63,6 +67,9 @@ constexpr const char* kFooter = R"(Examples:
   clpost -m fanuc-0i-t --verify -o part.nc part.cl     post, then check the program cuts the plan
   clpost verify -m fanuc-0i-t part.nc --cl part.cl     check a program (edited by hand?)
   clpost plot -o part.svg part.cl         backplot and every thread's cross-section, as SVG
+  clpost sheet -m fanuc-0i-t -o part.html part.cl   the setup sheet: tools, times, threads
+  clpost -m fanuc-0i-t -o part.nc --sheet sheets/ part.cl   post, and sheets/part.html
+  clpost -m fanuc-0i-t -d out/ --sheets --report r.json *.cl   out/<stem>.html beside each
   clpost plot -m fanuc-0i-t --cl part.cl --thread 2 -o t2.svg part.nc   a program's passes
   clpost cl2apt -o part.apt part.cl       a binary CL file (ISO 3592 CLDATA) as APT text
 
@@ -97,9 +104,10 @@ struct BatchOpts {
   bool keep_going = false;
   bool quiet = false;
   std::string report;
+  bool sheets = false;
 
   bool used(const CLI::App& app) const {
-    for (const char* name : {"-r", "-j", "--keep-going", "--quiet", "--report"})
+    for (const char* name : {"-r", "-j", "--keep-going", "--quiet", "--report", "--sheets"})
       if (app.count(name) > 0) return true;
     return false;
   }
@@ -118,6 +126,18 @@ void add_batch_opts(CLI::App& app, BatchOpts& b) {
   app.add_flag("-q,--quiet", b.quiet, "Batch: print only the failed files");
   app.add_option("--report", b.report, "Batch: write per-file results as JSON")
       ->type_name("FILE.json");
+  app.add_flag("--sheets", b.sheets,
+               "Batch: write each program's setup sheet beside it, OUTDIR/<stem>.html (the "
+               "report links it)");
+}
+
+// The date the sheets show: --date, else SOURCE_DATE_EPOCH, else now. False (reported) for a
+// SOURCE_DATE_EPOCH that is not a number.
+bool resolve_sheet_date(const std::string& given, std::string& date) {
+  std::string err;
+  if (sheet_date(given, std::getenv("SOURCE_DATE_EPOCH"), date, err)) return true;
+  print_err(fmt::format("clpost: error: {}\n", err));
+  return false;
 }
 
 // The batch's output directory, created when missing; false (reported) when it cannot be
@@ -153,7 +173,7 @@ bool write_report(const std::string& path, const std::string& json) {
 // Problems found before anything is posted (usage, the output directory) exit 2; failed files
 // exit 1.
 int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bool verify,
-                      const std::vector<std::string>& args) {
+                      const std::string& sheet_date, const std::vector<std::string>& args) {
   const auto t0 = std::chrono::steady_clock::now();
   Machine m;
   if (!load(mo, m)) return kExitUsage;
@@ -172,6 +192,8 @@ int run_batch_command(const MachineOpts& mo, const BatchOpts& b, bool strict, bo
   settings.keep_going = b.keep_going;
   settings.post = PostOptions{strict};
   settings.verify = verify;
+  settings.sheets = b.sheets;
+  settings.sheet_date = sheet_date;
   const bool bar = !b.quiet && ::isatty(STDERR_FILENO) == 1;
   size_t done = 0, failed = 0;
   auto on_result = [&](const FileResult& r) {
@@ -211,7 +233,15 @@ struct PostCommand {
   bool strict = false;
   BatchOpts batch;
   bool verify = false;
+  std::string sheet_dir;
+  std::string date;
 };
+
+void add_sheet_date_opt(CLI::App& app, std::string& date) {
+  app.add_option("--date", date,
+                 "The date a setup sheet shows (default: SOURCE_DATE_EPOCH, else now, UTC)")
+      ->type_name("TEXT");
+}
 
 void add_post_command(CLI::App& app, PostCommand& c) {
   add_machine_opts(app, c.machine);
@@ -221,8 +251,63 @@ void add_post_command(CLI::App& app, PostCommand& c) {
   app.add_flag("--verify", c.verify,
                "Read the program back through the control's laws and check it cuts the plan; "
                "a program that does not is an error (nothing written)");
+  app.add_option("--sheet", c.sheet_dir,
+                 "Also write the program's setup sheet, DIR/<stem>.html (clpost sheet)")
+      ->type_name("DIR");
+  add_sheet_date_opt(app, c.date);
   app.add_option("inputs", c.inputs,
                  "CL file to post ('-' for standard input); with -d: files and directories");
+}
+
+// --sheet DIR: the sheet of the post just made, DIR/<stem>.html. False (reported) when it
+// cannot be written.
+bool write_post_sheet(const PostCommand& c, const PostOutcome& r, SheetCapture& capture,
+                      const Machine& m, const std::string& date) {
+  if (!make_output_dir(c.sheet_dir)) return false;
+  const SheetInfo info{c.output.empty() || c.output == "-" ? "" : c.output, date,
+                       SheetFormat::kHtml};
+  std::string text, diagnostics;
+  const bool ok = sheet_text(c.inputs[0], r, capture, m, info, text, diagnostics) &&
+                  write_text_file(sheet_path_in(c.sheet_dir, c.inputs[0], SheetFormat::kHtml), text,
+                                  diagnostics);
+  print_err(diagnostics);
+  return ok;
+}
+
+// One file: its program to -o (standard output), its sheet with --sheet DIR.
+int post_one_file(const PostCommand& c) {
+  const bool sheet = !c.sheet_dir.empty();
+  if (sheet && c.inputs[0] == "-") {
+    print_err("clpost: error: --sheet names the sheet after the input: not with '-'\n");
+    return kExitUsage;
+  }
+  std::string date;
+  if (sheet && !resolve_sheet_date(c.date, date)) return kExitUsage;
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  PostRequest req{c.inputs[0], c.output.empty() ? "-" : c.output, &m, PostOptions{c.strict},
+                  nullptr};
+  req.verify = c.verify;
+  SheetCapture capture;
+  std::unique_ptr<OutputFile> held;  // --sheet: a program file waits for its sheet
+  if (sheet) {
+    sheet_request(req, capture);
+    req.publish_later = [&held](std::unique_ptr<OutputFile> f) { held = std::move(f); };
+  }
+  PostOutcome r = post_file(req);
+  print_err(r.verify_report);
+  print_err(r.diagnostics);
+  if (!r.ok) return kExitInput;
+  if (sheet && !write_post_sheet(c, r, capture, m, date)) {
+    if (held) held->abort();  // no program without its sheet, as in a batch
+    return kExitInput;
+  }
+  std::string err;
+  if (held && !held->publish(err)) {
+    print_err(fmt::format("clpost: error: {}\n", err));
+    return kExitInput;
+  }
+  return kExitOk;
 }
 
 int run_post_command(const CLI::App& app, const PostCommand& c) {
@@ -240,21 +325,19 @@ int run_post_command(const CLI::App& app, const PostCommand& c) {
       print_err("clpost: error: -o and -d cannot be used together\n");
       return kExitUsage;
     }
-    return run_batch_command(c.machine, c.batch, c.strict, c.verify, c.inputs);
+    if (!c.sheet_dir.empty()) {
+      print_err("clpost: error: in a batch, --sheets writes the sheets beside the programs\n");
+      return kExitUsage;
+    }
+    std::string date;
+    if (c.batch.sheets && !resolve_sheet_date(c.date, date)) return kExitUsage;
+    return run_batch_command(c.machine, c.batch, c.strict, c.verify, date, c.inputs);
   }
   if (c.inputs.size() > 1) {
     print_err("clpost: error: several inputs need an output directory: -d OUTDIR\n");
     return kExitUsage;
   }
-  Machine m;
-  if (!load(c.machine, m)) return kExitUsage;
-  PostRequest req{c.inputs[0], c.output.empty() ? "-" : c.output, &m, PostOptions{c.strict},
-                  nullptr};
-  req.verify = c.verify;
-  PostOutcome r = post_file(req);
-  print_err(r.verify_report);
-  print_err(r.diagnostics);
-  return r.ok ? kExitOk : kExitInput;
+  return post_one_file(c);
 }
 
 // `clpost machines`, `machines show`, `machines diff`.
@@ -386,6 +469,39 @@ int run_plan_command(const PlanCommand& c) {
   return rc;
 }
 
+// `clpost sheet`: the setup sheet of a CL file, as HTML or JSON.
+struct SheetCommand {
+  MachineOpts machine;
+  SheetRequest req;
+  std::string format = "html";
+  std::string date;
+};
+
+CLI::App* add_sheet_command(CLI::App& app, SheetCommand& c) {
+  CLI::App* sheet = app.add_subcommand(
+      "sheet", "The setup sheet of a CL file: one self-contained HTML page (or JSON)");
+  add_machine_opts(*sheet, c.machine);
+  sheet->add_option("input", c.req.input, "CL file")->required();
+  sheet->add_option("-o,--output", c.req.output, "Sheet file (default: standard output)");
+  sheet->add_option("--format", c.format, "html or json")->check(CLI::IsMember({"html", "json"}));
+  sheet->add_option("--nc", c.req.info.nc_file, "The NC program's name the sheet shows")
+      ->type_name("FILE");
+  add_sheet_date_opt(*sheet, c.date);
+  return sheet;
+}
+
+int run_sheet_command(const SheetCommand& c) {
+  SheetRequest req = c.req;
+  req.info.format = c.format == "json" ? SheetFormat::kJson : SheetFormat::kHtml;
+  if (!resolve_sheet_date(c.date, req.info.date)) return kExitUsage;
+  Machine m;
+  if (!load(c.machine, m)) return kExitUsage;
+  req.machine = &m;
+  SheetOutcome r = sheet_file(req);
+  print_err(r.diagnostics);
+  return r.ok ? kExitOk : kExitInput;
+}
+
 // `clpost verify`: a program against the plan of a CL file or of a plan JSON.
 struct VerifyCommand {
   MachineOpts machine;
@@ -480,6 +596,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* verify = add_verify_command(app, verify_cmd);
   PlotCommand plot_cmd;
   CLI::App* plot = add_plot_command(app, plot_cmd);
+  SheetCommand sheet_cmd;
+  CLI::App* sheet = add_sheet_command(app, sheet_cmd);
   Cl2AptRequest cl2apt_req;
   CLI::App* cl2apt = add_cl2apt_command(app, cl2apt_req);
 
@@ -495,6 +613,7 @@ int run_cli(int argc, char** argv) {
   if (*cl2apt) return run_cl2apt_command(cl2apt_req);
   if (*verify) return run_verify_command(verify_cmd);
   if (*plot) return run_plot_command(plot_cmd);
+  if (*sheet) return run_sheet_command(sheet_cmd);
   if (*check) return run_check_command(check_cmd);
   if (*plan) return run_plan_command(plan_cmd);
   return run_post_command(app, post);

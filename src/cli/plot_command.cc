@@ -36,15 +36,6 @@ Plans plans_of_cl(const std::string& cl, const Machine& m) {
   return p;
 }
 
-bool simulate_text(std::string_view text, const std::string& name, const Machine& m,
-                   Simulation& sim, std::string& diagnostics) {
-  Diagnostics d(name);
-  reader::LineSource src(text);
-  const bool ok = simulate_nc(src, m, d, sim);
-  diagnostics += d.render_all();
-  return ok;
-}
-
 bool simulate_file(const std::string& path, const Machine& m, Simulation& sim,
                    std::string& diagnostics) {
   InputFile f;
@@ -152,6 +143,15 @@ bool write_svg(const std::string& path, const std::string& svg, std::string& dia
 }
 
 }  // namespace
+
+bool simulate_text(std::string_view text, const std::string& name, const Machine& m,
+                   Simulation& sim, std::string& diagnostics) {
+  Diagnostics d(name);
+  reader::LineSource src(text);
+  const bool ok = simulate_nc(src, m, d, sim);
+  diagnostics += d.render_all();
+  return ok;
+}
 
 PlotOutcome plot_file(const PlotRequest& req) {
   PlotOutcome out;

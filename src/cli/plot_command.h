@@ -2,7 +2,10 @@
 // `clpost plot`: SVG pictures of a CL file's plan or of an NC program's motion (plot/).
 #include <string>
 
+#include <string_view>
+
 #include "machine/machine.h"
+#include "simulator/control_sim.h"
 
 namespace clpost {
 
@@ -25,5 +28,10 @@ struct PlotOutcome {
 // simulation for the backplot; its sections come from the plan. An NC program is run through
 // the simulation; with `cl`, its sections show where its cuts are, measured against the plan.
 PlotOutcome plot_file(const PlotRequest& req);
+
+// Runs the NC program `text` (shown in diagnostics as `name`) through the machine's control
+// simulation into `sim`; its diagnostics are appended to `diagnostics`. False on errors.
+bool simulate_text(std::string_view text, const std::string& name, const Machine& m,
+                   Simulation& sim, std::string& diagnostics);
 
 }  // namespace clpost

@@ -60,6 +60,8 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
   options.keep_motions = options.keep_motions || req.verify;
   PostSummary summary = post(reader, *req.machine, sink, diags, options, on_thread);
   out.holes = std::move(summary.holes);
+  out.outputs = std::move(summary.outputs);
+  out.partno = std::move(summary.partno);
   out.path = std::move(summary.path);
   out.cycle_time = std::move(summary.cycle_time);
   out.stats = summary.stats;

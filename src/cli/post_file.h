@@ -39,10 +39,12 @@ struct PostOutcome {
   LengthUnit units = LengthUnit::kMm;
   size_t bytes_in = 0;
   size_t bytes_out = 0;
-  std::string verify_report;  // with PostRequest::verify
-  std::vector<Hole> holes;    // the holes written (CYCLE/DRILL …), for verify
-  CycleTime cycle_time;       // the tool list and estimated cycle time
-  ClPath path;                // every motion and its state (with --verify, plans_of)
+  std::string verify_report;        // with PostRequest::verify
+  std::vector<Hole> holes;          // the holes written (CYCLE/DRILL …), for verify
+  std::vector<OutputUsed> outputs;  // the output of each thread, hole, undercut (clpost sheet)
+  std::string partno;               // PARTNO's text (clpost sheet)
+  CycleTime cycle_time;             // the tool list and estimated cycle time
+  ClPath path;                      // every motion and its state (with --verify, plans_of)
 };
 
 PostOutcome post_file(const PostRequest& req);

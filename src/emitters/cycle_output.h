@@ -16,6 +16,22 @@
 
 namespace clpost {
 
+// An output that was not used, and why.
+struct Unfit {
+  std::string name;
+  std::string reason;
+  SourceLoc where;
+};
+
+// Which output wrote a job (at `loc`, its CL statement), and the ones tried before it: what the
+// program's fallback comment says, as data (clpost sheet).
+struct OutputUsed {
+  SourceLoc loc;
+  std::string name;                // "G76", "moves", …
+  std::vector<Unfit> unfit;        // tried first, did not cut the job exactly
+  std::vector<std::string> notes;  // accepted differences
+};
+
 struct EmitContext {
   Diagnostics& diags;
   const SavedLines& lines;  // the job's CL statement, for diagnostics
@@ -23,6 +39,7 @@ struct EmitContext {
   double feed = 0;          // feed in force (for linear pull-outs), output units
   FeedMode feed_mode = FeedMode::kPerMinute;
   SourceLoc loc = {};  // where the diagnostics point (a thread's: its plan's loc)
+  std::vector<OutputUsed>* used = nullptr;  // when set, gets the output each job is written by
 };
 
 // Whether an output cuts a job exactly: a cycle is written only when what the control will cut
@@ -44,13 +61,6 @@ class CycleOutput {
   virtual Fit fit(const Job& job, const Machine& m) const = 0;
   // Writes a job that fits. Returns false (with a diagnostic) when it cannot.
   virtual bool emit(const Job& job, NcProgram& prog, const EmitContext& ctx) = 0;
-};
-
-// An output that was not used, and why.
-struct Unfit {
-  std::string name;
-  std::string reason;
-  SourceLoc where;
 };
 
 // "G76 not used: <why>. G92 instead".
@@ -83,6 +93,7 @@ bool emit_after_fallback(CycleOutput<Job>& used, const Fit& fit, const std::vect
                          const Job& job, NcProgram& prog, const EmitContext& ctx) {
   if (!unfit.empty()) prog.comment(fallback_comment(unfit.front(), used.name()));
   for (const std::string& n : fit.notes) prog.comment(n);
+  if (ctx.used) ctx.used->push_back({ctx.loc, std::string(used.name()), unfit, fit.notes});
   return used.emit(job, prog, ctx);
 }
 

@@ -44,6 +44,11 @@ void time_feed_rate(PostState& s);
 
 // A feed move to `to` at the feed in force, in full (cycle_time.cc).
 void time_feed_move(PostState& s, Vec2 to);
+// The feed and speed in force join the clock tool's lists (ToolTime::feeds, speeds); the fast
+// path below calls it once after each change of feed, speed or tool (clock_feed_noted).
+void note_feed_used(PostState& s);
+// The last tool's NC lines end at the lines written so far (the end of the program).
+void end_nc_lines(PostState& s);
 
 // A feed move to `to` at the feed in force. The common one inline (every GOTO of a turning
 // program): the clock knows where its tool is, the tool list has begun and the feed per minute
@@ -52,7 +57,11 @@ inline void time_feed(PostState& s, Vec2 to) {
   std::vector<ToolTime>& tools = s.clock.tools;
   const double feed = s.clock_feed;
   if (!s.clock_at || tools.empty() || !(feed > 0)) return time_feed_move(s, to);
-  reach(tools.back(), to, 60 * (move_length(*s.clock_at, to) / feed));
+  if (!s.clock_feed_noted) [[unlikely]]
+    note_feed_used(s);
+  const double seconds = 60 * (move_length(*s.clock_at, to) / feed);
+  reach(tools.back(), to, seconds);
+  tools.back().cutting_seconds += seconds;
   s.clock_at = to;
 }
 

@@ -40,6 +40,25 @@ void add(PostState& s, double seconds) {
   current(s).seconds += seconds;
 }
 
+template <class T>
+void add_once(std::vector<T>& v, const T& x) {
+  if (std::find(v.begin(), v.end(), x) == v.end()) v.push_back(x);
+}
+
+// A cutting move to `p` after `seconds`, at feed `f` (in `mode`) and the spindle speed `speed`.
+void cut_to(PostState& s, Vec2 p, double seconds, FeedUsed f, SpeedUsed speed) {
+  ToolTime& t = current(s);
+  reach(t, p, seconds);
+  t.cutting_seconds += seconds;
+  if (f.value > 0) add_once(t.feeds, f);
+  if (speed.value > 0) add_once(t.speeds, speed);
+  s.clock_at = p;
+}
+
+SpeedUsed speed_in_force(const PostState& s) {
+  return s.spindle.on ? SpeedUsed{s.spindle.value, s.spindle.css} : SpeedUsed{};
+}
+
 // Minutes to feed `length` along radii r0 .. r1 (linearly) at feed `f` per revolution under
 // constant surface speed: rpm(r) = K / (2 pi r), clamped at the limit below the radius rc.
 double css_minutes(const PostState& s, double length, double r0, double r1, double f) {
@@ -77,13 +96,16 @@ void feed_to(PostState& s, Vec2 to, double f, FeedMode mode) {
     const Vec2 a = *s.clock_at;
     seconds = 60 * feed_minutes(s, move_length(a, to), a.x, to.x, f, mode);
   }
-  arrive(s, to, seconds);
+  cut_to(s, to, seconds, FeedUsed{f, mode}, speed_in_force(s));
 }
 
 }  // namespace
 
 void time_tool_change(PostState& s) {
+  const size_t written = s.prog.writer().lines();
+  if (!s.clock.tools.empty()) s.clock.tools.back().last_nc_line = written;
   ToolTime t;
+  t.first_nc_line = written + 1;
   t.tool = s.tool.number;
   t.offset = s.tool.offset;
   t.text = s.tool.text;
@@ -106,6 +128,7 @@ void time_rapid(PostState& s, Vec2 to) {
 void time_feed_rate(PostState& s) {
   const double f = s.feed, rpm = s.spindle.value;
   s.clock_feed = -1;
+  s.clock_feed_noted = false;
   if (!(f > 0)) return;
   if (s.feed_mode == FeedMode::kPerMinute) {
     s.clock_feed = f;
@@ -116,6 +139,17 @@ void time_feed_rate(PostState& s) {
 
 void time_feed_move(PostState& s, Vec2 to) {
   feed_to(s, to, s.feed, s.feed_mode);
+}
+
+void note_feed_used(PostState& s) {
+  ToolTime& t = current(s);
+  if (s.feed > 0) add_once(t.feeds, FeedUsed{s.feed, s.feed_mode});
+  if (const SpeedUsed sp = speed_in_force(s); sp.value > 0) add_once(t.speeds, sp);
+  s.clock_feed_noted = true;
+}
+
+void end_nc_lines(PostState& s) {
+  if (!s.clock.tools.empty()) s.clock.tools.back().last_nc_line = s.prog.writer().lines();
 }
 
 void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
@@ -134,7 +168,7 @@ void time_arc(PostState& s, Vec2 to, Vec2 center, bool ccw) {
     const double rad = center.x + r * std::sin(u);
     minutes += feed_minutes(s, r * std::fabs(sweep) / kSteps, rad, rad, s.feed, s.feed_mode);
   }
-  arrive(s, to, 60 * minutes);
+  cut_to(s, to, 60 * minutes, FeedUsed{s.feed, s.feed_mode}, speed_in_force(s));
 }
 
 void time_dwell(PostState& s, double seconds) {
@@ -145,7 +179,8 @@ void time_sync(PostState& s, Vec2 to, double lead, double rpm) {
   if (s.clock_at && lead > 0 && rpm > 0) {
     const double travel =
         std::max(std::fabs(to.x - s.clock_at->x), std::fabs(to.z - s.clock_at->z));
-    return arrive(s, to, 60 * travel / (lead * rpm));
+    return cut_to(s, to, 60 * travel / (lead * rpm), FeedUsed{lead, FeedMode::kPerRev},
+                  SpeedUsed{rpm, false});
   }
   arrive(s, to);
 }
@@ -188,13 +223,24 @@ std::string time_text(double seconds) {
   return fmt::format("{}:{:02}.{}", m, sec, frac);
 }
 
+bool listed(const ToolTime& t) {
+  return !(t.tool < 0 && t.seconds == 0 && t.x_min > t.x_max);
+}
+
+void shift_nc_lines(CycleTime& t, size_t lines) {
+  for (ToolTime& tt : t.tools) {
+    if (tt.first_nc_line > 0) tt.first_nc_line += lines;
+    if (tt.last_nc_line > 0) tt.last_nc_line += lines;
+  }
+}
+
 std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter) {
   std::vector<std::string> out;
   const char* u = units == LengthUnit::kInch ? "in" : "mm";
   const double xs = diameter_factor(diameter);
   size_t changes = 0;
   for (const ToolTime& tt : t.tools) {
-    if (tt.tool < 0 && tt.seconds == 0 && tt.x_min > tt.x_max) continue;
+    if (!listed(tt)) continue;
     changes += tt.tool >= 0;
     std::string line = tt.tool < 0 ? std::string("before the first tool")
                                    : fmt::format("T{} offset {}", tt.tool, tt.offset);

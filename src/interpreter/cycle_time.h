@@ -22,12 +22,32 @@
 
 namespace clpost {
 
+// A feed or spindle speed a tool cuts with (clpost sheet): the value as the CL gave it, CL units.
+struct FeedUsed {
+  double value = 0;
+  FeedMode mode = FeedMode::kPerMinute;
+  bool operator==(const FeedUsed&) const = default;
+};
+struct SpeedUsed {
+  double value = 0;  // rpm, or the surface speed when css
+  bool css = false;  // m/min (ft/min in inch programs)
+  bool operator==(const SpeedUsed&) const = default;
+};
+
 struct ToolTime {
   int tool = -1;  // -1: before the first tool change
   int offset = -1;
   std::string text;
   std::optional<double> nose_radius;
   double seconds = 0;
+  double cutting_seconds = 0;  // of `seconds`: feed, arc and synchronized (thread, tap) moves
+  // The NC program's lines (1-based) from the tool change to the last before the next one (0:
+  // none written), counting the program_header's lines.
+  size_t first_nc_line = 0, last_nc_line = 0;
+  // The feeds and speeds its feed moves cut with, in the order first used, each once; a thread's
+  // feed is its lead per revolution.
+  std::vector<FeedUsed> feeds;
+  std::vector<SpeedUsed> speeds;
   // The extremes of X (as a radius) and Z the tool reaches (min > max: it never moves).
   double x_min = std::numeric_limits<double>::infinity();
   double x_max = -std::numeric_limits<double>::infinity();
@@ -50,6 +70,11 @@ std::string time_text(double seconds);
 // The tool list and times as text lines ("T1 D1 ...", then "total ..."), for clpost check and
 // the NC header; each line without a line ending, in `units`.
 std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, bool diameter);
+// Whether cycle_time_lines lists `t` (the entry before the first tool only when it moves or takes
+// time): the sheet lists the same tools.
+bool listed(const ToolTime& t);
+// Every tool's NC lines moved down by `lines` (a program_header written before them).
+void shift_nc_lines(CycleTime& t, size_t lines);
 
 // The hooks that time a program as it is posted are in clock.h.
 

@@ -129,8 +129,8 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   restart_stopped_spindle(s, st);
   ++s.stats.motions;
   const SavedLines lines = SavedLines::of(st);
-  const bool r =
-      write_hole(s.prog, h, EmitContext{.diags = s.diags, .lines = lines, .loc = st.loc});
+  const bool r = write_hole(
+      s.prog, h, EmitContext{.diags = s.diags, .lines = lines, .loc = st.loc, .used = &s.outputs});
   time_hole(s, h);
   if (s.feed_given) s.prog.set_feed(s.feed, s.feed_mode);
   s.pos = cl_point(s, Vec2{0, h.retract});

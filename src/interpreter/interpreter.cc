@@ -57,6 +57,10 @@ void Interpreter::end_of_input(uint32_t last_line) {
   finish_program(s);
 }
 
+const std::string& Interpreter::partno() const {
+  return state_->partno;
+}
+
 void Interpreter::finish() {
   finish_program(*state_);
 }

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "interpreter/interpreter.h"
 #include "writer/nc_program.h"
 
@@ -77,9 +79,16 @@ PostSummary PostRun::end(bool reader_gave_up, uint32_t last_line, size_t bytes_i
   summary.units = interp_.units();
   summary.bytes_in = bytes_in;
   summary.holes = interp_.take_holes();
+  summary.outputs = interp_.take_outputs();
+  summary.partno = interp_.partno();
   summary.cycle_time = interp_.cycle_time();
   summary.path = interp_.take_path();
-  if (header_) write_with_header(m_, body_.out, header_text(m_, summary, diags_), out_);
+  if (header_) {
+    const std::string header = header_text(m_, summary, diags_);
+    shift_nc_lines(summary.cycle_time,
+                   static_cast<size_t>(std::count(header.begin(), header.end(), '\n')));
+    write_with_header(m_, body_.out, header, out_);
+  }
   return summary;
 }
 

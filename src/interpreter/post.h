@@ -24,9 +24,11 @@ struct PostSummary {
   PostStats stats;
   LengthUnit units = LengthUnit::kMm;  // of the CL file (its last UNITS/, else the machine's)
   size_t bytes_in = 0;
-  std::vector<Hole> holes;  // every hole on the spindle axis written, in order (verify)
-  CycleTime cycle_time;     // the tool list and estimated cycle time (cycle_time.h)
-  ClPath path;              // with PostOptions::keep_motions (verify)
+  std::vector<Hole> holes;          // every hole on the spindle axis written, in order (verify)
+  std::vector<OutputUsed> outputs;  // the output each thread, hole and undercut is written by
+  std::string partno;               // PARTNO's text
+  CycleTime cycle_time;             // the tool list and estimated cycle time (cycle_time.h)
+  ClPath path;                      // with PostOptions::keep_motions (verify)
 };
 
 // One post in progress, the part of post() that does not depend on the reader: the program

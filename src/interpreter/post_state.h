@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "emitters/cycle_output.h"
 #include "interpreter/cl_motion.h"
 #include "interpreter/cycle_time.h"
 #include "interpreter/hole_cycle.h"
@@ -121,13 +122,15 @@ struct PostState {
   bool in_cycle = false;  // between CYCLE/ and CYCLE/OFF: its GOTOs are holes or not posted
   std::optional<HoleCycle> hole_cycle;  // a hole-making cycle in force: its GOTOs are holes
   std::vector<Hole> holes;              // every hole written, in order (verify)
+  std::vector<OutputUsed> outputs;      // the output of every thread, hole and undercut written
   CycleTime clock;                      // the tool list and estimated times (cycle_time.h)
   ClPath cl_path;                       // with PostOptions::keep_motions
   std::optional<Vec2> clock_at;         // where the clock's tool is (lathe frame), if known
   size_t y_warnings = 0;                // points off the lathe plane (warned once)
   std::vector<std::string> noted;       // keys of notes already given once
   ThreadSequence thread;                // the thread sequence being read, if any
-  double clock_feed = -1;  // the feed in force for the clock, per minute (time_feed_rate)
+  double clock_feed = -1;         // the feed in force for the clock, per minute (time_feed_rate)
+  bool clock_feed_noted = false;  // the clock tool's feeds and speeds have the feed in force
 };
 
 // Diagnostics at statement `st` (its own line text is shown).

@@ -2,6 +2,7 @@
 // (refused) and the records a lathe program skips.
 #include <fmt/format.h>
 
+#include "interpreter/clock.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -147,6 +148,7 @@ void finish_program(PostState& s) {
   if (s.ended) return;
   end_sequences(s);
   ensure_started(s);
+  end_nc_lines(s);  // the program end is no tool's
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
   const NcWriter& w = s.prog.writer();

@@ -124,7 +124,7 @@ void cut_multi_thread(PostState& s, ThreadPlan& plan, const SavedLines& lines) {
   s.stats.passes += plan.passes.size();
   s.prog.comment(fmt::format("thread line {}: {} passes, pitch {:.6g}, depth {:.6g}", plan.loc.line,
                              plan.passes.size(), plan.pitch.pitch, plan.depth));
-  EmitContext ctx{s.diags, lines, s.thread.rpm, s.feed, s.feed_mode};
+  EmitContext ctx{s.diags, lines, s.thread.rpm, s.feed, s.feed_mode, plan.loc, &s.outputs};
   s.thread.emitter->emit(plan, s.prog, ctx);
   time_thread(s, plan, s.thread.rpm);
   s.stats.motions += plan.passes.size() * 4;

@@ -123,8 +123,10 @@ void undercut_stmt(PostState& s, const Statement& st) {
   job.form_loc = u.form_loc;
   const SavedLines lines = SavedLines::of(st);
   UndercutWritten written;
-  if (!write_undercut(s.prog, job, EmitContext{.diags = s.diags, .lines = lines, .loc = st.loc},
-                      written))
+  if (!write_undercut(
+          s.prog, job,
+          EmitContext{.diags = s.diags, .lines = lines, .loc = st.loc, .used = &s.outputs},
+          written))
     return;
   if (written.exit) record_exit(s, st.loc.line, *written.exit);
   s.stats.motions += written.moves;

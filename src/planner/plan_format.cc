@@ -123,6 +123,21 @@ bool is_multi(const ThreadPlan& p) {
 
 }  // namespace
 
+std::vector<double> pass_steps(const ThreadPlan& p) {
+  std::vector<double> steps;
+  steps.reserve(p.passes.size());
+  std::vector<double> last(static_cast<size_t>(std::max(1, p.pitch.starts)), 0.0);
+  for (const ThreadPass& s : p.passes) {
+    double step = s.depth;
+    if (s.start >= 0 && static_cast<size_t>(s.start) < last.size()) {
+      step = s.depth - last[static_cast<size_t>(s.start)];
+      last[static_cast<size_t>(s.start)] = s.depth;
+    }
+    steps.push_back(step);
+  }
+  return steps;
+}
+
 std::string plan_to_json(const std::string& file, LengthUnit units,
                          const std::vector<ThreadPlan>& plans) {
   std::string o = "{\n";
@@ -210,13 +225,10 @@ std::string plan_to_text(const std::string& file, LengthUnit units,
     o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {}\n", "pass", "start",
                      angles ? fmt::format(" {:>7}", "angle") : "", "depth", "step", "shift", "kind",
                      "from -> to");
-    std::vector<double> last(static_cast<size_t>(std::max(1, p.pitch.starts)), 0.0);
-    for (const ThreadPass& s : p.passes) {
-      double step = s.depth;
-      if (s.start >= 0 && static_cast<size_t>(s.start) < last.size()) {
-        step = s.depth - last[static_cast<size_t>(s.start)];
-        last[static_cast<size_t>(s.start)] = s.depth;
-      }
+    const std::vector<double> steps = pass_steps(p);
+    for (size_t i = 0; i < p.passes.size(); ++i) {
+      const ThreadPass& s = p.passes[i];
+      const double step = steps[i];
       o += fmt::format("  {:>4} {:>5}{} {:>10} {:>10} {:>10}  {:<7} {}\n", s.n, s.start,
                        angles ? fmt::format(" {:>7}", num_text(s.start_angle)) : "",
                        num_text(s.depth), num_text(step), num_text(s.shift), pass_kind_name(s.kind),

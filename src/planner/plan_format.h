@@ -23,6 +23,10 @@ std::string plan_to_json(const std::string& file, LengthUnit units,
 std::string plan_to_text(const std::string& file, LengthUnit units,
                          const std::vector<ThreadPlan>& plans);
 
+// Each pass's step: its depth less the depth its start had before it (the first pass of a start:
+// its depth). The "step" column of plan_to_text and of the setup sheet.
+std::vector<double> pass_steps(const ThreadPlan& p);
+
 // Names used in both formats.
 const char* form_name(ThreadForm f);
 const char* kind_name(ThreadKind k);

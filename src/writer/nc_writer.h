@@ -51,6 +51,8 @@ class NcWriter {
   // first of them (1-based line of the program).
   size_t wrapped_comments() const { return wrapped_comments_; }
   size_t long_lines() const { return long_lines_; }
+  // Lines written so far (blocks, comments, raw lines).
+  size_t lines() const { return lines_; }
   size_t first_long_line() const { return first_long_line_; }
 
   const Machine& machine() const { return m_; }

@@ -47,7 +47,7 @@ machines="fanuc-0i-t generic-lathe haas-st heidenhain-pilot linuxcnc-lathe nct-2
 files="cl-files lathe5.yaml notes.txt out part.cl part.nc"
 
 # Subcommands and inputs.
-expect "clpost |" "check cl2apt machines plan plot schema verify $files"
+expect "clpost |" "check cl2apt machines plan plot schema sheet verify $files"
 expect "clpost p|" "plan plot part.cl part.nc"
 expect "clpost ch|" "check"
 expect "clpost cl-files/|" "cl-files/a.cl"
@@ -63,14 +63,17 @@ expect "clpost check part.cl |" "$files"
 expect "clpost --k|" "--keep-going"
 expect "clpost --ver|" "--verify --version"
 expect "clpost -|" "-h --help --version -m --machine --set -o --output --strict -d --output-dir \
-  -r --recursive -j --jobs --keep-going -q --quiet --report --verify"
+  -r --recursive -j --jobs --keep-going -q --quiet --report --verify --sheet --sheets --date"
+expect "clpost sheet -|" "-h --help -m --machine --set -o --output --format --nc --date"
+expect "clpost sheet --format |" "html json"
+expect "clpost --sheet |" "cl-files out"
 expect "clpost check -|" "-h --help -m --machine --set --strict"
 expect "clpost plan --|" "--help --machine --set --format"
 expect "clpost verify --|" "--help --machine --set --cl --plan --tolerance"
 expect "clpost plot -|" "-h --help -m --machine --set --cl -o --output --thread"
 expect "clpost machines -|" "-h --help"
 # An option's value is not taken for a subcommand: `-m plot` is the machine, not the command.
-expect "clpost -m plot --s|" "--set --strict"
+expect "clpost -m plot --s|" "--set --sheet --sheets --strict"
 expect "clpost -m fanuc-0i-t plot --t|" "--thread"
 # Machine names (from `clpost machines`), machine files and folders.
 expect "clpost -m |" "$machines lathe5.yaml cl-files out"
