@@ -92,7 +92,11 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.line = static_cast<int>(line);
     mv.lead = lead;
     mv.state = state;
-    out.path.moves.push_back(mv);
+    if (opt.on_move) {
+      opt.on_move(mv);
+    } else {
+      out.path.moves.push_back(mv);
+    }
   }
   if (hole_open) sim::follow_hole(*this, kind, pos, to);
   pos = to;

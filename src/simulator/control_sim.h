@@ -3,6 +3,7 @@
 // diameter mode, and every threading cycle clpost writes expanded with the control's documented
 // law (controls/*/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
 // cuts (for `clpost verify`).
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,9 @@ struct Simulation {
 
 struct SimOptions {
   bool keep_moves = true;
+  // With keep_moves: every move is handed here as it is made instead of being kept in
+  // Simulation::path.moves (clpost plot draws a program of any length in bounded memory).
+  std::function<void(const Move&)> on_move;
 };
 
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control
