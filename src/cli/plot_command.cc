@@ -46,9 +46,15 @@ struct Drawing {
   std::string title;
   bool full = true;
   PathThinner thinner;
+  // Unless --full: no moves kept; each that goes somewhere (not the entries from an unknown
+  // position, which are not drawn) streams into the thinner.
   SimOptions options() {
     SimOptions o;
-    if (!full) o.on_move = [this](const Move& m) { thinner.add(m); };
+    if (full) return o;
+    o.keep_moves = false;
+    o.on_move = [this](const Move& m, const CutState&) {
+      if (!(m.from.x == m.to.x && m.from.z == m.to.z)) thinner.add(m);
+    };
     return o;
   }
 };

@@ -61,9 +61,10 @@ struct Simulation {
 
 struct SimOptions {
   bool keep_moves = true;
-  // With keep_moves: every move is handed here as it is made instead of being kept in
-  // Simulation::path.moves (clpost plot draws a program of any length in bounded memory).
-  std::function<void(const Move&)> on_move;
+  // Every move as it is made, with the modal state it is made with (the entries from an unknown
+  // position among them, in order, as Move{from == to}): verify of the path while the program
+  // is read, with no moves kept.
+  std::function<void(const Move&, const CutState&)> on_move;
 };
 
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control
