@@ -19,15 +19,16 @@ double dist(Vec2 a, Vec2 b) {
   return std::hypot(b.x - a.x, b.z - a.z);
 }
 
-// Direction from a to b in radians (Z right, X up).
-double direction(Vec2 a, Vec2 b) {
-  return std::atan2(b.x - a.x, b.z - a.z);
+// > 0 when direction v is counterclockwise of u (Z right, X up).
+double cross(Vec2 u, Vec2 v) {
+  return u.z * v.x - u.x * v.z;
 }
-
-// An angle brought into (-pi, pi].
-double wrap(double a) {
-  a = std::remainder(a, 2 * std::numbers::pi);
-  return a;
+double dot(Vec2 u, Vec2 v) {
+  return u.z * v.z + u.x * v.x;
+}
+// u turned counterclockwise by the angle of cosine c and sine s.
+Vec2 turned(Vec2 u, double c, double s) {
+  return {u.z * s + u.x * c, u.z * c - u.x * s};
 }
 
 // Whether the direction from `a` through `p` to `q` turns by at most kTurnDegrees at `p`
@@ -128,23 +129,27 @@ bool PathThinner::can_drop(Vec2 q, Chain& trial) const {
   if (!(dist(trial.prev, p) < t) && !straight_on(trial.prev, p, q)) return false;
   const double d = dist(a, p);
   if (d > t) {
-    const double half = std::asin(t / d), dir = direction(a, p);
+    // The directions from the anchor whose ray passes within t of p: within asin(t / d) of it.
+    const Vec2 u{(p.x - a.x) / d, (p.z - a.z) / d};
+    const double sn = t / d, cs = std::sqrt(1 - sn * sn);
+    const Vec2 lo = turned(u, cs, -sn), hi = turned(u, cs, sn);
     if (!trial.cone) {
       trial.cone = true;
-      trial.ref = dir;
-      trial.lo = -half;
-      trial.hi = half;
+      trial.ref = u;
+      trial.lo = lo;
+      trial.hi = hi;
     } else {
-      const double rel = wrap(dir - trial.ref);
-      trial.lo = std::max(trial.lo, rel - half);
-      trial.hi = std::min(trial.hi, rel + half);
-      if (trial.lo > trial.hi) return false;
+      if (dot(u, trial.ref) <= 0) return false;
+      if (cross(trial.lo, lo) > 0) trial.lo = lo;
+      if (cross(trial.hi, hi) < 0) trial.hi = hi;
+      if (cross(trial.lo, trial.hi) < 0) return false;
     }
   }
   trial.far = std::max(trial.far, d);
   if (!trial.cone) return true;
-  const double rel = wrap(direction(a, q) - trial.ref);
-  return dist(a, q) >= trial.far - t && rel >= trial.lo && rel <= trial.hi;
+  const Vec2 v{q.x - a.x, q.z - a.z};
+  return dist(a, q) >= trial.far - t && dot(v, trial.ref) > 0 && cross(trial.lo, v) >= 0 &&
+         cross(v, trial.hi) >= 0;
 }
 
 void PathThinner::take_straight(const Move& m) {

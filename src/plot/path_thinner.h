@@ -57,14 +57,16 @@ class PathThinner {
  private:
   struct Chain {
     bool open = false;
-    size_t cls = 0;                  // draw_class
-    Move tmpl;                       // kind, line and state of the merged move
-    Vec2 anchor;                     // the last kept point
-    Vec2 prev;                       // the point before `last`
-    Vec2 last;                       // the end of the pending merged move (not yet kept)
-    bool cone = false;               // some dropped point lies farther than t from the anchor
-    double ref = 0, lo = 0, hi = 0;  // directions from the anchor that pass within t of them
-    double far = 0;                  // the farthest dropped point from the anchor
+    size_t cls = 0;     // draw_class
+    Move tmpl;          // kind, line and state of the merged move
+    Vec2 anchor;        // the last kept point
+    Vec2 prev;          // the point before `last`
+    Vec2 last;          // the end of the pending merged move (not yet kept)
+    bool cone = false;  // some dropped point lies farther than t from the anchor
+    // Unit directions from the anchor: from lo counterclockwise to hi, the rays pass within t
+    // of every dropped point; ref is the first such point's.
+    Vec2 ref, lo, hi;
+    double far = 0;  // the farthest dropped point from the anchor
   };
 
   void take(const Move& m, bool fresh);
