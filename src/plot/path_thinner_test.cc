@@ -139,6 +139,21 @@ TEST(PathThinner, TheBudgetCoarsensTheTolerance) {
   EXPECT_GT(q.tolerance_px, 0.4);
 }
 
+TEST(PathThinner, PastTheBudgetMovesAreCountedNotDrawn) {
+  // 100 distinct rapids (each 10 mm from X 20 down to X 10, one Z apart) with a budget of 40:
+  // rapids keep their ends, so once they fill half the budget (20) no more are drawn.
+  std::vector<Move> m;
+  for (int i = 0; i < 100; ++i) m.push_back(mv(MoveKind::kRapid, {20, -1.0 * i}, {10, -1.0 * i}));
+  ThinOptions o;
+  o.budget = 40;
+  const ThinnedPath p = thinned(m, o);
+  EXPECT_EQ(p.path.moves.size(), 20u);
+  EXPECT_EQ(p.dropped, 80u);
+  EXPECT_EQ(simplified_note(p),
+            "path simplified: 100 moves drawn as 20 (tolerance 0.4 px); 80 moves past the budget "
+            "not drawn");
+}
+
 ThreadSection section(std::string title, double depth) {
   ThreadSection s;
   s.title = std::move(title);
