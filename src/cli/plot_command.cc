@@ -248,7 +248,7 @@ PlotOutcome plot_file(const PlotRequest& req) {
                         : draw_program(req, d, out.diagnostics);
   if (!drawn) return out;
   out.threads = d.sections.size();
-  out.moves = d.sim.path.moves.size();
+  out.moves = d.full ? d.sim.path.moves.size() : d.thinner.moves();
   std::string svg;
   if (!render_svg(req, d, svg, out.diagnostics) || !write_svg(req.output, svg, out.diagnostics))
     return out;

@@ -52,6 +52,8 @@ class PathThinner {
  public:
   explicit PathThinner(ThinOptions options = {});
   void add(const Move& m);
+  // The moves given so far (the finite ones: what the picture counts).
+  size_t moves() const { return out_.measure.total(); }
   ThinnedPath finish(LengthUnit units);
 
  private:
