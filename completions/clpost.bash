@@ -31,7 +31,7 @@ _clpost_options() {
     check) echo "-h --help $machine --strict" ;;
     plan) echo "-h --help $machine --format" ;;
     verify) echo "-h --help $machine --cl --plan --tolerance" ;;
-    plot) echo "-h --help $machine --cl -o --output --thread" ;;
+    plot) echo "-h --help $machine --cl -o --output --thread --full" ;;
     sheet) echo "-h --help $machine -o --output --format --nc --date" ;;
     machines | "machines diff") echo "-h --help" ;;
     "machines show") echo "-h --help --set --origin" ;;

@@ -2,6 +2,8 @@
 // its control's cuts, errors are clean, and the pictures in docs/img are what clpost draws now.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <filesystem>
 
 #include "test_util.h"
@@ -21,7 +23,7 @@ RunResult clpost(const std::string& args) {
 
 TEST(Plot, AClFileDrawsTheBackplotAndEveryPlannedPass) {
   const std::string out = temp_dir() + "/options.svg";
-  RunResult r = clpost("plot samples/threads/options.apt -o " + quote(out));
+  RunResult r = clpost("plot --full samples/threads/options.apt -o " + quote(out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string svg = read_file(out);
   // options.apt: 7 threads of 5, 6, 6, 4, 4, 10 and 4 passes.
@@ -29,6 +31,24 @@ TEST(Plot, AClFileDrawsTheBackplotAndEveryPlannedPass) {
   EXPECT_EQ(count(svg, "Passes in cutting order"), 7u);
   EXPECT_EQ(count(svg, "<path class=\"thread\""), 39u);
   EXPECT_NE(svg.find("samples/threads/options.apt posted on generic-lathe"), std::string::npos);
+}
+
+// Without --full: the threads at lines 33 (DEPTH 0.92, CUTS 4, OPTION 3) and 54 (CUTS 4,
+// STEP 0.23, OPTION 3) are planned alike (depth 0.92, the same 4 passes), so one section of 4
+// passes says "x2"; and of the 39 thread moves of the --full picture, 28 are distinct (22 once,
+// 4 twice, 1 three times, 1 six times): each is drawn once.
+TEST(Plot, AClFileDrawsEachThreadMoveOnce) {
+  RunResult r = clpost("plot samples/threads/options.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count(r.out, "class=\"pass\""), 35u);
+  EXPECT_EQ(count(r.out, "Passes in cutting order"), 6u);
+  EXPECT_NE(r.out.find(">thread at line 33 - pitch 1.5, depth 0.92, OPTION 3 \u00d72 (2 identical "
+                       "threads)</text>"),
+            std::string::npos);
+  EXPECT_EQ(count(r.out, "<path class=\"thread\""), 28u);
+  EXPECT_NE(r.out.find(">path simplified: 170 moves drawn as 114 (tolerance 0.4 px); 7 threads "
+                       "drawn as 6 sections</text>"),
+            std::string::npos);
 }
 
 TEST(Plot, AProgramsSectionShowsItsControlsCuts) {
@@ -60,6 +80,56 @@ TEST(Plot, Errors) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, dir + "/p.nc:2:4: error: invalid number 'X1.2.3'\n  G1 X1.2.3\n     ^\n");
   EXPECT_FALSE(file_exists(dir + "/p.svg"));
+}
+
+// --full draws every move and every section: the picture as it was before plots were
+// simplified (tests/data/plot holds that picture, as docs/img had it).
+TEST(Plot, FullKeepsEveryMove) {
+  RunResult r =
+      clpost("plot --full -m fanuc-0i-t samples/golden/fanuc-0i-t/threads-options.nc -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, read_file(source_dir() + "/tests/data/plot/fanuc-options-backplot-full.svg"));
+  EXPECT_EQ(r.out.find("path simplified"), std::string::npos);
+}
+
+// N identical threads: one section, "xN" in its title, and a note.
+TEST(Plot, IdenticalThreadsDrawOneSection) {
+  std::string cl = "PARTNO T\nUNITS/MM\nLOADTL/7,ADJUST,7\nSPINDL/600,RPM,CLW\n";
+  for (int i = 0; i < 40; ++i)
+    cl +=
+        "RAPID\nGOTO/15,0,5\nTHREAD/ON,DEPTH,1.534,CUTS,4,FINCUT,1,0.1,OPTION,1,MMPR,2.5,"
+        "CHAMFR,2.5\nGOTO/10,0,2\nGOTO/10,0,-30\nTHREAD/OFF\n";
+  cl += "RAPID\nGOTO/50,0,50\nEND\nFINI\n";
+  const std::string dir = temp_dir();
+  write_file(dir + "/t.cl", cl);
+  RunResult r = clpost("plot " + quote(dir + "/t.cl") + " -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count(r.out, "Passes in cutting order"), 1u);
+  EXPECT_NE(r.out.find(" \u00d740 (40 identical threads)</text>"), std::string::npos);
+  EXPECT_NE(r.out.find("; 40 threads drawn as 1 section</text>"), std::string::npos);
+  // 5 passes, each thread move drawn once.
+  EXPECT_EQ(count(r.out, "<path class=\"thread\""), 5u);
+  r = clpost("plot --full " + quote(dir + "/t.cl") + " -o -");
+  EXPECT_EQ(count(r.out, "Passes in cutting order"), 40u);
+}
+
+// Whatever the length, the picture stays under 2 MB: 300 000 moves of a zigzag 2 mm across and
+// 0.3 mm along, drifting up (each a few px long and turning sharply: nothing merges them at
+// 0.4 px, and no two are alike).
+TEST(Plot, ABigProgramMakesASmallPicture) {
+  std::string cl =
+      "PARTNO Z\nUNITS/MM\nLOADTL/1,ADJUST,1\nSPINDL/1200,RPM,CLW\n"
+      "FEDRAT/0.25,MMPR\nRAPID\nGOTO/40,0,5\n";
+  for (int i = 0; i < 300000; ++i)
+    cl += fmt::format("GOTO/{:.4f},0,{:.3f}\n", 30 + 2 * (i % 2) + 0.0001 * i, -0.3 * (i % 1000));
+  cl += "RAPID\nGOTO/50,0,50\nEND\nFINI\n";
+  const std::string dir = temp_dir();
+  write_file(dir + "/z.cl", cl);
+  RunResult r = clpost("plot " + quote(dir + "/z.cl") + " -o " + quote(dir + "/z.svg"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(dir + "/z.svg");
+  EXPECT_LE(svg.size(), 2u << 20);
+  EXPECT_NE(svg.find(">path simplified: 300 001 moves drawn as "), std::string::npos);
 }
 
 // The README shows docs/img: they must be what clpost draws (scripts/plot-samples.sh redraws).

@@ -559,6 +559,9 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommand& c) {
   plot->add_option("-o,--output", c.req.output, "SVG file (default: standard output)");
   plot->add_option("--thread", c.req.thread, "Only thread N's cross-section (1 = the first)")
       ->check(CLI::PositiveNumber);
+  plot->add_flag("--full", c.req.full,
+                 "Draw every move and every thread's section (by default moves shorter than the "
+                 "picture can show are merged and identical threads drawn once)");
   return plot;
 }
 

@@ -10,11 +10,13 @@
 #include "cli/batch.h"
 #include "cli/post_file.h"
 #include "plot/backplot_svg.h"
+#include "plot/path_thinner.h"
 #include "plot/thread_section.h"
 #include "plot/thread_section_svg.h"
 #include "simulator/control_sim.h"
 #include "support/input_file.h"
 #include "support/output_file.h"
+#include "support/sink.h"
 #include "verify/verify.h"
 
 namespace clpost {
@@ -36,7 +38,28 @@ Plans plans_of_cl(const std::string& cl, const Machine& m) {
   return p;
 }
 
-bool simulate_file(const std::string& path, const Machine& m, Simulation& sim,
+// What a plot draws: the simulated program, its threads' sections, the picture's title; unless
+// --full, the moves go to `thinner` as they are made instead of into sim.path.
+struct Drawing {
+  Simulation sim;
+  std::vector<ThreadSection> sections;
+  std::string title;
+  bool full = true;
+  PathThinner thinner;
+  // Unless --full: no moves kept; each that goes somewhere (not the entries from an unknown
+  // position, which are not drawn) streams into the thinner.
+  SimOptions options() {
+    SimOptions o;
+    if (full) return o;
+    o.keep_moves = false;
+    o.on_move = [this](const Move& m, const CutState&) {
+      if (!(m.from.x == m.to.x && m.from.z == m.to.z)) thinner.add(m);
+    };
+    return o;
+  }
+};
+
+bool simulate_file(const std::string& path, const Machine& m, Drawing& dr,
                    std::string& diagnostics) {
   InputFile f;
   std::string error;
@@ -46,17 +69,58 @@ bool simulate_file(const std::string& path, const Machine& m, Simulation& sim,
   }
   Diagnostics d(display_name(path));
   reader::LineSource src(f.get());
-  const bool ok = simulate_nc(src, m, d, sim);
+  const bool ok = simulate_nc(src, m, d, dr.sim, dr.options());
   diagnostics += d.render_all();
   return ok;
 }
 
-// What a plot draws: the simulated program, its threads' sections, the picture's title.
-struct Drawing {
-  Simulation sim;
-  std::vector<ThreadSection> sections;
-  std::string title;
+// A sink into a temporary file (the program of a CL file, read back by the simulation).
+class TempFileSink : public Sink {
+ public:
+  TempFileSink() : f_(std::tmpfile()) {}
+  ~TempFileSink() override {
+    if (f_ != nullptr) std::fclose(f_);
+  }
+  TempFileSink(const TempFileSink&) = delete;
+  TempFileSink& operator=(const TempFileSink&) = delete;
+  std::FILE* get() const { return f_; }
+  bool ok() const { return f_ != nullptr && !failed_; }
+
+ private:
+  void overflow(std::string_view text) override {
+    failed_ =
+        failed_ || f_ == nullptr || std::fwrite(text.data(), 1, text.size(), f_) != text.size();
+  }
+  std::FILE* f_;
+  bool failed_ = false;
 };
+
+// A CL file drawn in bounded memory: posted into a temporary file (nothing kept but the
+// sections), its program simulated from there, its moves streamed into the thinner.
+bool draw_cl_streaming(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
+  const Machine& m = *req.machine;
+  TempFileSink program;
+  PostRequest pr{req.input, "", &m, PostOptions{}, [&](const ThreadPlan& t) {
+                   for (ThreadSection& s : sections_from_plan(t))
+                     d.sections.push_back(std::move(s));
+                 }};
+  pr.program_sink = &program;
+  PostOutcome r = post_file(pr);
+  diagnostics += r.diagnostics;
+  if (!r.ok) return false;
+  if (!program.ok() || std::fflush(program.get()) != 0 ||
+      std::fseek(program.get(), 0, SEEK_SET) != 0) {
+    diagnostics +=
+        fmt::format("clpost: error: cannot write a temporary file: {}\n", std::strerror(errno));
+    return false;
+  }
+  Diagnostics diags("<program of " + display_name(req.input) + ">");
+  reader::LineSource src(program.get());
+  const bool ok = simulate_nc(src, m, diags, d.sim, d.options());
+  diagnostics += diags.render_all();
+  d.title = fmt::format("{} posted on {}", display_name(req.input), m.name);
+  return ok;
+}
 
 // A CL file: posted, its program simulated, its threads' sections as planned.
 bool draw_cl(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
@@ -99,7 +163,7 @@ bool sections_as_cut(const PlotRequest& req, Drawing& d, std::string& diagnostic
 // An NC program: simulated; its threads' sections only with --cl, which they are measured by.
 bool draw_program(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
   const Machine& m = *req.machine;
-  if (!simulate_file(req.input, m, d.sim, diagnostics)) return false;
+  if (!simulate_file(req.input, m, d, diagnostics)) return false;
   d.title = fmt::format("{} on {}", display_name(req.input), m.name);
   if (!req.cl.empty()) return sections_as_cut(req, d, diagnostics);
   if (req.thread > 0) {
@@ -110,11 +174,32 @@ bool draw_program(const PlotRequest& req, Drawing& d, std::string& diagnostics) 
   return true;
 }
 
+// The backplot of the thinned path, identical sections once with their count, and a note on
+// what was simplified.
+std::string simplified_backplot(Drawing& d) {
+  const ThinnedPath path = d.thinner.finish(d.sim.units);
+  SectionGroups groups;
+  for (const ThreadSection& s : d.sections) groups.add(s);
+  const std::vector<ThreadSection> drawn = groups.drawn();
+  std::string note = simplified_note(path);
+  if (drawn.size() < groups.total()) {
+    std::string more = fmt::format("{} threads drawn as {} section{}", groups.total(), drawn.size(),
+                                   drawn.size() == 1 ? "" : "s");
+    if (groups.left_out() > 0)
+      more += fmt::format(", {} more not drawn (--thread N)", groups.left_out());
+    note += (note.empty() ? "" : "; ") + more;
+  }
+  return backplot_svg(path, &drawn, d.title, note);
+}
+
 // The picture: thread N's section (--thread N), else the backplot with every section.
-bool render_svg(const PlotRequest& req, const Drawing& d, std::string& svg,
-                std::string& diagnostics) {
-  if (req.thread <= 0) {
+bool render_svg(const PlotRequest& req, Drawing& d, std::string& svg, std::string& diagnostics) {
+  if (req.thread <= 0 && d.full) {
     svg = backplot_svg(d.sim.path, &d.sections, d.title);
+    return true;
+  }
+  if (req.thread <= 0) {
+    svg = simplified_backplot(d);
     return true;
   }
   if (static_cast<size_t>(req.thread) > d.sections.size()) {
@@ -156,11 +241,14 @@ bool simulate_text(std::string_view text, const std::string& name, const Machine
 PlotOutcome plot_file(const PlotRequest& req) {
   PlotOutcome out;
   Drawing d;
-  const bool drawn = is_cl_file_name(req.input) ? draw_cl(req, d, out.diagnostics)
-                                                : draw_program(req, d, out.diagnostics);
+  d.full = req.full;
+  const bool cl = is_cl_file_name(req.input);
+  const bool drawn = cl ? (req.full ? draw_cl(req, d, out.diagnostics)
+                                    : draw_cl_streaming(req, d, out.diagnostics))
+                        : draw_program(req, d, out.diagnostics);
   if (!drawn) return out;
   out.threads = d.sections.size();
-  out.moves = d.sim.path.moves.size();
+  out.moves = d.full ? d.sim.path.moves.size() : d.thinner.moves();
   std::string svg;
   if (!render_svg(req, d, svg, out.diagnostics) || !write_svg(req.output, svg, out.diagnostics))
     return out;

@@ -14,6 +14,7 @@ struct PlotRequest {
   std::string cl;      // with an NC program: the CL file whose plan it is (for the sections)
   std::string output;  // "-": standard output
   int thread = 0;      // 0: the backplot with every thread's section; N: thread N's section only
+  bool full = false;   // every move drawn and every section (else path_thinner.h, SectionGroups)
   const Machine* machine = nullptr;
 };
 
@@ -27,6 +28,9 @@ struct PlotOutcome {
 // A CL file is posted on the machine (nothing written) and its program run through the control
 // simulation for the backplot; its sections come from the plan. An NC program is run through
 // the simulation; with `cl`, its sections show where its cuts are, measured against the plan.
+// Unless `full`, the moves stream from the simulation into a PathThinner (the program of a CL
+// file through a temporary file), so memory and the picture stay bounded whatever the length,
+// identical sections are drawn once with their count, and a note says what was simplified.
 PlotOutcome plot_file(const PlotRequest& req);
 
 // Runs the NC program `text` (shown in diagnostics as `name`) through the machine's control

@@ -140,6 +140,8 @@ PostOutcome post_file(const PostRequest& req) {
   std::vector<ThreadPlan> plans;
   TeeSink tee(*sink, program);
   if (req.verify || req.program != nullptr) sink = &tee;
+  if (req.program_sink != nullptr && !req.verify && req.program == nullptr && !writing)
+    sink = req.program_sink;
   post_to(req, input.get(), *sink, diags, plans, out);
   std::string verify_diagnostics;
   const bool verify_failed = req.verify && !diags.has_errors() &&

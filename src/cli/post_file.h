@@ -23,6 +23,7 @@ struct PostRequest {
   bool verify = false;
   double verify_tolerance = 0;     // 0: the machine's
   std::string* program = nullptr;  // when set, gets a copy of the program (clpost plot)
+  Sink* program_sink = nullptr;    // when set, gets the program as it is written (clpost plot)
   // A batch publishes its programs in groups (OutputFile::publish_all: one syncfs for many
   // fsyncs). When set, a good output is written out (OutputFile::finish) and handed here instead
   // of being committed: it is not under its name until the caller has published it.

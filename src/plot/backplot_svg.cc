@@ -23,24 +23,14 @@ constexpr double kTop = 112;  // title, summary and legend
 constexpr double kMaxPlotH = 640;
 constexpr double kMinPlotH = 160;
 constexpr double kBelow = 56;  // Z tick numbers and axis title
+constexpr double kNoteH = 16;  // a line for the note on a simplified path
 
 // Drawing class of a move; arcs in either direction share one.
 enum class Stroke : uint8_t { kRapid, kFeed, kArc, kThread };
 constexpr std::array<const char*, 4> kClass = {"rapid", "feed", "arc", "thread"};
 
 Stroke stroke_of(MoveKind k) {
-  switch (k) {
-    case MoveKind::kRapid:
-      return Stroke::kRapid;
-    case MoveKind::kFeed:
-      return Stroke::kFeed;
-    case MoveKind::kArcCw:
-    case MoveKind::kArcCcw:
-      return Stroke::kArc;
-    case MoveKind::kThread:
-      return Stroke::kThread;
-  }
-  return Stroke::kFeed;
+  return static_cast<Stroke>(draw_class(k));
 }
 
 // Model (Z, X) to page: equal scale, X up.
@@ -53,8 +43,9 @@ struct Frame {
   double py(double x) const { return oy + h - (x - x_lo) * k; }
 };
 
-Frame frame_of(const Bounds& b) {
+Frame frame_of(const Bounds& b, double top = kTop) {
   Frame f;
+  f.oy = top;
   double z_lo = b.empty ? 0 : b.z_lo, z_hi = b.empty ? 10 : b.z_hi;
   double x_lo = b.empty ? 0 : b.x_lo, x_hi = b.empty ? 10 : b.x_hi;
   // Show the spindle axis when the part is nearer to it than it is tall.
@@ -176,14 +167,8 @@ void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
   draw_spindle_axis(w, f);
 }
 
-struct Totals {
-  std::array<size_t, 4> moves{};
-  std::array<double, 4> length{};
-};
-
 // The moves as one <path> per run of one drawing class.
-Totals draw_moves(SvgWriter& w, const Toolpath& tp, const Frame& f) {
-  Totals t;
+void draw_moves(SvgWriter& w, const std::vector<Move>& moves, const Frame& f) {
   SvgPath path;
   Stroke run = Stroke::kRapid;
   auto flush = [&] {
@@ -192,30 +177,25 @@ Totals draw_moves(SvgWriter& w, const Toolpath& tp, const Frame& f) {
     path = SvgPath();
   };
   w.open("g", {{"class", "moves"}});
-  for (const Move& m : tp.moves) {
+  for (const Move& m : moves) {
     if (!finite_move(m)) continue;
     const Stroke s = stroke_of(m.kind);
     if (s != run) {
       flush();
       run = s;
     }
-    const size_t i = static_cast<size_t>(s);
-    ++t.moves[i];
     const double x0 = f.px(m.from.z), y0 = f.py(m.from.x);
     const double x1 = f.px(m.to.z), y1 = f.py(m.to.x);
     if (!path.at(x0, y0)) path.move_to(x0, y0);
     if (s != Stroke::kArc) {
-      t.length[i] += std::hypot(m.to.x - m.from.x, m.to.z - m.from.z);
       path.line_to(x1, y1);
       continue;
     }
     const ArcSweep a = arc_sweep(m);
     if (a.radius <= 0 || a.sweep == 0) {
-      t.length[i] += std::hypot(m.to.x - m.from.x, m.to.z - m.from.z);
       path.line_to(x1, y1);
       continue;
     }
-    t.length[i] += a.radius * std::fabs(a.sweep);
     const double r = a.radius * f.k;
     const bool cw = a.sweep < 0;  // clockwise on the page too (X up, Z right): SVG sweep 1
     if (std::fabs(a.sweep) > std::numbers::pi * 1.999) {
@@ -228,12 +208,10 @@ Totals draw_moves(SvgWriter& w, const Toolpath& tp, const Frame& f) {
   }
   flush();
   w.close();
-  return t;
 }
 
-void draw_start(SvgWriter& w, const Toolpath& tp, const Frame& f) {
-  const auto first = std::find_if(tp.moves.begin(), tp.moves.end(), finite_move);
-  if (first == tp.moves.end()) {
+void draw_start(SvgWriter& w, const PathMeasure& pm, const Frame& f) {
+  if (!pm.has_start) {
     w.text("text",
            {{"x", svg_num(f.ox + f.w / 2)},
             {"y", svg_num(f.oy + f.h / 2)},
@@ -244,8 +222,8 @@ void draw_start(SvgWriter& w, const Toolpath& tp, const Frame& f) {
     return;
   }
   w.empty("circle", {{"class", "start"},
-                     {"cx", svg_num(f.px(first->from.z))},
-                     {"cy", svg_num(f.py(first->from.x))},
+                     {"cx", svg_num(f.px(pm.start.z))},
+                     {"cy", svg_num(f.py(pm.start.x))},
                      {"r", "5"},
                      {"fill", "#2ca02c"},
                      {"stroke", "#ffffff"},
@@ -328,7 +306,7 @@ void draw_legend(SvgWriter& w, double y, bool lead) {
   w.close();
 }
 
-std::string summary(const Totals& t, size_t total, const char* unit) {
+std::string summary(const PathMeasure& t, size_t total, const char* unit) {
   std::string s = fmt::format("{} move{}", total, total == 1 ? "" : "s");
   static constexpr std::array<const char*, 4> kWords = {"rapid", "feed", "arc", "thread"};
   const char* sep = ": ";
@@ -343,10 +321,9 @@ std::string summary(const Totals& t, size_t total, const char* unit) {
 // The bounds the frame shows: the moves, fitted to the cutting moves and what is near them
 // (`clipped`) when a rapid goes far off, to a tool-change or home position, which would shrink
 // the part to a few pixels.
-Bounds plot_bounds(const Toolpath& tp, bool& clipped) {
-  Bounds b = toolpath_bounds(tp);
+Bounds plot_bounds(const Bounds& all, const Bounds& cut, bool& clipped) {
+  Bounds b = all;
   clipped = false;
-  const Bounds cut = toolpath_bounds(tp, false);
   if (cut.empty) return b;
   const double margin = 0.25 * std::max({cut.z_hi - cut.z_lo, cut.x_hi - cut.x_lo, 1e-9});
   Bounds near = cut;
@@ -404,22 +381,47 @@ void draw_insets(SvgWriter& w, const std::vector<Inset>& insets) {
   }
 }
 
-}  // namespace
+// What one backplot shows: the moves drawn, what all the program's moves measure, a note.
+struct View {
+  const std::vector<Move>& moves;
+  const PathMeasure& measure;
+  LengthUnit units;
+  const std::vector<ThreadSection>* sections;
+  std::string_view title;
+  std::string_view note;  // under the legend, when not empty
+};
 
-std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
-                         std::string_view title) {
-  const char* unit = tp.units == LengthUnit::kInch ? "in" : "mm";
+void draw_header(SvgWriter& w, const View& v, const char* unit, bool clipped, bool lead) {
+  w.text("text",
+         {{"class", "summary"}, {"x", "16"}, {"y", "54"}, {"font-size", "13"}, {"fill", "#444444"}},
+         summary(v.measure, v.measure.total(), unit) +
+             (clipped ? "; fitted to the cutting moves, far rapids run off the frame" : ""));
+  draw_legend(w, 78, lead);
+  if (!v.note.empty())
+    w.text("text",
+           {{"class", "note"},
+            {"x", "16"},
+            {"y", "102"},
+            {"font-size", "13"},
+            {"font-style", "italic"},
+            {"fill", "#444444"}},
+           v.note);
+}
+
+std::string render(const View& v) {
+  const char* unit = v.units == LengthUnit::kInch ? "in" : "mm";
   bool clipped = false;
-  Frame f = frame_of(plot_bounds(tp, clipped));
+  Frame f = frame_of(plot_bounds(v.measure.all, v.measure.cut, clipped),
+                     v.note.empty() ? kTop : kTop + kNoteH);
   double height = f.oy + f.h + kBelow;
-  const std::vector<Inset> insets = section_insets(sections, height);
+  const std::vector<Inset> insets = section_insets(v.sections, height);
   SvgWriter w(kWidth, height);
   draw_style(w);
   w.empty("rect", {{"width", svg_num(kWidth)}, {"height", svg_num(height)}, {"fill", "#ffffff"}});
   w.text(
       "text",
       {{"class", "title"}, {"x", "16"}, {"y", "30"}, {"font-size", "20"}, {"font-weight", "bold"}},
-      title.empty() ? std::string_view("Backplot") : title);
+      v.title.empty() ? std::string_view("Backplot") : v.title);
   draw_grid(w, f, unit);
   w.open("clipPath", {{"id", "plot-clip"}});
   w.empty("rect", {{"x", svg_num(f.ox)},
@@ -427,22 +429,35 @@ std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* s
                    {"width", svg_num(f.w)},
                    {"height", svg_num(f.h)}});
   w.close();
-  const bool lead = any_lead(sections);
+  const bool lead = any_lead(v.sections);
   if (lead) lead_hatch_pattern(w, "lead-hatch", "#6f6f6f", "1.2");
   w.open("g", {{"clip-path", "url(#plot-clip)"}});
-  draw_lead_zones(w, f, sections);
-  const Totals t = draw_moves(w, tp, f);
-  draw_start(w, tp, f);
+  draw_lead_zones(w, f, v.sections);
+  draw_moves(w, v.moves, f);
+  draw_start(w, v.measure, f);
   w.close();
-  size_t drawn = 0;
-  for (size_t n : t.moves) drawn += n;
-  w.text("text",
-         {{"class", "summary"}, {"x", "16"}, {"y", "54"}, {"font-size", "13"}, {"fill", "#444444"}},
-         summary(t, drawn, unit) +
-             (clipped ? "; fitted to the cutting moves, far rapids run off the frame" : ""));
-  draw_legend(w, 78, lead);
+  draw_header(w, v, unit, clipped, lead);
   draw_insets(w, insets);
   return w.finish();
+}
+
+}  // namespace
+
+double backplot_scale(const Bounds& all, const Bounds& cut) {
+  bool clipped = false;
+  return frame_of(plot_bounds(all, cut, clipped)).k;
+}
+
+std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
+                         std::string_view title) {
+  PathMeasure pm;
+  for (const Move& m : tp.moves) pm.add(m);
+  return render({tp.moves, pm, tp.units, sections, title, {}});
+}
+
+std::string backplot_svg(const ThinnedPath& path, const std::vector<ThreadSection>* sections,
+                         std::string_view title, std::string_view note) {
+  return render({path.path.moves, path.measure, path.path.units, sections, title, note});
 }
 
 }  // namespace clpost

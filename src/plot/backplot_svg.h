@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "plot/move_geometry.h"
+#include "plot/path_thinner.h"
 #include "simulator/toolpath.h"
 
 namespace clpost {
@@ -30,5 +32,15 @@ namespace clpost {
 std::string backplot_svg(const Toolpath& toolpath,
                          const std::vector<ThreadSection>* sections = nullptr,
                          std::string_view title = {});
+
+// The same picture of a thinned path (path_thinner.h): its moves drawn, the line of move counts
+// and lengths and the frame from what every move of the program measures; `note`, when not
+// empty, in italics on a line of its own under the legend (the plot moves down by that line).
+std::string backplot_svg(const ThinnedPath& path, const std::vector<ThreadSection>* sections,
+                         std::string_view title, std::string_view note);
+
+// The scale (px per program unit) backplot_svg draws at, for a program whose moves cover `all`
+// and whose cutting moves cover `cut`. It only shrinks as the boxes grow.
+double backplot_scale(const Bounds& all, const Bounds& cut);
 
 }  // namespace clpost

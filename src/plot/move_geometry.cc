@@ -58,21 +58,57 @@ void Bounds::add(Vec2 p) {
   x_hi = std::max(x_hi, p.x);
 }
 
+size_t draw_class(MoveKind k) {
+  switch (k) {
+    case MoveKind::kRapid:
+      return 0;
+    case MoveKind::kFeed:
+      return 1;
+    case MoveKind::kArcCw:
+    case MoveKind::kArcCcw:
+      return 2;
+    case MoveKind::kThread:
+      return 3;
+  }
+  return 1;
+}
+
+void add_move_bounds(Bounds& b, const Move& m) {
+  b.add(m.from);
+  b.add(m.to);
+  if (!is_arc(m.kind)) return;
+  const ArcSweep a = arc_sweep(m);
+  if (a.radius <= 0) return;
+  // The quarter angles k*pi/2 the sweep passes.
+  const double lo = std::min(a.start, a.start + a.sweep), hi = std::max(a.start, a.start + a.sweep);
+  const double q = std::numbers::pi / 2;
+  for (double k = std::ceil(lo / q); k * q <= hi; k += 1)
+    b.add(arc_point(m.center, a.radius, k * q));
+}
+
+void PathMeasure::add(const Move& m) {
+  if (!finite_move(m)) return;
+  if (!has_start) {
+    has_start = true;
+    start = m.from;
+  }
+  const size_t i = draw_class(m.kind);
+  ++moves[i];
+  const ArcSweep a = i == 2 ? arc_sweep(m) : ArcSweep{};
+  if (a.radius > 0 && a.sweep != 0) {
+    length[i] += a.radius * std::fabs(a.sweep);
+  } else {
+    length[i] += std::hypot(m.to.x - m.from.x, m.to.z - m.from.z);
+  }
+  add_move_bounds(all, m);
+  if (i != 0) add_move_bounds(cut, m);
+}
+
 Bounds toolpath_bounds(const Toolpath& tp, bool rapids) {
   Bounds b;
   for (const Move& m : tp.moves) {
     if (!finite_move(m) || (!rapids && m.kind == MoveKind::kRapid)) continue;
-    b.add(m.from);
-    b.add(m.to);
-    if (!is_arc(m.kind)) continue;
-    const ArcSweep a = arc_sweep(m);
-    if (a.radius <= 0) continue;
-    // The quarter angles k*pi/2 the sweep passes.
-    const double lo = std::min(a.start, a.start + a.sweep),
-                 hi = std::max(a.start, a.start + a.sweep);
-    const double q = std::numbers::pi / 2;
-    for (double k = std::ceil(lo / q); k * q <= hi; k += 1)
-      b.add(arc_point(m.center, a.radius, k * q));
+    add_move_bounds(b, m);
   }
   return b;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -123,6 +124,69 @@ std::vector<ThreadSection> sections_from_plan(const ThreadPlan& plan) {
     return {section_from_plan(plan, "")};
   std::vector<ThreadSection> out;
   for (size_t j = 1; j < plan.points.size(); ++j) out.push_back(segment_section(plan, j));
+  return out;
+}
+
+}  // namespace clpost
+
+namespace clpost {
+
+namespace {
+
+bool same_pass(const SectionPass& a, const SectionPass& b) {
+  return a.n == b.n && a.start == b.start && a.depth == b.depth && a.shift == b.shift &&
+         a.kind == b.kind;
+}
+
+bool same_lead(const SectionLead& a, const SectionLead& b) {
+  return a.known == b.known && a.along_z == b.along_z && a.cut_from == b.cut_from &&
+         a.cut_to == b.cut_to && a.right_from == b.right_from && a.right_to == b.right_to &&
+         a.any == b.any && a.run_in == b.run_in && a.run_out == b.run_out && a.rpm == b.rpm &&
+         a.across_lo == b.across_lo && a.across_hi == b.across_hi;
+}
+
+// A title without the line it names ("thread at line 12 - ...", "thread at part.cl:12 as ..."):
+// the digits after the first "line " or ':' dropped.
+std::string title_key(const std::string& title) {
+  size_t at = title.find("line ");
+  at = at == std::string::npos ? title.find(':') : at + 4;
+  if (at == std::string::npos) return title;
+  size_t end = at + 1;
+  while (end < title.size() && std::isdigit(static_cast<unsigned char>(title[end]))) ++end;
+  return title.substr(0, at + 1) + title.substr(end);
+}
+
+}  // namespace
+
+bool same_section(const ThreadSection& a, const ThreadSection& b) {
+  return title_key(a.title) == title_key(b.title) && a.units == b.units && a.side == b.side &&
+         a.pitch == b.pitch && a.lead == b.lead && a.starts == b.starts && a.depth == b.depth &&
+         a.tool_angle == b.tool_angle &&
+         std::equal(a.passes.begin(), a.passes.end(), b.passes.begin(), b.passes.end(),
+                    same_pass) &&
+         same_lead(a.zones, b.zones);
+}
+
+void SectionGroups::add(ThreadSection s) {
+  ++total_;
+  for (auto& [g, n] : groups_) {
+    if (!same_section(g, s)) continue;
+    ++n;
+    return;
+  }
+  if (groups_.size() >= kMaxDrawnSections) {
+    ++left_out_;
+    return;
+  }
+  groups_.emplace_back(std::move(s), 1);
+}
+
+std::vector<ThreadSection> SectionGroups::drawn() const {
+  std::vector<ThreadSection> out;
+  for (const auto& [g, n] : groups_) {
+    out.push_back(g);
+    if (n > 1) out.back().title += fmt::format(" \u00d7{} ({} identical threads)", n, n);
+  }
   return out;
 }
 

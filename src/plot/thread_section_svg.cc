@@ -602,27 +602,8 @@ std::string subtitle(const ThreadSection& s, int decimals, const char* unit) {
   return t;
 }
 
-}  // namespace
-
-SvgSize thread_section_size(const ThreadSection& section) {
-  const Layout l = layout_of(section);
-  return {l.width, l.height};
-}
-
-void draw_thread_section(SvgWriter& w, const ThreadSection& s, std::string_view id) {
-  const Layout l = layout_of(s);
-  const Frame& f = l.f;
-  w.open("g", {{"class", "thread-section"}});
-  w.empty("rect",
-          {{"width", svg_num(l.width)}, {"height", svg_num(l.height)}, {"fill", "#ffffff"}});
-  w.text(
-      "text",
-      {{"class", "title"}, {"x", "16"}, {"y", "28"}, {"font-size", "19"}, {"font-weight", "bold"}},
-      s.title);
-  w.text(
-      "text",
-      {{"class", "subtitle"}, {"x", "16"}, {"y", "50"}, {"font-size", "13"}, {"fill", "#444444"}},
-      subtitle(s, l.decimals, l.unit));
+// The section's clip path, the part's hatch and the lead hatch, ids prefixed with `id`.
+void draw_defs(SvgWriter& w, const ThreadSection& s, const Frame& f, std::string_view id) {
   w.open("defs");
   w.open("clipPath", {{"id", fmt::format("{}clip", id)}});
   w.empty("rect", {{"x", svg_num(f.ox)},
@@ -646,6 +627,30 @@ void draw_thread_section(SvgWriter& w, const ThreadSection& s, std::string_view 
   // Slanted against the part's hatch.
   if (s.zones.known) lead_hatch_pattern(w, fmt::format("{}lead", id), "#5f5f5f", "1.4");
   w.close();
+}
+
+}  // namespace
+
+SvgSize thread_section_size(const ThreadSection& section) {
+  const Layout l = layout_of(section);
+  return {l.width, l.height};
+}
+
+void draw_thread_section(SvgWriter& w, const ThreadSection& s, std::string_view id) {
+  const Layout l = layout_of(s);
+  const Frame& f = l.f;
+  w.open("g", {{"class", "thread-section"}});
+  w.empty("rect",
+          {{"width", svg_num(l.width)}, {"height", svg_num(l.height)}, {"fill", "#ffffff"}});
+  w.text(
+      "text",
+      {{"class", "title"}, {"x", "16"}, {"y", "28"}, {"font-size", "19"}, {"font-weight", "bold"}},
+      s.title);
+  w.text(
+      "text",
+      {{"class", "subtitle"}, {"x", "16"}, {"y", "50"}, {"font-size", "13"}, {"fill", "#444444"}},
+      subtitle(s, l.decimals, l.unit));
+  draw_defs(w, s, f, id);
   w.open("g", {{"clip-path", fmt::format("url(#{}clip)", id)}});
   draw_part(w, s, f, id);
   draw_references(w, s, f);

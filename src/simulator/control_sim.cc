@@ -83,6 +83,16 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.state = state;
     out.path.entries.push_back({out.path.moves.size(), mv});
   }
+  if (opt.on_move) {
+    Move mv;
+    mv.kind = kind;
+    mv.from = pos_known ? pos : to;
+    mv.to = to;
+    mv.center = pos_known ? center : Vec2{};
+    mv.line = static_cast<int>(line);
+    mv.lead = pos_known ? lead : 0;
+    opt.on_move(mv, cut);
+  }
   if (opt.keep_moves && pos_known) {
     Move mv;
     mv.kind = kind;

@@ -3,6 +3,7 @@
 // diameter mode, and every threading cycle clpost writes expanded with the control's documented
 // law (controls/*/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
 // cuts (for `clpost verify`).
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,10 @@ struct Simulation {
 
 struct SimOptions {
   bool keep_moves = true;
+  // Every move as it is made, with the modal state it is made with (the entries from an unknown
+  // position among them, in order, as Move{from == to}): verify of the path while the program
+  // is read, with no moves kept.
+  std::function<void(const Move&, const CutState&)> on_move;
 };
 
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control

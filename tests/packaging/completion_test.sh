@@ -70,7 +70,7 @@ expect "clpost --sheet |" "cl-files out"
 expect "clpost check -|" "-h --help -m --machine --set --strict"
 expect "clpost plan --|" "--help --machine --set --format"
 expect "clpost verify --|" "--help --machine --set --cl --plan --tolerance"
-expect "clpost plot -|" "-h --help -m --machine --set --cl -o --output --thread"
+expect "clpost plot -|" "-h --help -m --machine --set --cl -o --output --thread --full"
 expect "clpost machines -|" "-h --help"
 # An option's value is not taken for a subcommand: `-m plot` is the machine, not the command.
 expect "clpost -m plot --s|" "--set --sheet --sheets --strict"
