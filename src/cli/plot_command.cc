@@ -230,10 +230,10 @@ bool write_svg(const std::string& path, const std::string& svg, std::string& dia
 }  // namespace
 
 bool simulate_text(std::string_view text, const std::string& name, const Machine& m,
-                   Simulation& sim, std::string& diagnostics) {
+                   Simulation& sim, std::string& diagnostics, const SimOptions& options) {
   Diagnostics d(name);
   reader::LineSource src(text);
-  const bool ok = simulate_nc(src, m, d, sim);
+  const bool ok = simulate_nc(src, m, d, sim, options);
   diagnostics += d.render_all();
   return ok;
 }

@@ -36,6 +36,6 @@ PlotOutcome plot_file(const PlotRequest& req);
 // Runs the NC program `text` (shown in diagnostics as `name`) through the machine's control
 // simulation into `sim`; its diagnostics are appended to `diagnostics`. False on errors.
 bool simulate_text(std::string_view text, const std::string& name, const Machine& m,
-                   Simulation& sim, std::string& diagnostics);
+                   Simulation& sim, std::string& diagnostics, const SimOptions& options = {});
 
 }  // namespace clpost

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli/plot_command.h"
+#include "plot/path_thinner.h"
 #include "sheet/sheet.h"
 #include "support/output_file.h"
 
@@ -52,10 +53,18 @@ bool sheet_text(const std::string& input, const PostOutcome& r, SheetCapture& ca
     text = sheet_json(d);
     return true;
   }
+  // The backplot as `clpost plot` draws it: the moves thinned as they stream (path_thinner.h).
+  PathThinner thinner;
+  SimOptions options;
+  options.keep_moves = false;
+  options.on_move = [&thinner](const Move& mv, const CutState&) {
+    if (!(mv.from.x == mv.to.x && mv.from.z == mv.to.z)) thinner.add(mv);
+  };
   Simulation sim;
-  if (!simulate_text(capture.program, "<program of " + d.program + ">", m, sim, diagnostics))
+  if (!simulate_text(capture.program, "<program of " + d.program + ">", m, sim, diagnostics,
+                     options))
     return false;
-  d.toolpath = std::move(sim.path);
+  d.toolpath = thinner.finish(sim.units);
   text = sheet_html(d);
   return true;
 }

@@ -11,7 +11,7 @@
 #include "interpreter/cycle_time.h"
 #include "laws/hole_law.h"
 #include "planner/thread_plan.h"
-#include "simulator/toolpath.h"
+#include "plot/path_thinner.h"
 #include "support/diagnostics.h"
 
 namespace clpost {
@@ -31,7 +31,7 @@ struct SheetData {
   std::vector<OutputUsed> outputs;      // what wrote each thread and hole
   std::vector<Diagnostic> diagnostics;  // the kept ones (warnings and notes)
   size_t warnings = 0;                  // all, kept or not
-  Toolpath toolpath;                    // the program as its control runs it (the backplot)
+  ThinnedPath toolpath;  // the program as its control runs it, thinned (the backplot)
 };
 
 // The page: a complete HTML5 document, no external file, script or font.

@@ -33,7 +33,8 @@ std::string facts_header(const SheetData& d) {
 std::string backplot_section(const SheetData& d) {
   std::string o = "<section class=\"page\" id=\"backplot\">\n<h2>Backplot</h2>\n";
   const std::string title = fmt::format("{} posted on {}", d.program, d.machine);
-  o += "<figure class=\"backplot\">\n" + inline_svg(backplot_svg(d.toolpath, nullptr, title));
+  o += "<figure class=\"backplot\">\n" +
+       inline_svg(backplot_svg(d.toolpath, nullptr, title, simplified_note(d.toolpath)));
   o += "<figcaption>The program as the control runs it: feed moves solid, rapids dashed.";
   return o + "</figcaption>\n</figure>\n</section>\n";
 }
