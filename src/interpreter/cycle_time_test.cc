@@ -137,7 +137,7 @@ TEST(CycleTime, ProgramHeader) {
 //   T2 line 8: 2 s + 10 mm 6 s                                                    ->  8.0 s
 //   total 24.6 s, three tool changes (clpost check --set ... says the same: 0:24.6).
 constexpr const char* kTwoTools =
-    "PARTNO SHAFT 7\nFEDRAT/100,MMPM\nTPRINT/OD TURN (R0.8)\nLOADTL/1\nFROM/10,0,5\n"
+    "PARTNO SHAFT 7\nFEDRAT/100,MMPM\nTPRINT/OD TURN (R0.8) 50%\nLOADTL/1\nFROM/10,0,5\n"
     "GOTO/10,0,-10\nPPRINT TOOL: GROOVE 3MM\nLOADTL/2\nGOTO/10,0,-20\nLOADTL/1\n"
     "GOTO/10,0,-26\nFINI\n";
 
@@ -152,12 +152,12 @@ Machine shipped(const std::string& name) {
 TEST(CycleTime, HeaderOnFanucInItsCommentStyle) {
   PostedText r = post_text(kTwoTools, shipped("fanuc-0i-t"), "shaft.cl");
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
-  // Upper case, the parentheses of "(R0.8)" dropped (a Fanuc comment cannot hold them), not
-  // numbered (the control's blocks need no N), after the start's N10 and before the body's N20.
+  // Upper case, the parentheses of "(R0.8)" dropped (a Fanuc comment cannot hold them) and the
+  // '%' (the control's end-of-tape character, not allowed in its comments), not numbered (the control's blocks need no N), after the start's N10 and before the body's N20.
   const std::string expected =
       "%\nO0001\nN10 G18 G21 G40 G97\n"
       "(PROGRAM SHAFT 7, MACHINE FANUC-0I-T)\n"
-      "(T1 OFFSET 1, OD TURN R0.8, FIRST AT CL LINE 4, 0:16.6)\n"
+      "(T1 OFFSET 1, OD TURN R0.8 50, FIRST AT CL LINE 4, 0:16.6)\n"
       "(T2 OFFSET 2, GROOVE 3MM, FIRST AT CL LINE 8, 0:08.0)\n"
       "(CYCLE TIME 0:24.6, 3 TOOL CHANGES)\n"
       "N20 (SHAFT 7)\n";
@@ -169,11 +169,11 @@ TEST(CycleTime, HeaderOnFanucInItsCommentStyle) {
 TEST(CycleTime, HeaderOnSinumerikInItsCommentStyle) {
   PostedText r = post_text(kTwoTools, shipped("sinumerik-840d"), "shaft.cl");
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
-  // `;` comments keep their case and their parentheses; unnumbered like every `;` line.
+  // `;` comments keep their case, their parentheses and '%'; unnumbered like every `;` line.
   const std::string expected =
       "N10 G18 G71 G40 G90 DIAMON\n"
       "; program SHAFT 7, machine sinumerik-840d\n"
-      "; T1 offset 1, OD TURN (R0.8), first at CL line 4, 0:16.6\n"
+      "; T1 offset 1, OD TURN (R0.8) 50%, first at CL line 4, 0:16.6\n"
       "; T2 offset 2, GROOVE 3MM, first at CL line 8, 0:08.0\n"
       "; cycle time 0:24.6, 3 tool changes\n"
       "; SHAFT 7\n";
