@@ -41,6 +41,23 @@ TEST(Cli, SyntaxErrorOnLine7ExitsOneAndWritesNothing) {
   fs::remove_all(dir);
 }
 
+// Every shipped machine writes a header, its body spooled beside the output file until the end:
+// the spool has no name, so a good post leaves the program and nothing else (and a failed one
+// nothing at all: SyntaxErrorOnLine7ExitsOneAndWritesNothing).
+TEST(Cli, TheHeaderSpoolLeavesNoFileBehind) {
+  std::string dir = temp_dir();
+  write_file(dir + "/good.cl", "PARTNO GOOD\nUNITS/MM\nLOADTL/1\nRAPID\nGOTO/10,0,2\nFINI\n");
+  RunResult r = run(bin() + " -o " + quote(dir + "/good.nc") + " " + quote(dir + "/good.cl"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_file(dir + "/good.nc").find("(program GOOD, machine generic-lathe)\n"),
+            std::string::npos);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
+  // The same program on standard output (its spool in the system's temporary directory).
+  RunResult out = run(bin() + " " + quote(dir + "/good.cl"));
+  EXPECT_EQ(out.out, read_file(dir + "/good.nc"));
+  fs::remove_all(dir);
+}
+
 TEST(Cli, AFailedPostNeverReplacesAGoodProgram) {
   std::string dir = temp_dir();
   write_file(dir + "/bad.cl", kBadLine7);
@@ -118,7 +135,12 @@ TEST(Cli, SetOverridesTheMachine) {
   RunResult r = run(bin() + " --set block_numbers.enabled=false " +
                     quote(source_dir() + "/samples/pin-apt.apt"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out.rfind("%\nO0001\nG18 G21 G40 G90\n(PIN-01 turned pin, 25 mm stock)\nT0303\n", 0),
+  EXPECT_EQ(r.out.rfind("%\nO0001\nG18 G21 G40 G90\n"
+                        "(program PIN-01 turned pin, 25 mm stock, machine generic-lathe)\n"
+                        "(T3 offset 3, first at CL line 5, 0:15.5)\n"
+                        "(cycle time 0:15.5, 1 tool changes)\n"
+                        "(PIN-01 turned pin, 25 mm stock)\nT0303\n",
+                        0),
             0u)
       << r.out;
   RunResult bad =
@@ -173,7 +195,9 @@ TEST(Cli, MissingFiniIsAWarningAndTheProgramIsClosed) {
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.err,
             dir + "/nofini.cl:3: warning: the file ends without FINI: the program end was added\n");
-  EXPECT_EQ(r.out, "%\nO0001\nG18 G21 G40 G90\nG0 X20. Z2.\nM30\n%\n");
+  EXPECT_EQ(r.out,
+            "%\nO0001\nG18 G21 G40 G90\n(program nofini, machine generic-lathe)\n"
+            "(cycle time 0:00.0, 0 tool changes)\nG0 X20. Z2.\nM30\n%\n");
   fs::remove_all(dir);
 }
 

@@ -121,7 +121,7 @@ TEST(Holes, AnEditedPeckWordFails) {
       p);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(first_error(r),
-            p + ":26:1: error: hole at " + kPart + ":37: 6 feeds into the hole, CL 5");
+            p + ":34:1: error: hole at " + kPart + ":37: 6 feeds into the hole, CL 5");
 }
 
 // LinuxCNC's interpreter on the part: the feeds along the centre line end where the plan's do.

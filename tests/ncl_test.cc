@@ -135,7 +135,9 @@ TEST(NclFiles, PostLikeTheirAsTwins) {
   EXPECT_EQ(cl.exit_code, 0) << cl.err;
   EXPECT_EQ(as.exit_code, 0) << as.err;
   EXPECT_EQ(cl.out, as.out);
-  EXPECT_EQ(cl.out, "%\nO0001\nN10 G18 G21 G40 G90\nN20 M30\n%\n");
+  EXPECT_EQ(cl.out,
+            "%\nO0001\nN10 G18 G21 G40 G90\n(program Volumill_1a, machine generic-lathe)\n"
+            "(cycle time 0:00.0, 0 tool changes)\nN20 M30\n%\n");
   // upside_down is a five-axis milling program with no feed: on a lathe (its Y ignored) both
   // stop on the same 23 feed moves, and neither writes a program.
   const std::string x = post + "--set cl.radial_axis=x ";
@@ -168,7 +170,7 @@ TEST(NclFiles, PostLikeTheirAsTwins) {
   ASSERT_EQ(cl.exit_code, 0) << cl.err;
   ASSERT_EQ(as.exit_code, 0) << as.err;
   const auto p = positions(cl.out), q = positions(as.out);
-  ASSERT_EQ(p.size(), 32u);  // %, O0001, 29 numbered blocks, %
+  ASSERT_EQ(p.size(), 35u);  // %, O0001, 29 numbered blocks, 3 header comments, %
   ASSERT_EQ(q.size(), p.size());
   size_t differ = 0;
   for (size_t i = 0; i < p.size(); ++i) {

@@ -59,7 +59,8 @@ TEST(PathThread, RepeatedGotoInsideCoupleWritesNoMotionlessBlock) {
             "  GOTO/10,0,-20\n"
             "  ^\n");
   EXPECT_EQ(p.program,
-            "%\nO0001\nN10 G18 G21 G40 G90\nN20 G97 S800 M3\nN30 G0 X20. Z2.\n"
+            "%\nO0001\nN10 G18 G21 G40 G90\n(program t, machine generic-lathe)\n"
+            "(cycle time 0:00.7, 0 tool changes)\nN20 G97 S800 M3\nN30 G0 X20. Z2.\n"
             "N40 G33 Z-20. F3.\nN50 X23. Z-21.5 F3.\nN60 G0 X30. Z5.\nN70 M30\n%\n");
 }
 
@@ -78,8 +79,9 @@ TEST(PathThread, ACoupleRightAfterASinglePassThreadVerifies) {
   EXPECT_NE(p.program.find("N50 G33 Z-20. F1.5\nN60 X18.2 F1.5\nN70 X21.2 Z-21.5 F1.5\n"),
             std::string::npos)
       << p.program;
-  EXPECT_NE(p.run.err.find("  t.cl:6       1 passes  ok     G33, NC line 7\n"
-                           "  t.cl:10      1 passes  ok     G33, NC line 7\n"),
+  // NC line 9: after the program start's three lines and the header's two.
+  EXPECT_NE(p.run.err.find("  t.cl:6       1 passes  ok     G33, NC line 9\n"
+                           "  t.cl:10      1 passes  ok     G33, NC line 9\n"),
             std::string::npos)
       << p.run.err;
 }

@@ -35,7 +35,7 @@ TEST(Verify, FanucG76HeightWordEdited) {
   EXPECT_EQ(r.exit_code, 1);
   // Height 0.900 instead of 0.920: the first pass sits 0.02 higher, at X15.208 (radius 7.604)
   // where the plan cuts 0.3756 deep (radius 7.6244).
-  EXPECT_EQ(first_error(r), p + ":22:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":25:1: error: thread at " + kOptions +
                                 ":19: pass 1: depth 0.3960, plan 0.3756 (tolerance 0.005)");
   EXPECT_NE(r.out.find("\nFAILED: 6 differences beyond 0.005 mm\n"), std::string::npos) << r.out;
 }
@@ -44,7 +44,7 @@ TEST(Verify, FanucG92PassDropped) {
   std::string p;
   RunResult r = verify_edited("fanuc-0i-t", "threads-options.nc", "N110 X14.896\n", "", p);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), p + ":12:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":15:1: error: thread at " + kOptions +
                                 ":12: pass 2 (depth 0.5520, from X14.8960 Z2.0000) is not cut by "
                                 "the program");
   EXPECT_NE(r.out.find("39 passes planned, 38 cut\n"), std::string::npos) << r.out;
@@ -58,7 +58,7 @@ TEST(Verify, Cycle99DepthArgumentEdited) {
                               "CYCLE99(2, 16, -20, 16, 0, 0, 0.9, 0, 30, 0, 6,", p);
   EXPECT_EQ(r.exit_code, 1);
   // Constant cross-section: pass 1 at TDEP root(1/6) = 0.9 x 0.40825 = 0.3674.
-  EXPECT_EQ(first_error(r), p + ":38:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":41:1: error: thread at " + kOptions +
                                 ":19: pass 1: depth 0.3674, plan 0.3756 (tolerance 0.001)");
 }
 
@@ -69,11 +69,11 @@ TEST(Verify, LinuxcncG76DepthWordEdited) {
                               "G76 P1.5 Z-20. I-2.59808 J0.751177 K1.8 R2 Q30. H0", p);
   EXPECT_EQ(r.exit_code, 1);
   // K (a diameter in G7) 1.8: the full depth is 0.9, and the passes end K tan 30 = 0.0115 earlier.
-  EXPECT_NE(r.err.find(p + ":40:1: error: thread at " + kOptions +
+  EXPECT_NE(r.err.find(p + ":43:1: error: thread at " + kOptions +
                        ":19: pass 6: depth 0.9000, plan 0.9200 (tolerance 1e-05)\n"),
             std::string::npos)
       << r.err;
-  EXPECT_EQ(first_error(r), p + ":40:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":43:1: error: thread at " + kOptions +
                                 ":19: pass 1: ends at X15.2488 Z-19.6972, plan X15.2488 "
                                 "Z-19.6857 (tolerance 1e-05)");
 }
@@ -83,7 +83,7 @@ TEST(Verify, HeidenhainG31DepthWordEdited) {
   RunResult r = verify_edited("heidenhain-pilot", "threads-options.nc", "G31 F1.5 U0.92 IC6",
                               "G31 F1.5 U0.9 IC6", p);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), p + ":41:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":44:1: error: thread at " + kOptions +
                                 ":19: pass 1: depth 0.3674, plan 0.3756 (tolerance 0.001)");
 }
 
@@ -91,7 +91,7 @@ TEST(Verify, HaasG76HeightWordEdited) {
   std::string p;
   RunResult r = verify_edited("haas-st", "threads-options.nc", "K0.92 D0.376", "K0.9 D0.376", p);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), p + ":21:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":24:1: error: thread at " + kOptions +
                                 ":19: pass 1: depth 0.3960, plan 0.3756 (tolerance 0.005)");
 }
 
@@ -101,7 +101,7 @@ TEST(Verify, G33LoopInfeedEdited) {
                               "N150 G1 X14.8 F0.2", p);
   EXPECT_EQ(r.exit_code, 1);
   // The G33 block cuts at the infeed's X: radius 7.4, 0.6 below the crest at radius 8.
-  EXPECT_EQ(first_error(r), p + ":18:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":21:1: error: thread at " + kOptions +
                                 ":12: pass 2: depth 0.6000, plan 0.5520 (tolerance 0.001)");
 }
 
@@ -120,7 +120,7 @@ TEST(Verify, ChainSegmentEdited) {
   RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
                     " verify -m generic-lathe " + quote(path) + " --cl " + cl);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), path + ":12:1: error: thread at " + cl +
+  EXPECT_EQ(first_error(r), path + ":15:1: error: thread at " + cl +
                                 ":12: pass 1: move 2 ends at X35.2770 Z-60.2380, plan X35.1771 "
                                 "Z-60.2375 (tolerance 0.001)");
   EXPECT_NE(r.out.find("\nFAILED: 1 difference beyond 0.001 mm\n"), std::string::npos) << r.out;
@@ -141,7 +141,7 @@ TEST(Verify, Cycle98DepthArgumentEdited) {
   RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
                     " verify -m sinumerik-840d " + quote(path) + " --cl " + cl);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), path + ":8:1: error: thread at " + cl +
+  EXPECT_EQ(first_error(r), path + ":11:1: error: thread at " + cl +
                                 ":12: pass 1: starts at X29.1950 Z-0.2324, plan X29.1771 Z-0.2375 "
                                 "(tolerance 0.001)");
 }
@@ -168,7 +168,7 @@ TEST(Verify, AgainstASavedPlan) {
   r = run(quote(clpost_bin()) + " verify -m haas-st " + quote(golden) + " --plan " +
           quote(dir + "/plan.json"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), golden + ":14:1: error: thread at " + dir +
+  EXPECT_EQ(first_error(r), golden + ":17:1: error: thread at " + dir +
                                 "/plan.json:12: pass 3: depth 0.7260, plan 0.7360 (tolerance "
                                 "0.005)");
 }
@@ -196,7 +196,7 @@ TEST(Verify, AgainstASavedChainPlan) {
   r = run(quote(clpost_bin()) + " verify -m fanuc-0i-t " + quote(golden) + " --plan " +
           quote(dir + "/plan.json"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), golden + ":13:1: error: thread at " + dir +
+  EXPECT_EQ(first_error(r), golden + ":16:1: error: thread at " + dir +
                                 "/plan.json:11: pass 1: move 1 ends at X28.4060 Z-10.1170, plan "
                                 "X28.5060 Z-10.1172 (tolerance 0.005)");
 }
@@ -279,7 +279,7 @@ TEST(Verify, ABatchVerifiesEveryProgram) {
   EXPECT_NE(r.err.find("error     samples/threads/options.apt: error: --verify: the program does "
                        "not cut the plan: " +
                        bad +
-                       "/options.nc:13: thread at samples/threads/options.apt:12: pass 1: depth "
+                       "/options.nc:16: thread at samples/threads/options.apt:12: pass 1: depth "
                        "0.3000, plan 0.3067 (tolerance 0.001) (+34 more)\n"),
             std::string::npos)
       << r.err;

@@ -26,87 +26,87 @@ struct Edit {
 
 const Edit kEdits[] = {
     // End points: a cut to the wrong place; a rapid written as a feed.
-    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N110 G1 Z-42.\n", "N110 G1 Z-41.\n", 12,
+    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N110 G1 Z-42.\n", "N110 G1 Z-41.\n", 20,
      "motion at samples/part-turned.apt:19: X24.0000 Z-42.0000 is not reached by the program in "
      "order",
      2},
-    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N130 G0 Z2.\n", "N130 G1 Z2.\n", 15,
+    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N130 G0 Z2.\n", "N130 G1 Z2.\n", 23,
      "motion at samples/part-turned.apt:22: X32.0000 Z2.0000 is reached by a feed move, the CL "
      "rapids there",
      1},
     // Spindle: SPINDL/800,RPM,CLW (CL line 7) is in force from the first motion (line 11); it is
     // compared at the first feed move, GOTO/0,0,0 at CL line 14, NC line 10.
-    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N40 G97 S800 M3", "N40 G97 S900 M3", 10,
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N40 G97 S800 M3", "N40 G97 S900 M3", 18,
      "spindle at samples/part-turned.apt:14: CL CW at 800 rpm (set at CL line 7), program CW at "
      "900 rpm",
      1},
-    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N40 G97 S800 M3", "N40 G97 S800 M4", 10,
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N40 G97 S800 M3", "N40 G97 S800 M4", 18,
      "spindle at samples/part-turned.apt:14: CL CW at 800 rpm (set at CL line 7), program CCW at "
      "800 rpm",
      1},
-    {"haas-st", "part-turned.nc", "part-turned.apt", "G97 S700 M3", "M5", 80,
+    {"haas-st", "part-turned.nc", "part-turned.apt", "G97 S700 M3", "M5", 88,
      "spindle at samples/part-turned.apt:65: CL CW at 700 rpm (set at CL line 61), program stopped",
      1},
     // Feed: FEDRAT/0.2,MMPR as F0.2 with G99 (per revolution on a Fanuc).
-    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "G99 F0.2", "G99 F0.25", 10,
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "G99 F0.2", "G99 F0.25", 18,
      "feed at samples/part-turned.apt:14: CL 0.2 mm/rev (set at CL line 9), program 0.25 mm/rev",
      1},
-    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "G99 F0.2", "G98 F0.2", 10,
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "G99 F0.2", "G98 F0.2", 18,
      "feed at samples/part-turned.apt:14: CL 0.2 mm/rev (set at CL line 9), program 0.2 mm/min", 1},
     // Tool: LOADTL/6,ADJUST,6 as T0606; T0605 is tool 6 with offset 5, reported once although
     // the CL's state changes at the next motion.
-    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N420 T0606", "N420 T0605", 46,
+    {"fanuc-0i-t", "part-turned.nc", "part-turned.apt", "N420 T0606", "N420 T0605", 54,
      "tool at samples/part-turned.apt:64: CL tool 6 offset 6 (set at CL line 60), program tool 6 "
      "offset 5",
      1},
-    {"sinumerik-840d", "bushing-creo.mpf", "bushing-creo.ncl", "T2 D2", "T2 D1", 7,
+    {"sinumerik-840d", "bushing-creo.mpf", "bushing-creo.ncl", "T2 D2", "T2 D1", 10,
      "tool at samples/bushing-creo.ncl:15: CL tool 2 offset 2 (set at CL line 7), program tool 2 "
      "offset 1",
      1},
     // LinuxCNC: T2 without M6 selects the tool but does not change it.
-    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43 H2", "T2 G43 H2", 7,
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43 H2", "T2 G43 H2", 10,
      "tool at samples/bushing-creo.ncl:15: CL tool 2 offset 2 (set at CL line 7), program no tool",
      1},
     // LinuxCNC: G43 H{offset} selects the offset (LOADTL/…,ADJUST).
-    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43 H2", "T2 M6 G43 H12", 7,
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "T2 M6 G43 H2", "T2 M6 G43 H12", 10,
      "tool at samples/bushing-creo.ncl:15: CL tool 2 offset 2 (set at CL line 7), program tool 2 "
      "offset 12",
      1},
     // Constant surface speed: SPINDL/SFM,400,CLW,MAXRPM,2500 in an inch file.
-    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G50 S2500", "G50 S2000", 10,
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G50 S2500", "G50 S2000", 13,
      "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min CSS, limit 2500 rpm (set at CL "
      "line 12), program CW at 400 ft/min CSS, limit 2000 rpm",
      1},
-    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G96 S400", "G97 S400", 10,
+    {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G96 S400", "G97 S400", 13,
      "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min CSS, limit 2500 rpm (set at CL "
      "line 12), program CW at 400 rpm",
      1},
-    {"sinumerik-840d", "bushing-creo.mpf", "bushing-creo.ncl", "LIMS=2500", "LIMS=3000", 8,
+    {"sinumerik-840d", "bushing-creo.mpf", "bushing-creo.ncl", "LIMS=2500", "LIMS=3000", 11,
      "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min CSS, limit 2500 rpm (set at CL "
      "line 12), program CW at 400 ft/min CSS, limit 3000 rpm",
      1},
-    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "D2500 S400", "D2500 S410", 8,
+    {"linuxcnc-lathe", "bushing-creo.ngc", "bushing-creo.ncl", "D2500 S400", "D2500 S410", 11,
      "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min CSS, limit 2500 rpm (set at CL "
      "line 12), program CW at 410 ft/min CSS, limit 2500 rpm",
      1},
-    {"heidenhain-pilot", "bushing-creo.nc", "bushing-creo.ncl", "G26 S2500", "G26 S2400", 10,
+    {"heidenhain-pilot", "bushing-creo.nc", "bushing-creo.ncl", "G26 S2500", "G26 S2400", 13,
      "spindle at samples/bushing-creo.ncl:17: CL CW at 400 ft/min CSS, limit 2500 rpm (set at CL "
      "line 12), program CW at 400 ft/min CSS, limit 2400 rpm",
      1},
     // Arcs: the CL's CIRCLE (centre X0.4 radius, Z-0.05: I0.05 K0 from X0.35 Z-0.05) ends at
     // X0.8 Z0 turning counter-clockwise.
     {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G3 X0.8 Z0. I0.05 K0.",
-     "G2 X0.8 Z0. I0.05 K0.", 13,
+     "G2 X0.8 Z0. I0.05 K0.", 16,
      "motion at samples/bushing-creo.ncl:22: the CL cuts a counter-clockwise arc (G3) to X0.8000 "
      "Z0.0000, the program a clockwise arc (G2)",
      1},
     {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G3 X0.8 Z0. I0.05 K0.",
-     "G3 X0.8 Z0. I0.05 K0.01", 13,
+     "G3 X0.8 Z0. I0.05 K0.01", 16,
      "arc at samples/bushing-creo.ncl:22: the CL turns around X0.8000 Z-0.0500, the program around "
      "X0.8000 Z-0.0400",
      1},
     {"fanuc-0i-t", "bushing-creo.nc", "bushing-creo.ncl", "G3 X0.8 Z0. I0.05 K0.", "G1 X0.8 Z0.",
-     13,
+     16,
      "motion at samples/bushing-creo.ncl:22: the CL cuts a counter-clockwise arc (G3) to X0.8000 "
      "Z0.0000, the program a straight line (G1)",
      1},

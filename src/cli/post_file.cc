@@ -58,6 +58,9 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
   ClReader reader(input, diags);
   PostOptions options = req.options;
   options.keep_motions = options.keep_motions || req.verify;
+  // The body waits for its header beside the output file (same file system, no name), else in
+  // the system's temporary directory.
+  if (!req.output.empty()) options.spool_dir = OutputFile::directory_beside(req.output);
   PostSummary summary = post(reader, *req.machine, sink, diags, options, on_thread);
   out.holes = std::move(summary.holes);
   out.outputs = std::move(summary.outputs);

@@ -108,6 +108,7 @@ void time_tool_change(PostState& s) {
   t.first_nc_line = written + 1;
   t.tool = s.tool.number;
   t.offset = s.tool.offset;
+  t.line = s.tool_line;
   t.text = s.tool.text;
   t.nose_radius = s.tool.nose_radius;
   t.seconds = s.m.tool_change_time;
@@ -254,6 +255,34 @@ std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, 
   }
   out.push_back(fmt::format("cycle time {}, {} tool changes{}", time_text(t.total()), changes,
                             t.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : ""));
+  return out;
+}
+
+std::vector<std::string> header_lines(const CycleTime& t, std::string_view program,
+                                      std::string_view machine, LengthUnit units, bool diameter) {
+  std::vector<std::string> out{fmt::format("program {}, machine {}", program, machine)};
+  std::vector<ToolTime> tools;  // each tool once (number and offset), its times summed
+  for (const ToolTime& tt : t.tools) {
+    if (tt.tool < 0) continue;
+    auto same = std::find_if(tools.begin(), tools.end(), [&tt](const ToolTime& u) {
+      return u.tool == tt.tool && u.offset == tt.offset;
+    });
+    if (same == tools.end()) {
+      tools.push_back(tt);
+      continue;
+    }
+    same->seconds += tt.seconds;
+    if (same->text.empty()) same->text = tt.text;
+    if (!same->nose_radius) same->nose_radius = tt.nose_radius;
+  }
+  for (const ToolTime& tt : tools) {
+    std::string line = fmt::format("T{} offset {}", tt.tool, tt.offset);
+    if (!tt.text.empty()) line += ", " + tt.text;
+    if (tt.nose_radius) line += fmt::format(", nose radius {:g}", *tt.nose_radius);
+    line += fmt::format(", first at CL line {}, {}", tt.line, time_text(tt.seconds));
+    out.push_back(std::move(line));
+  }
+  out.push_back(cycle_time_lines(t, units, diameter).back());
   return out;
 }
 

@@ -12,9 +12,11 @@
 //   holes            the hole's own moves (pecks, dwell, retract) whatever NC writes them;
 //   dwells, and time.tool_change seconds for every tool change.
 // A rapid rate of 0 (not given) times rapids as 0 s and says so.
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "emitters/hole_output.h"
@@ -37,6 +39,7 @@ struct SpeedUsed {
 struct ToolTime {
   int tool = -1;  // -1: before the first tool change
   int offset = -1;
+  uint32_t line = 0;  // the CL line of the tool change
   std::string text;
   std::optional<double> nose_radius;
   double seconds = 0;
@@ -75,6 +78,12 @@ std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, 
 bool listed(const ToolTime& t);
 // Every tool's NC lines moved down by `lines` (a program_header written before them).
 void shift_nc_lines(CycleTime& t, size_t lines);
+
+// The program header (program_header): the program's name and the machine's, then each tool
+// once, in the order first used (number, offset, text, nose radius, the CL line of its first
+// change, its time over all its uses), then the cycle time as cycle_time_lines() says it.
+std::vector<std::string> header_lines(const CycleTime& t, std::string_view program,
+                                      std::string_view machine, LengthUnit units, bool diameter);
 
 // The hooks that time a program as it is posted are in clock.h.
 

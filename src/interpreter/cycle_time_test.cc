@@ -114,20 +114,70 @@ TEST(CycleTime, FeedAndSpeedChangesBetweenMoves) {
   EXPECT_EQ(t.tools[0].z_max, -10);
 }
 
-// A machine with a program_header writes the list after its program start (generic-lathe's
-// three lines), the template once per line, as comment text (no parentheses inside).
+// A machine with a program_header writes it after its program start (generic-lathe's three
+// lines), the template once per line, as comment text (no parentheses inside).
 TEST(CycleTime, ProgramHeader) {
   std::vector<std::string> sets = kRates;
-  sets.push_back("templates.program_header=[\"({text})\"]");
+  sets.push_back("templates.program_header=[\"(HDR {text})\"]");
   PostedText r =
       post_text("FEDRAT/100,MMPM\nLOADTL/1\nFROM/10,0,5\nGOTO/10,0,-10\nPPRINT (done)\nFINI\n",
-                load("generic-lathe", sets), "t.cl");
+                load("generic-lathe", sets), "dir/t.cl");
   // 15 mm at 100 mm/min: 9 s, and the tool change 2 s.
   EXPECT_EQ(r.program,
             "%\nO0001\nG18 G21 G40 G90\n"
-            "(T1 offset 1: 0:11.0, X20.000 to X20.000, Z-10.000 to Z-10.000 mm)\n"
-            "(cycle time 0:11.0, 1 tool changes)\n"
+            "(HDR program t, machine generic-lathe)\n"
+            "(HDR T1 offset 1, first at CL line 2, 0:11.0)\n"
+            "(HDR cycle time 0:11.0, 1 tool changes)\n"
             "T0101\nG1 X20. Z-10. G94 F100.\n(done)\nM30\n%\n");
+}
+
+// Two tools, the first used twice (one line, its times summed), each described by the CL
+// (TPRINT, ICAM's PPRINT TOOL:). By hand, at 100 mm/min and 2 s a tool change:
+//   T1 line 4: 2 s + 15 mm (Z5 to Z-10) 9 s; again at line 10: 2 s + 6 mm 3.6 s  -> 16.6 s
+//   T2 line 8: 2 s + 10 mm 6 s                                                    ->  8.0 s
+//   total 24.6 s, three tool changes (clpost check --set ... says the same: 0:24.6).
+constexpr const char* kTwoTools =
+    "PARTNO SHAFT 7\nFEDRAT/100,MMPM\nTPRINT/OD TURN (R0.8) 50%\nLOADTL/1\nFROM/10,0,5\n"
+    "GOTO/10,0,-10\nPPRINT TOOL: GROOVE 3MM\nLOADTL/2\nGOTO/10,0,-20\nLOADTL/1\n"
+    "GOTO/10,0,-26\nFINI\n";
+
+// A machine as shipped (its header and block numbers), with the rates above.
+Machine shipped(const std::string& name) {
+  Machine m;
+  std::string errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, kRates, m, errors)) << errors;
+  return m;
+}
+
+TEST(CycleTime, HeaderOnFanucInItsCommentStyle) {
+  PostedText r = post_text(kTwoTools, shipped("fanuc-0i-t"), "shaft.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  // Upper case, the parentheses of "(R0.8)" dropped (a Fanuc comment cannot hold them) and the
+  // '%' (the control's end-of-tape character, not allowed in its comments), not numbered (the control's blocks need no N), after the start's N10 and before the body's N20.
+  const std::string expected =
+      "%\nO0001\nN10 G18 G21 G40 G97\n"
+      "(PROGRAM SHAFT 7, MACHINE FANUC-0I-T)\n"
+      "(T1 OFFSET 1, OD TURN R0.8 50, FIRST AT CL LINE 4, 0:16.6)\n"
+      "(T2 OFFSET 2, GROOVE 3MM, FIRST AT CL LINE 8, 0:08.0)\n"
+      "(CYCLE TIME 0:24.6, 3 TOOL CHANGES)\n"
+      "N20 (SHAFT 7)\n";
+  EXPECT_EQ(r.program.substr(0, expected.size()), expected);
+  EXPECT_EQ(cycle_time_lines(r.summary.cycle_time, LengthUnit::kMm, true).back(),
+            "cycle time 0:24.6, 3 tool changes");
+}
+
+TEST(CycleTime, HeaderOnSinumerikInItsCommentStyle) {
+  PostedText r = post_text(kTwoTools, shipped("sinumerik-840d"), "shaft.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  // `;` comments keep their case, their parentheses and '%'; unnumbered like every `;` line.
+  const std::string expected =
+      "N10 G18 G71 G40 G90 DIAMON\n"
+      "; program SHAFT 7, machine sinumerik-840d\n"
+      "; T1 offset 1, OD TURN (R0.8) 50%, first at CL line 4, 0:16.6\n"
+      "; T2 offset 2, GROOVE 3MM, first at CL line 8, 0:08.0\n"
+      "; cycle time 0:24.6, 3 tool changes\n"
+      "; SHAFT 7\n";
+  EXPECT_EQ(r.program.substr(0, expected.size()), expected);
 }
 
 TEST(CycleTime, TimeText) {

@@ -17,7 +17,8 @@ struct Posted {
 Posted post(const std::string& cl) {
   Machine m;
   std::string errors;
-  EXPECT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {"block_numbers.enabled=false"}, m,
+  EXPECT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR},
+                           {"block_numbers.enabled=false", "templates.program_header=[]"}, m,
                            errors))
       << errors;
   PostedText r = post_text(cl, m, "t.cl", {});

@@ -20,6 +20,7 @@ Machine generic(std::vector<std::string> sets = {}) {
   Machine m;
   std::string errors;
   sets.push_back("block_numbers.enabled=false");
+  sets.push_back("templates.program_header=[]");  // the header's own tests: cycle_time_test.cc
   EXPECT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
   return m;
 }
@@ -699,8 +700,9 @@ TEST(InterpreterThreads, CoupledVariableLeadStartsEachMoveAtItsLead) {
   // sqrt(2^2 + 2 x 0.1 x 20) = sqrt(8) = 2.828427 (K^2 grows by 2 dK per unit of travel).
   Machine m;
   std::string errors;
-  ASSERT_TRUE(load_machine("sinumerik-840d", {CLPOST_SOURCE_DIR}, {"block_numbers.enabled=false"},
-                           m, errors))
+  ASSERT_TRUE(load_machine("sinumerik-840d", {CLPOST_SOURCE_DIR},
+                           {"block_numbers.enabled=false", "templates.program_header=[]"}, m,
+                           errors))
       << errors;
   Posted p = post(
       "SPINDL/500,RPM,CLW\nRAPID\nGOTO/10,0,2\nCOUPLE/ON,MMPR,2,INCR,0.1\nGOTO/10,0,-18\n"

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "interpreter/interpreter.h"
 #include "writer/nc_program.h"
@@ -12,46 +13,49 @@ namespace clpost {
 
 namespace {
 
-// The machine's program_header: the tool list and cycle time, the template once per line.
-std::string header_text(const Machine& m, const PostSummary& summary, Diagnostics& diags) {
+// The machine's program_header: the header lines, the template once per line.
+std::string header_text(const Machine& m, const PostSummary& summary, std::string_view program,
+                        Diagnostics& diags) {
   std::string text;
   for (const std::string& line :
-       cycle_time_lines(summary.cycle_time, summary.units, m.diameter_output)) {
-    TemplateValues v(tmpl::kProgramHeader);
-    v.set_text(0, NcWriter::comment_text(m, line));
-    for (const std::string& t : m.templates.at(std::string(tmpl::kProgramHeader.name))) {
-      const TemplateValues::Line l = v.format(t);
-      if (!l.ok) {
-        diags.error({}, {},
-                    fmt::format("machine '{}': template 'program_header' cannot be written: {}",
-                                m.name, l.error));
-        return {};
+       header_lines(summary.cycle_time, program, m.name, summary.units, m.diameter_output)) {
+    for (const std::string& piece : NcWriter::comment_lines(m, line)) {
+      TemplateValues v(tmpl::kProgramHeader);
+      v.set_text(0, piece);
+      for (const std::string& t : m.templates.at(std::string(tmpl::kProgramHeader.name))) {
+        const TemplateValues::Line l = v.format(t);
+        if (!l.ok) {
+          diags.error({}, {},
+                      fmt::format("machine '{}': template 'program_header' cannot be written: {}",
+                                  m.name, l.error));
+          return {};
+        }
+        text += l.text + m.line_ending;
       }
-      text += l.text + m.line_ending;
     }
   }
   return text;
 }
 
-// `body` with the header after the program start's lines.
-void write_with_header(const Machine& m, const std::string& body, const std::string& header,
-                       Sink& out) {
-  size_t at = 0;
-  const size_t lines = m.templates.at(std::string(tmpl::kProgramStart.name)).size();
-  for (size_t i = 0; i < lines && at != std::string::npos; ++i) {
-    at = body.find('\n', at);
-    if (at != std::string::npos) ++at;
-  }
-  if (at == std::string::npos) at = body.size();
-  out.write(std::string_view(body).substr(0, at));
-  out.write(header);
-  out.write(std::string_view(body).substr(at));
+// The program's name in its header: PARTNO's, else the CL file's stem.
+std::string program_name(const std::string& partno, const std::string& file) {
+  if (!partno.empty()) return partno;
+  std::string name = std::filesystem::path(file).filename().string();
+  const size_t dot = name.rfind('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
 }
 
 // Whether the machine writes a program_header (an empty list writes none).
 bool has_header(const Machine& m) {
   auto h = m.templates.find(std::string(tmpl::kProgramHeader.name));
   return h != m.templates.end() && !h->second.empty();
+}
+
+// Opens the spool in `dir`: empty, or why it cannot be.
+std::string open_spool(SpoolFile& spool, const std::string& dir) {
+  std::string error;
+  spool.open(dir, error);
+  return error;
 }
 
 }  // namespace
@@ -62,7 +66,8 @@ PostRun::PostRun(const Machine& m, Sink& out, Diagnostics& diags, const PostOpti
       out_(out),
       diags_(diags),
       header_(has_header(m)),
-      // A header needs the whole program's times: the program waits in memory for it.
+      spool_error_(header_ ? open_spool(body_, opts.spool_dir) : std::string()),
+      // A header needs the whole program's times: the program waits on disk for it.
       prog_(m, header_ ? static_cast<Sink&>(body_) : out),
       interp_(m, prog_, diags, opts) {
   if (on_thread) interp_.on_thread(on_thread);
@@ -83,13 +88,20 @@ PostSummary PostRun::end(bool reader_gave_up, uint32_t last_line, size_t bytes_i
   summary.partno = interp_.partno();
   summary.cycle_time = interp_.cycle_time();
   summary.path = interp_.take_path();
-  if (header_) {
-    const std::string header = header_text(m_, summary, diags_);
-    shift_nc_lines(summary.cycle_time,
-                   static_cast<size_t>(std::count(header.begin(), header.end(), '\n')));
-    write_with_header(m_, body_.out, header, out_);
-  }
+  if (header_) write_with_header(summary);
   return summary;
+}
+
+void PostRun::write_with_header(PostSummary& summary) {
+  // The header after the program start's lines; the tools' NC lines move down by its lines.
+  const std::string header =
+      header_text(m_, summary, program_name(summary.partno, diags_.file()), diags_);
+  shift_nc_lines(summary.cycle_time,
+                 static_cast<size_t>(std::count(header.begin(), header.end(), '\n')));
+  const size_t lines = m_.templates.at(std::string(tmpl::kProgramStart.name)).size();
+  std::string error = spool_error_;
+  if (error.empty() && body_.copy_to(out_, lines, header, error)) return;
+  diags_.error({}, {}, error);
 }
 
 PostedText post_text(std::string_view cl, const Machine& m, std::string file_name,

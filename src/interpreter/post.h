@@ -15,6 +15,7 @@
 #include "reader/cl_reader.h"
 #include "support/diagnostics.h"
 #include "support/sink.h"
+#include "support/spool_file.h"
 #include "writer/nc_program.h"
 
 namespace clpost {
@@ -31,9 +32,11 @@ struct PostSummary {
   ClPath path;                      // with PostOptions::keep_motions (verify)
 };
 
-// One post in progress, the part of post() that does not depend on the reader: the program
-// (held in memory when the machine has a program_header, which needs the whole program's times),
-// the interpreter, and how the input ended, said once.
+// One post in progress, the part of post() that does not depend on the reader: the program, the
+// interpreter, and how the input ended, said once. A machine with a program_header (the tool
+// list and the cycle time, known at the end) gets its program in two passes: the body is spooled
+// to an unnamed temporary file (PostOptions::spool_dir, support/spool_file.h), then the header
+// and the body are written to `out` at the end; memory does not grow with the program.
 class PostRun {
  public:
   PostRun(const Machine& m, Sink& out, Diagnostics& diags, const PostOptions& opts,
@@ -44,11 +47,15 @@ class PostRun {
   PostSummary end(bool reader_gave_up, uint32_t last_line, size_t bytes_in);
 
  private:
+  // The program start's lines from the spool, the header, then the rest of the spool.
+  void write_with_header(PostSummary& summary);
+
   const Machine& m_;
   Sink& out_;
   Diagnostics& diags_;
   bool header_;
-  StringSink body_;
+  SpoolFile body_;
+  std::string spool_error_;  // the spool could not be created (reported at end())
   NcProgram prog_;
   Interpreter interp_;
 };

@@ -25,6 +25,9 @@ namespace clpost {
 struct PostOptions {
   bool strict = false;        // unknown statements are errors, not warnings
   bool keep_motions = false;  // collect every motion's end point (verify of the whole path)
+  // Where a program waits for its header (program_header), on disk: the directory of its output
+  // file (OutputFile::directory_beside), empty for the system's temporary directory.
+  std::string spool_dir{};
 };
 
 struct PostStats {

@@ -1,6 +1,8 @@
 #pragma once
-// Posting CL text in the interpreter's tests: a shipped machine without block numbers (plus any
-// --set overrides) and the program, rendered diagnostics and error count of a post.
+// Posting CL text in the interpreter's tests: a shipped machine without block numbers and
+// without its program header (the header's own tests, cycle_time_test.cc, load the machine as
+// shipped), plus any --set overrides, and the program, rendered diagnostics and error count of a
+// post.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -20,7 +22,8 @@ struct Posted {
 inline Machine load(const std::string& name, std::vector<std::string> sets = {}) {
   Machine m;
   std::string errors;
-  sets.insert(sets.begin(), "block_numbers.enabled=false");  // the caller's sets win
+  // The caller's sets win.
+  sets.insert(sets.begin(), {"block_numbers.enabled=false", "templates.program_header=[]"});
   EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
   return m;
 }

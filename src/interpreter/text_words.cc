@@ -41,6 +41,9 @@ void tool_path_stmt(PostState& s, const Statement& st) {
   std::string text = "operation";
   for (const Arg& a : st.args) text += ' ' + std::string(a.text);
   s.prog.comment(text);
+  // The tool it names describes the next tool change (the program header's tool list).
+  for (size_t i = 0; i + 1 < st.args.size(); ++i)
+    if (st.args[i].is("TOOL")) s.next_tool.text = std::string(st.args[i + 1].text);
 }
 
 void unknown_stmt(PostState& s, const Statement& st) {

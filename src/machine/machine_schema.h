@@ -228,8 +228,9 @@ inline constexpr TemplateSpec kProgramHeader{
     "program_header",
     kHeaderFields,
     kOptional,
-    "the tool list and the estimated cycle time after the program start, the template once per "
-    "line (`({text})`); the program is then kept in memory until its end",
+    "the program and machine names, the tool list and the estimated cycle time after the "
+    "program start, the template once per line (`({text})`); the program then waits in an "
+    "unnamed temporary file (beside the output file) until its end",
     {},
     {},
     "any program"};

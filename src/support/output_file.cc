@@ -11,47 +11,17 @@
 #include <cstring>
 #include <filesystem>
 
+#include "support/spool_file.h"
+
 namespace clpost {
 
 namespace {
 constexpr size_t kBufferSize = 1 << 16;
 
-bool write_all(int fd, const char* data, size_t size, int& err) {
-  while (size > 0) {
-    ssize_t n = ::write(fd, data, size);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      err = errno;
-      return false;
-    }
-    data += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
 // Paths that are never renamed over, whatever stat() says of them: /dev/stdout, for one, is a
 // link to whatever standard output is, a regular file included.
 bool is_system_path(const std::string& path) {
   return path.starts_with("/dev/") || path.starts_with("/proc/");
-}
-
-// Standard output is spooled to an anonymous temporary file until commit(): its descriptor in
-// `fd`.
-bool open_spool(int& fd, std::string& error) {
-  std::FILE* tmp = std::tmpfile();
-  if (tmp == nullptr) {
-    error = fmt::format("cannot create a temporary file: {}", std::strerror(errno));
-    return false;
-  }
-  fd = ::dup(fileno(tmp));
-  const int err = errno;
-  std::fclose(tmp);  // the anonymous file lives on through fd
-  if (fd < 0) {
-    error = fmt::format("cannot create a temporary file: {}", std::strerror(err));
-    return false;
-  }
-  return true;
 }
 
 // The file a path names: a symbolic link is followed, so that the file it points to is
@@ -99,6 +69,15 @@ OutputFile::~OutputFile() {
   abort();
 }
 
+std::string OutputFile::directory_beside(const std::string& path) {
+  if (path == "-" || is_system_path(path)) return {};
+  struct stat st {};
+  const std::string target = link_target(path);
+  if (::stat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return {};
+  std::filesystem::path p(target);
+  return p.has_parent_path() ? p.parent_path().string() : ".";
+}
+
 bool OutputFile::open(const std::string& path, std::string& error) {
   if (!open_fd(path, error)) return false;
   next_ = buffer_.get();
@@ -115,7 +94,8 @@ bool OutputFile::open_fd(const std::string& path, std::string& error) {
   bytes_ = 0;
   if (!buffer_) buffer_ = std::make_unique_for_overwrite<char[]>(kBufferSize);
   if (path == "-") {
-    if (!open_spool(fd_, error)) return false;
+    // Standard output is spooled to an anonymous temporary file until commit().
+    if (!open_anonymous_temp("", fd_, error)) return false;
     owns_fd_ = true;
     mode_ = Mode::kSpool;
     return true;

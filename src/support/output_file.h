@@ -45,6 +45,11 @@ class OutputFile : public Sink {
   // Drops everything written so far (a device keeps what it was already sent).
   void abort();
 
+  // The directory where a temporary file beside `path` belongs (the directory of the file it
+  // names, a symbolic link followed); empty for standard output ("-"), a device or anything
+  // else that is not a regular file (the system's temporary directory then).
+  static std::string directory_beside(const std::string& path);
+
   // Bytes written so far (flushed or buffered).
   size_t bytes() const { return bytes_ + buffered(); }
   // The target is written directly (a device or a pipe), not through a temporary file.

@@ -112,23 +112,28 @@ std::string NcWriter::comment_text(const Machine& m, std::string_view text) {
   return b == std::string::npos ? std::string() : clean.substr(b, e - b + 1);
 }
 
-void NcWriter::comment(std::string_view text) {
-  std::string clean = comment_text(m_, text);
-  const size_t max = static_cast<size_t>(m_.comment_max_length);
-  if (max > 0 && clean.size() > max) {
-    ++wrapped_comments_;
-    // At the last blank that fits, else cut at the limit.
-    while (clean.size() > max) {
-      size_t cut = clean.rfind(' ', max);
-      if (cut == std::string::npos || cut == 0) cut = max;
-      code(m_.comment_open + clean.substr(0, cut) + m_.comment_close);
-      end_block();
-      const size_t next = clean.find_first_not_of(' ', cut);
-      clean = next == std::string::npos ? std::string() : clean.substr(next);
-    }
+std::vector<std::string> NcWriter::comment_lines(const Machine& m, std::string_view text) {
+  std::string clean = comment_text(m, text);
+  const size_t max = static_cast<size_t>(m.comment_max_length);
+  std::vector<std::string> lines;
+  while (max > 0 && clean.size() > max) {
+    size_t cut = clean.rfind(' ', max);
+    if (cut == std::string::npos || cut == 0) cut = max;
+    lines.push_back(clean.substr(0, cut));
+    const size_t next = clean.find_first_not_of(' ', cut);
+    clean = next == std::string::npos ? std::string() : clean.substr(next);
   }
-  code(m_.comment_open + clean + m_.comment_close);
-  end_block();
+  lines.push_back(std::move(clean));
+  return lines;
+}
+
+void NcWriter::comment(std::string_view text) {
+  const std::vector<std::string> lines = comment_lines(m_, text);
+  if (lines.size() > 1) ++wrapped_comments_;
+  for (const std::string& l : lines) {
+    code(m_.comment_open + l + m_.comment_close);
+    end_block();
+  }
 }
 
 void NcWriter::raw_line(std::string_view text) {

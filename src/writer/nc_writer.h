@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "machine/machine.h"
 #include "support/sink.h"
@@ -43,6 +44,9 @@ class NcWriter {
   // `text` as machine `m` writes comment text: forbidden characters removed, control characters
   // as blanks, upper case when it asks, trimmed.
   static std::string comment_text(const Machine& m, std::string_view text);
+  // comment_text() cut into the machine's comments.max_length (at the last blank that fits, else
+  // at the limit): one string per comment block.
+  static std::vector<std::string> comment_lines(const Machine& m, std::string_view text);
   // Every block from now on starts with `mark` (block delete, "/"); empty: none.
   void set_block_delete(std::string_view mark);
   // With block_numbers.at_tool_changes: the next block gets a number (a tool change begins).

@@ -206,9 +206,10 @@ class PartTurned(unittest.TestCase):
             last = end
 
     def test_nc_lines_are_the_programs(self):
-        # Each tool's first NC line is its tool change, with and without a program_header (whose
-        # lines come before the tools': the tool list and the cycle time, 7 lines here).
-        for sets in ([], ["--set", 'templates.program_header=["({text})"]']):
+        # Each tool's first NC line is its tool change, with the machine's program_header (whose
+        # lines come before the tools': the program, its 6 tools and the cycle time, 8 lines
+        # here) and without one.
+        for sets in ([], ["--set", "templates.program_header=[]"]):
             nc = run("-m", MACHINE, *sets, self.cl).stdout.splitlines()
             page = parse(run("sheet", "-m", MACHINE, *sets, "--date", DATE, self.cl).stdout)
             (t,) = page.find(section="tools", cls="tools")
@@ -219,8 +220,7 @@ class PartTurned(unittest.TestCase):
             # The last tool ends before the program end (M30 and what follows it).
             self.assertEqual(nc[last], nc[-2])
             self.assertRegex(nc[last], "M30")
-            if sets:
-                self.assertEqual(int(rows[0]["NC lines"].split("-")[0]), 5 + 7)
+            self.assertEqual(int(rows[0]["NC lines"].split("-")[0]), 5 if sets else 5 + 8)
 
     def test_cutting_times_by_hand(self):
         (t,) = self.page.find(section="tools", cls="tools")

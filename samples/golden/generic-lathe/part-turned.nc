@@ -1,6 +1,14 @@
 %
 O0001
 N10 G18 G21 G40 G90
+(program PART-TURNED, machine generic-lathe)
+(T1 offset 1, first at CL line 6, 0:25.8)
+(T2 offset 2, first at CL line 24, 0:06.2)
+(T3 offset 3, first at CL line 32, 0:16.5)
+(T4 offset 4, first at CL line 40, 0:07.1)
+(T5 offset 5, first at CL line 48, 0:11.7)
+(T6 offset 6, first at CL line 60, 0:30.3)
+(cycle time 1:37.6, 6 tool changes)
 N20 (PART-TURNED)
 N30 T0101
 N40 G97 S800 M3

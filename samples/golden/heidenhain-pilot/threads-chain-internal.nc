@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-CHAIN-INTERNAL, machine heidenhain-pilot]
+[T9 offset 9, first at CL line 6, 0:09.7]
+[cycle time 0:09.7, 1 tool changes]
 [THREADS-CHAIN-INTERNAL]
 N 10 T9
 N 20 G97 S500 M3

@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-CHAIN-MULTISTART, machine heidenhain-pilot]
+[T5 offset 5, first at CL line 6, 0:13.6]
+[cycle time 0:13.6, 1 tool changes]
 [THREADS-CHAIN-MULTISTART]
 N 10 T5
 N 20 G97 S400 M3

@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-CHAIN, machine heidenhain-pilot]
+[T6 offset 6, first at CL line 7, 0:52.1]
+[cycle time 0:52.1, 1 tool changes]
 [THREADS-CHAIN]
 N 10 T6
 N 20 G97 S300 M3

@@ -1,6 +1,9 @@
 %1.nc
 [INCH]
 MACHINING
+[program THREADS-INCH, machine heidenhain-pilot]
+[T5 offset 5, first at CL line 5, 0:13.1]
+[cycle time 0:13.1, 1 tool changes]
 [THREADS-INCH]
 N 10 T5
 N 20 G97 S700 M3

@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-INTERNAL, machine heidenhain-pilot]
+[T9 offset 9, first at CL line 5, 0:18.2]
+[cycle time 0:18.2, 1 tool changes]
 [THREADS-INTERNAL]
 N 10 T9
 N 20 G97 S500 M3

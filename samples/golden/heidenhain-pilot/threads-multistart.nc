@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-MULTISTART, machine heidenhain-pilot]
+[T5 offset 5, first at CL line 5, 0:29.7]
+[cycle time 0:29.7, 1 tool changes]
 [THREADS-MULTISTART]
 N 10 T5
 N 20 G97 S400 M3

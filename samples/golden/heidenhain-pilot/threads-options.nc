@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-OPTIONS, machine heidenhain-pilot]
+[T5 offset 5, first at CL line 5, 0:48.2]
+[cycle time 0:48.2, 1 tool changes]
 [THREADS-OPTIONS]
 N 10 T5
 N 20 G97 S800 M3

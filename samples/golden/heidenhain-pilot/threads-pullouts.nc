@@ -1,6 +1,9 @@
 %1.nc
 [METRIC]
 MACHINING
+[program THREADS-PULLOUTS, machine heidenhain-pilot]
+[T5 offset 5, first at CL line 4, 0:31.1]
+[cycle time 0:31.1, 1 tool changes]
 [THREADS-PULLOUTS]
 N 10 T5
 N 20 G97 S800 M3
