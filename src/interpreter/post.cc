@@ -59,12 +59,14 @@ bool has_header(const Machine& m) {
 PostRun::PostRun(const Machine& m, Sink& out, Diagnostics& diags, const PostOptions& opts,
                  const std::function<void(const ThreadPlan&)>& on_thread)
     : m_(m),
+      machine_(m),
       out_(out),
       diags_(diags),
       header_(has_header(m)),
       // A header needs the whole program's times: the program waits in memory for it.
-      prog_(m, header_ ? static_cast<Sink&>(body_) : out),
-      interp_(m, prog_, diags, opts) {
+      prog_(machine_, header_ ? static_cast<Sink&>(body_) : out),
+      interp_(machine_, prog_, diags, opts) {
+  prog_.follow_units(machine_, m_);
   if (on_thread) interp_.on_thread(on_thread);
 }
 

@@ -45,6 +45,7 @@ class PostRun {
 
  private:
   const Machine& m_;
+  Machine machine_;  // m_ as this program writes it: its formats follow the program's units
   Sink& out_;
   Diagnostics& diags_;
   bool header_;

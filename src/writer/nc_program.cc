@@ -75,6 +75,7 @@ NcProgram::NcProgram(const Machine& m, Sink& out)
       code_thread_(m.code("thread")) {}
 
 TemplateWrite NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
+  if (units_copy_) use_units(*units_copy_, *units_loaded_, inch);
   TemplateFill<tmpl::kProgramStart> a;
   a.whole<"program_number">(m_.program_number)
       .text<"program_name">(std::string(program_name))
@@ -276,7 +277,8 @@ void NcProgram::cycle_ended_at(LathePoint p) {
   pos_ = p;
 }
 
-void NcProgram::units_changed(double factor) {
+void NcProgram::units_changed(double factor, bool inch) {
+  if (units_copy_) use_units(*units_copy_, *units_loaded_, inch);
   if (pos_) pos_ = LathePoint{pos_->r * factor, pos_->z * factor};
   feed_ *= factor;
   last_x_.reset();
