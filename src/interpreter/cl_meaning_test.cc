@@ -162,6 +162,52 @@ TEST(ClMeaning, ACircleIsForItsGotoOnly) {
 namespace clpost {
 namespace {
 
+// An arc that the output's resolution rounds to nothing is a straight move, never a full circle:
+// a centre 0.0004 mm off the start is I0. K0. at Fanuc's 3 decimals (a block the control reads
+// as a full circle, or an arc of no radius it alarms on) while its end, X20.0016, is X20.002.
+// LinuxCNC's I has 5 decimals: there the arc can be said, and is.
+TEST(ClMeaning, AnArcRoundedToNoRadiusIsAStraightMove) {
+  const std::string a = cl("GOTO/10,0,0\nCIRCLE/10.0004,0,0,0,1,0,0.0004\nGOTO/10.0008,0,0\n");
+  const test::Posted p = test::post(a, test::load("fanuc-0i-t"));
+  EXPECT_EQ(p.diags,
+            "t.cl:7:1: warning: the arc of the CIRCLE/ at line 6 (radius 0.0004) is written with I "
+            "and K zero at this machine's resolution: written as a straight move\n"
+            "  GOTO/10.0008,0,0\n  ^\n");
+  EXPECT_NE(p.nc.find("G1 X20. Z0. G99 F0.2\n(ARC OF RADIUS 0.0004 WRITTEN AS A STRAIGHT MOVE)\n"
+                      "X20.002\nM30"),
+            std::string::npos)
+      << p.nc;
+  const test::Posted l = test::post(a, test::load("linuxcnc-lathe"));
+  EXPECT_EQ(l.diags, "");
+  EXPECT_NE(l.nc.find("X20.0016 I0.0004 K0.\n"), std::string::npos) << l.nc;
+}
+
+// A feed per revolution with the spindle stopped never moves (the control waits for the
+// spindle): an error at the move, not a program that exits 0 and stalls.
+TEST(ClMeaning, AFeedPerRevolutionNeedsTheSpindle) {
+  const std::string stopped = cl("GOTO/20,0,5\nSPINDL/OFF\nGOTO/10,0,-5\n");
+  EXPECT_EQ(test::post(stopped, test::load("fanuc-0i-t")).diags,
+            "t.cl:7:1: error: feed move per revolution with the spindle stopped (SPINDL/OFF at "
+            "line 6): the control waits for the spindle and never moves; program SPINDL/ before "
+            "it, or a feed per minute\n  GOTO/10,0,-5\n  ^\n");
+  // A rapid, or a feed per minute, needs no spindle.
+  const std::string rapid = cl("GOTO/20,0,5\nSPINDL/OFF\nRAPID\nGOTO/10,0,-5\n");
+  EXPECT_EQ(test::post(rapid, test::load("fanuc-0i-t")).errors, 0u);
+  const std::string per_min = cl("GOTO/20,0,5\nSPINDL/OFF\nFEDRAT/100,MMPM\nGOTO/10,0,-5\n");
+  EXPECT_EQ(test::post(per_min, test::load("fanuc-0i-t")).errors, 0u);
+  // Before any SPINDL/ the spindle is the machine's: no error.
+  EXPECT_EQ(test::post("UNITS/MM\nLOADTL/1\nFEDRAT/0.2,MMPR\nGOTO/20,0,5\nFINI\n",
+                       test::load("fanuc-0i-t"))
+                .errors,
+            0u);
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
 // Inch output is written with the control's least input increment: X and Z to 0.0001 in on
 // Fanuc, Haas, SINUMERIK and HEIDENHAIN (Control::inch_length_increment), and on the two machines
 // without a registered control (their post files' inch_decimals); LinuxCNC's doubles keep its 5

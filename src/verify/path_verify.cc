@@ -206,7 +206,11 @@ size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next
   const size_t j = find_move(moves, next, c, k.tol, !c.exit);
   if (j < moves.size()) return j;
   const size_t other = find_move(moves, next, c, k.tol, false);
-  const Move* mv = other < moves.size() ? &moves[other] : next > 0 ? &moves[next - 1] : nullptr;
+  // Where the program goes elsewhere: its next move (else its last).
+  const Move* mv = other < moves.size()  ? &moves[other]
+                   : next < moves.size() ? &moves[next]
+                   : next > 0            ? &moves[next - 1]
+                                         : nullptr;
   if (other < moves.size()) {
     k.problem(mv,
               fmt::format("motion at {}: {} is reached by a {} move, the CL {} there", k.at(c),

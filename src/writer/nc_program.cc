@@ -204,6 +204,13 @@ bool NcProgram::stays_at(LathePoint p) const {
          same_text(*last_z_, written_after(last_z_, p.z, fmt_z_));
 }
 
+bool NcProgram::arc_has_no_radius(LathePoint center) const {
+  if (!pos_) return false;
+  const WrittenNumber i = written(center.r - pos_->r, fmt_i_);
+  const WrittenNumber k = written(center.z - pos_->z, fmt_k_);
+  return i.exact && k.exact && i.digits == 0 && k.digits == 0;
+}
+
 void NcProgram::rapid(LathePoint p) {
   if (stays_at(p)) return;
   motion_code(code_rapid_);

@@ -105,6 +105,9 @@ class NcProgram {
 
   // `p` is where the program has just put the tool: its X and Z as last written.
   bool stays_at(LathePoint p) const;
+  // An arc around `center` from where the tool is would be written with I and K both zero: the
+  // written centre is the start, an arc of no radius (a full circle or an alarm on the control).
+  bool arc_has_no_radius(LathePoint center) const;
   // Where the tool is (unknown until the first move).
   std::optional<LathePoint> position() const { return pos_; }
   // Forgets the modal motion code, feed and spindle words (after a cycle or raw insert whose
