@@ -34,20 +34,20 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
   for (const std::string& l :
        {"output.extension: .ngc                          # " + machine + ":7",
         "output.line_ending: lf                          # " + post + ":9",
-        "threading.cycle: linuxcnc_g76                   # " + post + ":80",
+        "threading.cycle: linuxcnc_g76                   # " + post + ":81",
         std::string("threading.fallback: error                       # --set"),
         std::string("threading.loop: g33                             # default"),
         "limits.max_rpm: 3000                            # " + machine + ":8",
         "formats.K.decimals: 8                           # " + post + ":19",
         std::string("formats.K.scale: 1                              # default"),
-        "codes.thread: G33                               # " + post + ":36",
+        "codes.thread: G33                               # " + post + ":37",
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
-            ":64"})
+            ":65"})
     EXPECT_TRUE(has_line(lines, l)) << l << "\n" << r.out;
   // The heading, 60 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
-  // g76_depth g76_angle g76_taper) of 5 keys, 19 codes and 18 templates (9, 6 hole cycles,
+  // g76_depth g76_angle g76_taper) of 6 keys, 19 codes and 18 templates (9, 6 hole cycles,
   // auxfun, prefun and program_header).
-  EXPECT_EQ(lines.size(), 1u + 60 + 12 * 5 + 19 + 18);
+  EXPECT_EQ(lines.size(), 1u + 60 + 12 * 6 + 19 + 18);
 }
 
 TEST(MachinesShow, WithoutOriginAndAnUnknownMachine) {
@@ -86,22 +86,13 @@ TEST(MachinesDiff, TheKeysWhoseValuesDiffer) {
           "threading.fallback: error -> emulate\n"
           "threading.tpi_address: \"\" -> E\n"
           "threading.start_angle_word: false -> true\n"
-          "formats.I.decimals: 3 -> (none)\n"
-          "formats.I.trailing_zeros: false -> (none)\n"
-          "formats.I.decimal_point: true -> (none)\n"
-          "formats.I.leading_zero: true -> (none)\n"
-          "formats.I.scale: 1 -> (none)\n"
-          "formats.K.decimals: 3 -> (none)\n"
-          "formats.K.trailing_zeros: false -> (none)\n"
-          "formats.K.decimal_point: true -> (none)\n"
-          "formats.K.leading_zero: true -> (none)\n"
-          "formats.K.scale: 1 -> (none)\n"
           "formats.E.decimals: (none) -> 6\n"
           "formats.E.trailing_zeros: (none) -> false\n"
           "formats.E.decimal_point: (none) -> true\n"
           "formats.E.leading_zero: (none) -> true\n"
+          "formats.E.inch_decimals: (none) -> 6\n"
           "formats.E.scale: (none) -> 1\n"
-          "24 keys differ\n");
+          "15 keys differ\n");
   r = run(quote(clpost_bin()) + " machines diff haas-st haas-st");
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out, "--- haas-st: " + dir + "/machines/haas-st.yaml\n+++ haas-st: " + dir +

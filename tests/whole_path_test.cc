@@ -26,7 +26,7 @@ struct Edit {
 
 const Edit kEdits[] = {
     // End points: a cut to the wrong place; a rapid written as a feed.
-    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N110 G1 Z-42.\n", "N110 G1 Z-41.\n", 20,
+    {"generic-lathe", "part-turned.nc", "part-turned.apt", "N110 G1 Z-42.\n", "N110 G1 Z-41.\n", 21,
      "motion at samples/part-turned.apt:19: X24.0000 Z-42.0000 is not reached by the program in "
      "order",
      2},

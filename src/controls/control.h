@@ -55,6 +55,10 @@ struct Control {
   // Characters it reads as control even inside a comment (Fanuc's '%', the end of record): left
   // out of every comment, whatever comments.forbidden says.
   std::string_view comment_control = {};
+  // Its least input increment of a length in an inch program (0.0001 in on IS-B controls): the
+  // X, Z, I, K, R, U and W formats of an inch program have as many decimals unless the machine
+  // file says formats.<a>.inch_decimals (machine_loader.cc). 0: none known (the formats decide).
+  double inch_length_increment = 0;
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

@@ -28,12 +28,12 @@ void expect_lines(const std::string& machine, const std::string& cl, const std::
 }
 
 // A: a feed and a pitch given before UNITS/INCHES keep their physical value: 0.2 mm/rev is
-// 0.007874 in/rev (F4 decimals: 0.0079), the 1.5 mm lead 0.05905512 in.
+// 0.007874 in/rev (F to 0.000001 in an inch program), the 1.5 mm lead 0.05905512 in.
 TEST(ClMeaning, UnitsKeepTheFeedAndPitchAlreadyGiven) {
   const std::string a =
       cl("PITCH/1.5,MMPR\nGOTO/15,0,5\nUNITS/INCHES\nTHREAD/TURN\nGOTO/0.4,0,0.2\n"
          "GOTO/0.4,0,-1\n");
-  expect_lines("linuxcnc-lathe", a, "G20\nX0.8 Z0.2 F0.0079\nG33 Z-1. K0.05905512\n");
+  expect_lines("linuxcnc-lathe", a, "G20\nX0.8 Z0.2 F0.007874\nG33 Z-1. K0.05905512\n");
   expect_lines("heidenhain-pilot", a, "X0.8 Z0.2 F0.007874\nG33 Z-1. F0.059055\n");
 }
 
@@ -41,8 +41,8 @@ TEST(ClMeaning, UnitsKeepTheFeedAndPitchAlreadyGiven) {
 // because it read 20 (mm) before.
 TEST(ClMeaning, UnitsWriteEveryPositionAgain) {
   const std::string b = cl("GOTO/10,0,5\nUNITS/INCHES\nGOTO/10,0,-1\n");
-  expect_lines("linuxcnc-lathe", b, "G20\nX20. Z-1. F0.0079\n");
-  expect_lines("fanuc-0i-t", b, "G20\nX20. Z-1. F0.0079\n");
+  expect_lines("linuxcnc-lathe", b, "G20\nX20. Z-1. F0.007874\n");
+  expect_lines("fanuc-0i-t", b, "G20\nX20. Z-1. F0.007874\n");
 }
 
 // An arc right after a switch: its start was where the tool is, in the new units (it was refused
@@ -154,6 +154,84 @@ TEST(ClMeaning, ACircleIsForItsGotoOnly) {
   const test::Posted ok = test::post(head + "CIRCLE/0,0,0,0,1,0,10\nGOTO/0,0,-10\nFINI\n", m);
   EXPECT_EQ(ok.errors, 0u) << ok.diags;
   EXPECT_NE(ok.nc.find("G3 X0. Z-10. I-10. K0.\n"), std::string::npos) << ok.nc;
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// An arc that the output's resolution rounds to nothing is a straight move, never a full circle:
+// a centre 0.0004 mm off the start is I0. K0. at Fanuc's 3 decimals (a block the control reads
+// as a full circle, or an arc of no radius it alarms on) while its end, X20.0016, is X20.002.
+// LinuxCNC's I has 5 decimals: there the arc can be said, and is.
+TEST(ClMeaning, AnArcRoundedToNoRadiusIsAStraightMove) {
+  const std::string a = cl("GOTO/10,0,0\nCIRCLE/10.0004,0,0,0,1,0,0.0004\nGOTO/10.0008,0,0\n");
+  const test::Posted p = test::post(a, test::load("fanuc-0i-t"));
+  EXPECT_EQ(p.diags,
+            "t.cl:7:1: warning: the arc of the CIRCLE/ at line 6 (radius 0.0004) is written with I "
+            "and K zero at this machine's resolution: written as a straight move\n"
+            "  GOTO/10.0008,0,0\n  ^\n");
+  EXPECT_NE(p.nc.find("G1 X20. Z0. G99 F0.2\n(ARC OF RADIUS 0.0004 WRITTEN AS A STRAIGHT MOVE)\n"
+                      "X20.002\nM30"),
+            std::string::npos)
+      << p.nc;
+  const test::Posted l = test::post(a, test::load("linuxcnc-lathe"));
+  EXPECT_EQ(l.diags, "");
+  EXPECT_NE(l.nc.find("X20.0016 I0.0004 K0.\n"), std::string::npos) << l.nc;
+}
+
+// A feed per revolution with the spindle stopped never moves (the control waits for the
+// spindle): an error at the move, not a program that exits 0 and stalls.
+TEST(ClMeaning, AFeedPerRevolutionNeedsTheSpindle) {
+  const std::string stopped = cl("GOTO/20,0,5\nSPINDL/OFF\nGOTO/10,0,-5\n");
+  EXPECT_EQ(test::post(stopped, test::load("fanuc-0i-t")).diags,
+            "t.cl:7:1: error: feed move per revolution with the spindle stopped (SPINDL/OFF at "
+            "line 6): the control waits for the spindle and never moves; program SPINDL/ before "
+            "it, or a feed per minute\n  GOTO/10,0,-5\n  ^\n");
+  // A rapid, or a feed per minute, needs no spindle.
+  const std::string rapid = cl("GOTO/20,0,5\nSPINDL/OFF\nRAPID\nGOTO/10,0,-5\n");
+  EXPECT_EQ(test::post(rapid, test::load("fanuc-0i-t")).errors, 0u);
+  const std::string per_min = cl("GOTO/20,0,5\nSPINDL/OFF\nFEDRAT/100,MMPM\nGOTO/10,0,-5\n");
+  EXPECT_EQ(test::post(per_min, test::load("fanuc-0i-t")).errors, 0u);
+  // Before any SPINDL/ the spindle is the machine's: no error.
+  EXPECT_EQ(test::post("UNITS/MM\nLOADTL/1\nFEDRAT/0.2,MMPR\nGOTO/20,0,5\nFINI\n",
+                       test::load("fanuc-0i-t"))
+                .errors,
+            0u);
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// Inch output is written with the control's least input increment: X and Z to 0.0001 in on
+// Fanuc, Haas, SINUMERIK and HEIDENHAIN (Control::inch_length_increment), and on the two machines
+// without a registered control (their post files' inch_decimals); LinuxCNC's doubles keep its 5
+// decimals. A feed per revolution to what each control takes: 0.2 mm/rev is 0.0078740 in/rev,
+// F0.007874 (Haas reads F to 0.0001 in: F0.0079). Before: X2.469 Z-0.543 and F0.0079.
+TEST(ClMeaning, InchOutputHasTheControlsLeastIncrement) {
+  const std::string in = cl("GOTO/10,0,5\nUNITS/INCHES\nGOTO/1.23456,0,-0.54321\n");
+  expect_lines("fanuc-0i-t", in, "G20\nX2.4691 Z-0.5432 F0.007874\n");
+  expect_lines("haas-st", in, "G20\nX2.4691 Z-0.5432 F0.0079\n");
+  expect_lines("sinumerik-840d", in, "G70\nX2.4691 Z-0.5432 F0.007874\n");
+  expect_lines("heidenhain-pilot", in, "X2.4691 Z-0.5432 F0.007874\n");
+  expect_lines("generic-lathe", in, "X2.4691 Z-0.5432 F0.007874\n");
+  expect_lines("nct-2000t", in, "X2.4691 Z-0.5432 F0.007874\n");
+  expect_lines("linuxcnc-lathe", in, "G20\nX2.46912 Z-0.54321 F0.007874\n");
+  // Back to mm: 3 decimals again.
+  expect_lines("fanuc-0i-t",
+               cl("GOTO/10,0,5\nUNITS/INCHES\nGOTO/1.23456,0,-0.54321\nUNITS/MM\n"
+                  "GOTO/10.12345,0,-1\n"),
+               "G20\nX2.4691 Z-0.5432 F0.007874\nG21\nX20.247 Z-1. F0.2\n");
+  // An arc's centre too: I and K to 0.0001 in.
+  expect_lines("fanuc-0i-t",
+               cl("UNITS/INCHES\nGOTO/1,0,0\nCIRCLE/0.1234,0,0,0,1,0,0.8766\nGOTO/0.1234,0,"
+                  "-0.8766\n"),
+               "G3 X0.2468 Z-0.8766 I-0.8766 K0.\n");
 }
 
 }  // namespace

@@ -51,6 +51,8 @@ struct ClMotion {
   ArcSense arc = ArcSense::kNone;
   Vec2 center;         // arcs only
   uint32_t state = 0;  // index into ClPath::states
+  // Inside an OPSKIP range: written as optional blocks, which block delete skips.
+  bool optional = false;
 };
 
 struct ClPath {

@@ -35,6 +35,19 @@ bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
             fmt::format("the arc of the CIRCLE/ at line {} ends where it starts: nothing is cut (a "
                         "full circle is no lathe profile)",
                         c.loc.line));
+    if (s.opts.keep_motions) s.cl_path.motions.back().stays = true;  // verify: nothing to reach
+    return true;
+  }
+  // A centre that the output's resolution puts on the start (I0 K0) is no arc the control can
+  // cut: the arc, shorter than two least increments, is written as the straight move it is.
+  if (s.prog.arc_has_no_radius(center)) {
+    warning(s, st, st.loc,
+            fmt::format("the arc of the CIRCLE/ at line {} (radius {:.6g}) is written with I and K "
+                        "zero at this machine's resolution: written as a straight move",
+                        c.loc.line, r0));
+    s.prog.comment(fmt::format("arc of radius {:.6g} written as a straight move", r0));
+    s.prog.linear(target);
+    time_feed(s, cl2(s, p));
     return true;
   }
   // Positive rotation about the axis: G3 when it turns axial toward radial (axis along
@@ -100,6 +113,7 @@ void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hol
   mo.hole_bottom = hole_bottom;
   mo.thread_cuts = thread_cuts;
   mo.state = state_at(s, line);
+  mo.optional = s.before_skip.has_value();
   s.cl_path.motions.push_back(mo);
 }
 
@@ -115,8 +129,25 @@ void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool 
     mo.stays = std::fabs(at.x - to.x) < 1e-9 && std::fabs(at.z - to.z) < 1e-9;
   }
   mo.state = state;
+  mo.optional = s.before_skip.has_value();
   path.motions.push_back(mo);
 }
+
+namespace {
+// A feed per revolution with the spindle that SPINDL/OFF stopped never moves: the control waits
+// for the spindle (docs/cl-meaning.md). An error at the move, naming the statement that stopped
+// it. Before any SPINDL/ the spindle is the machine's (a start template or an INSERT may turn it).
+void check_spindle_for_feed(PostState& s, const Statement& st) {
+  if (s.rapid_next || !s.feed_given || s.feed_mode != FeedMode::kPerRev || s.spindle.on ||
+      s.spindle_line == 0)
+    return;
+  error(s, st, st.loc,
+        fmt::format("feed move per revolution with the spindle stopped (SPINDL/OFF at line {}): "
+                    "the control waits for the spindle and never moves; program SPINDL/ before "
+                    "it, or a feed per minute",
+                    s.spindle_line));
+}
+}  // namespace
 
 void move_to(PostState& s, const Statement& st, Point3 p) {
   if (s.dntcut) {  // DNTCUT … CUT: the position is tracked, nothing is written
@@ -127,6 +158,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   }
   ensure_started(s);
   restart_stopped_spindle(s, st);
+  check_spindle_for_feed(s, st);
   ++s.stats.motions;
   if (s.opts.keep_motions) record_motion(s, st, cl2(s, p), s.rapid_next);
   if (s.circle) {

@@ -63,13 +63,15 @@ std::string open_spool(SpoolFile& spool, const std::string& dir) {
 PostRun::PostRun(const Machine& m, Sink& out, Diagnostics& diags, const PostOptions& opts,
                  const std::function<void(const ThreadPlan&)>& on_thread)
     : m_(m),
+      machine_(m),
       out_(out),
       diags_(diags),
       header_(has_header(m)),
       spool_error_(header_ ? open_spool(body_, opts.spool_dir) : std::string()),
       // A header needs the whole program's times: the program waits on disk for it.
-      prog_(m, header_ ? static_cast<Sink&>(body_) : out),
-      interp_(m, prog_, diags, opts) {
+      prog_(machine_, header_ ? static_cast<Sink&>(body_) : out),
+      interp_(machine_, prog_, diags, opts) {
+  prog_.follow_units(machine_, m_);
   if (on_thread) interp_.on_thread(on_thread);
 }
 

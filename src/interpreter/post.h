@@ -51,6 +51,7 @@ class PostRun {
   void write_with_header(PostSummary& summary);
 
   const Machine& m_;
+  Machine machine_;  // m_ as this program writes it: its formats follow the program's units
   Sink& out_;
   Diagnostics& diags_;
   bool header_;

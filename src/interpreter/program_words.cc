@@ -33,7 +33,7 @@ void convert_units(PostState& s, LengthUnit to) {
   if (s.clock_at) s.clock_at = Vec2{s.clock_at->x * f, s.clock_at->z * f};
   if (s.clock_feed > 0) scale(s.clock_feed);
   if (s.spindle.css) s.spindle.value *= to == LengthUnit::kInch ? 1 / 0.3048 : 0.3048;
-  s.prog.units_changed(f);
+  s.prog.units_changed(f, to == LengthUnit::kInch);
 }
 
 }  // namespace

@@ -18,7 +18,10 @@ double unscale(const NumberFormat& nf) {
 }  // namespace
 
 double as_read(const Machine& m, std::string_view f, double v) {
-  const NumberFormat& nf = m.format_for(f);
+  return as_read(m.format_for(f), v);
+}
+
+double as_read(const NumberFormat& nf, double v) {
   const std::string s = number_text(v, nf);
   double r = 0;
   std::from_chars(s.data(), s.data() + s.size(), r);
@@ -27,7 +30,10 @@ double as_read(const Machine& m, std::string_view f, double v) {
 }
 
 double least_increment(const Machine& m, std::string_view f) {
-  const NumberFormat& nf = m.format_for(f);
+  return least_increment(m.format_for(f));
+}
+
+double least_increment(const NumberFormat& nf) {
   return std::pow(10.0, -nf.decimals) / unscale(nf);
 }
 

@@ -13,8 +13,10 @@ namespace clpost {
 // `v` as the control reads it once written in the machine's format `f` (an address or a named
 // format), the scale undone; never -0.
 double as_read(const Machine& m, std::string_view f, double v);
+double as_read(const NumberFormat& nf, double v);
 // One least increment of format `f`, in unscaled units.
 double least_increment(const Machine& m, std::string_view f);
+double least_increment(const NumberFormat& nf);
 // The nearest value format `f` writes that is not below (above) `v` beyond floating noise.
 double read_up(const Machine& m, std::string_view f, double v);
 double read_down(const Machine& m, std::string_view f, double v);

@@ -15,6 +15,10 @@ const NumberFormat& Machine::format_for(std::string_view address) const {
   return kDefault;
 }
 
+void use_units(Machine& copy, const Machine& loaded, bool inch) {
+  for (const auto& [address, f] : loaded.formats) copy.formats[address] = f.in_units(inch);
+}
+
 const std::string& Machine::code(const std::string& key) const {
   // A name the schema does not declare is a typo in clpost (Debug and sanitizer builds stop).
   assert(find_code(key) != nullptr && "code name not declared in machine_schema.cc");

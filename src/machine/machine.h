@@ -19,6 +19,18 @@ struct NumberFormat {
                                 // decimals == 0: whole numbers only, no point)
   bool leading_zero = true;     // "0.5" rather than ".5"
   double scale = 1;             // value multiplied before writing (e.g. 1000 for micrometres)
+  // Digits after the point in an inch program (formats.<a>.inch_decimals). The loader gives the
+  // ones it leaves out a value: a length address (X, Z, I, K, R, U, W) takes the control's least
+  // input increment in inch (Control::inch_length_increment) when that is finer, every other
+  // `decimals`. -1 only in a machine made in code: `decimals`.
+  int inch_decimals = -1;
+
+  // This format as an inch (`inch` true) or metric program writes it.
+  NumberFormat in_units(bool inch) const {
+    NumberFormat f = *this;
+    if (inch && inch_decimals >= 0) f.decimals = inch_decimals;
+    return f;
+  }
 };
 
 enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
@@ -125,9 +137,16 @@ struct Machine : ControlSettings {
   // Block templates (fmt replacement fields with named arguments), one NC line each.
   std::map<std::string, std::vector<std::string>> templates;
 
+  // The format of `address` (else "default"): a metric program's, or the program's units' in a
+  // post's own copy of the machine (writer/unit_formats.h).
   const NumberFormat& format_for(std::string_view address) const;
   const std::string& code(const std::string& key) const;  // empty when absent
 };
+
+// Makes `copy`, a post's own copy of machine `loaded`, write numbers as a program in inch
+// (`inch`) or metric does: its formats become loaded's in those units (in place: references to
+// them stay valid). NcProgram calls it at the program's start and at every units code.
+void use_units(Machine& copy, const Machine& loaded, bool inch);
 
 // What a radius is multiplied by to be an X value (and an X value divided by to be a radius):
 // 2 where X is a diameter, 1 where it is a radius. `diameter` is whichever flag says so: the

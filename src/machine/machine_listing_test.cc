@@ -30,9 +30,9 @@ TEST(MachineListing, OriginsOfThePostTheMachineAndSet) {
   const std::string dir = CLPOST_SOURCE_DIR;
   EXPECT_EQ(o.at("limits.max_rpm"), "--set");
   EXPECT_EQ(o.at("limits.max_feed"), dir + "/machines/generic-lathe.yaml:7");
-  EXPECT_EQ(o.at("codes.thread"), dir + "/posts/iso-lathe.yaml:30");
-  EXPECT_EQ(o.at("formats.X.decimals"), dir + "/posts/iso-lathe.yaml:15");
-  EXPECT_EQ(o.at("templates.dwell"), dir + "/posts/iso-lathe.yaml:56");
+  EXPECT_EQ(o.at("codes.thread"), dir + "/posts/iso-lathe.yaml:32");
+  EXPECT_EQ(o.at("formats.X.decimals"), dir + "/posts/iso-lathe.yaml:17");
+  EXPECT_EQ(o.at("templates.dwell"), dir + "/posts/iso-lathe.yaml:58");
   EXPECT_EQ(o.count("limits.max_feed_x"), 0u);  // the default
   std::vector<MachineValue> v = machine_values(m);
   EXPECT_EQ(v.front().key, "extends");

@@ -459,6 +459,21 @@ bool check_fixed_codes(const Machine& m, const KeyOrigins& origins, std::string_
   return ok;
 }
 
+// The inch decimals the machine file leaves out: a length address takes the control's least
+// input increment in inch where it is finer than its decimals (Control::inch_length_increment),
+// every other format its decimals.
+void resolve_inch_decimals(Machine& m) {
+  constexpr std::string_view kLengths[] = {"X", "Z", "I", "K", "R", "U", "W"};
+  const double inc = m.control ? m.control->inch_length_increment : 0;
+  const int digits = inc > 0 ? static_cast<int>(std::lround(-std::log10(inc))) : 0;
+  for (auto& [address, f] : m.formats) {
+    if (f.inch_decimals >= 0) continue;
+    const bool length =
+        std::find(std::begin(kLengths), std::end(kLengths), address) != std::end(kLengths);
+    f.inch_decimals = length && f.scale == 1 ? std::max(f.decimals, digits) : f.decimals;
+  }
+}
+
 }  // namespace
 
 bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_post, Machine& m,
@@ -662,6 +677,7 @@ bool load_machine(std::string_view name_or_path, const std::vector<std::string>&
   for (const std::string& ov : overrides)
     if (!apply_override(ov, m, errors, origins)) return false;
   if (!check_required(path, machine_text, m, errors)) return false;
+  resolve_inch_decimals(m);
   if (!check_fixed_codes(m, *origins, machine_text, errors)) return false;
   out = std::move(m);
   return true;

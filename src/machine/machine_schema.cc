@@ -212,6 +212,11 @@ const FormatKeySpec kFormatKeys[] = {
     {"decimal_point", kBool, &NumberFormat::decimal_point,
      "`12.` rather than `12` for whole numbers"},
     {"leading_zero", kBool, &NumberFormat::leading_zero, "`0.5` rather than `.5`"},
+    {"inch_decimals", kInt, &NumberFormat::inch_decimals,
+     "digits after the point in an inch program (G20/G70); default: for X, Z, I, K, R, U and W "
+     "the control's least input increment in inch where it is finer than `decimals` (0.0001 in: "
+     "4 on Fanuc, Haas, SINUMERIK and HEIDENHAIN), else `decimals`",
+     0, 9, "see its meaning"},
     {"scale", kNumber, &NumberFormat::scale,
      "multiply before writing (1000: micrometres as integers, with `decimals: 0`)", 1e-6, 1e6},
 };

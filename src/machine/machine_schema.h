@@ -50,6 +50,9 @@ struct FormatKeySpec {
   FormatMember member;
   std::string_view doc;
   double lo = 0, hi = 0;
+  // A default that is no value (`inch_decimals`: the loader's rule): shown in the docs as this,
+  // and left out of the JSON schema.
+  std::string_view default_text = {};
 };
 
 struct NameSpec {  // a code or a format

@@ -129,7 +129,7 @@ std::string number_format_schema(size_t indent) {
       m.push_back({"minimum", num(k.lo)});
       m.push_back({"maximum", num(k.hi)});
     }
-    m.push_back({"default", format_key_value_text(k, defaults)});
+    if (k.default_text.empty()) m.push_back({"default", format_key_value_text(k, defaults)});
     props.push_back({std::string(k.name), object(indent + 4, m)});
   }
   return object(indent, {{"type", str("object")},

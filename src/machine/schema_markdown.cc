@@ -92,7 +92,9 @@ std::string formats_tables() {
                              : k.type == KeyType::kInt ? "whole number " + range(k.lo, k.hi)
                                                        : "number " + range(k.lo, k.hi);
     out += fmt::format("| `{}` | {} | {} | {} |\n", k.name, type,
-                       cell(format_key_value_text(k, defaults)), k.doc);
+                       cell(k.default_text.empty() ? format_key_value_text(k, defaults)
+                                                   : std::string(k.default_text)),
+                       k.doc);
   }
   out +=
       "\nThe format names: an address the machine writes, or a named format. An address that a "

@@ -28,6 +28,7 @@ struct NcBlock {
   std::vector<NcCall> calls;
   std::vector<std::string> comments;
   bool program_delimiter = false;  // a '%' line
+  bool block_delete = false;       // it starts with the block delete mark ('/'): optional
 
   const NcWord* find(std::string_view address) const {
     for (const NcWord& w : words)

@@ -144,7 +144,10 @@ struct Lexer {
       b.program_delimiter = true;
       return true;
     }
-    if (i < s.size() && s[i] == '/') ++i;  // block delete: the block runs (switch off)
+    if (i < s.size() && s[i] == '/') {  // block delete: the block is optional
+      b.block_delete = true;
+      ++i;
+    }
     // Block number.
     std::string_view addr = trim(syn.block_address, kCr);
     if (!addr.empty() && s.substr(i, addr.size()) == addr) {
@@ -186,6 +189,7 @@ bool lex_nc_line(std::string_view line, uint32_t line_no, const NcSyntax& syntax
   block.calls.clear();
   block.comments.clear();
   block.program_delimiter = false;
+  block.block_delete = false;
   while (!line.empty() && (line.back() == '\r' || is_blank(line.back()))) line.remove_suffix(1);
   Lexer lx{line, 0, block, error};
   return lx.run(syntax);

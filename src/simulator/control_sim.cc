@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "machine/machine_schema.h"
 #include "nc_reader/nc_lexer.h"
@@ -370,38 +372,90 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
 
 }  // namespace
 
-bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
-                 const SimOptions& options) {
+namespace {
+
+// The end of a run: a cycle left open is an error; the path's units and readback.
+void finish_run(State& s, const Codes& codes) {
+  if (s.pending.set && s.pending.takes_blocks) {
+    s.diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
+                  std::string(codes.control->unclosed));
+    s.ok = false;
+  }
+  s.out.path.units = s.out.units;
+  s.out.path.readback = codes.modal.readback;
+}
+
+// The run with block delete on (SimOptions::block_delete_too): its own state, simulation and
+// diagnostics, every block but the optional ones.
+struct BlockDeleteRun {
+  BlockDeleteRun(const Machine& m, const std::string& file, const SimOptions& o)
+      : diags(file), state(m, diags, sim, o) {
+    state.diameter = m.diameter_output;
+    sim.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+  }
+  Diagnostics diags;
+  Simulation sim;
+  State state;
+};
+
+// Its errors that the run with block delete off has not: into `diags`, marked.
+void keep_block_delete_errors(const Diagnostics& on, Diagnostics& diags) {
+  const std::vector<Diagnostic> off = diags.kept();
+  for (const Diagnostic& d : on.kept()) {
+    if (d.severity != Severity::kError) continue;
+    const bool known = std::any_of(off.begin(), off.end(), [&](const Diagnostic& o) {
+      return o.loc.line == d.loc.line && o.message == d.message;
+    });
+    if (!known) diags.error(d.loc, d.line_text, d.message + " (block delete on)");
+  }
+}
+
+// Reads one line into `block`: false at the end or on a read error (reported, `ok` false).
+enum class Read : uint8_t { kLine, kSkipped, kEnd, kFailed };
+Read read_line(reader::LineSource& src, State& s, reader::LineSource::Line& l) {
   using Status = reader::LineSource::Status;
   constexpr size_t kMaxLine = 64 * 1024;
+  src.mark();
+  const Status st = src.next_line(kMaxLine, l);
+  if (st == Status::kEnd) return Read::kEnd;
+  if (st == Status::kBinary) {
+    s.diags.error({}, {},
+                  fmt::format("not an NC text file (binary data at byte {})", src.binary_offset()));
+    return Read::kFailed;
+  }
+  if (st == Status::kReadError) {
+    s.diags.error({}, {}, src.read_error());
+    return Read::kFailed;
+  }
+  if (st == Status::kTooLong) {
+    s.diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
+    src.skip_line();
+    s.ok = false;
+    return Read::kSkipped;
+  }
+  return Read::kLine;
+}
+
+}  // namespace
+
+bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
+                 const SimOptions& options) {
   out = Simulation{};
   out.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
   State s{m, diags, out, options};
   s.diameter = m.diameter_output;
+  std::optional<BlockDeleteRun> on;
+  if (options.block_delete_too) on.emplace(m, diags.file(), options);
   const NcSyntax syntax = nc_syntax(m);
   const Codes codes = codes_of(m);
   NcBlock block;
   NcLexError lex_error;
   while (true) {
-    src.mark();
     reader::LineSource::Line l;
-    const Status st = src.next_line(kMaxLine, l);
-    if (st == Status::kEnd) break;
-    if (st == Status::kBinary) {
-      diags.error({}, {},
-                  fmt::format("not an NC text file (binary data at byte {})", src.binary_offset()));
-      return false;
-    }
-    if (st == Status::kReadError) {
-      diags.error({}, {}, src.read_error());
-      return false;
-    }
-    if (st == Status::kTooLong) {
-      diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
-      src.skip_line();
-      s.ok = false;
-      continue;
-    }
+    const Read r = read_line(src, s, l);
+    if (r == Read::kEnd) break;
+    if (r == Read::kFailed) return false;
+    if (r == Read::kSkipped) continue;
     ++out.blocks;
     s.line = l.number;
     s.line_text = src.text(l);
@@ -410,19 +464,25 @@ bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, 
       s.ok = false;
     } else {
       run_block(s, block, codes);
+      out.deleted_blocks += block.block_delete ? 1 : 0;
+      if (on && !block.block_delete) {
+        on->state.line = s.line;
+        on->state.line_text = s.line_text;
+        run_block(on->state, block, codes);
+      }
     }
     if (diags.error_count() > 100) {
       diags.error(SourceLoc{l.number, 1}, {}, "too many errors; verify stopped here");
       return false;
     }
   }
-  if (s.pending.set && s.pending.takes_blocks) {
-    diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
-                std::string(codes.control->unclosed));
-    s.ok = false;
+  finish_run(s, codes);
+  if (on && out.deleted_blocks > 0) {
+    finish_run(on->state, codes);
+    keep_block_delete_errors(on->diags, diags);
+    s.ok = s.ok && on->state.ok;
+    out.with_block_delete.push_back(std::move(on->sim));
   }
-  out.path.units = out.units;
-  out.path.readback = codes.modal.readback;
   return s.ok;
 }
 

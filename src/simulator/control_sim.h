@@ -57,6 +57,9 @@ struct Simulation {
   size_t blocks = 0;        // NC lines read
   int calls = 0;            // cycle calls expanded
   std::vector<SimHole> holes;
+  size_t deleted_blocks = 0;  // blocks marked optional ('/'), which block delete skips
+  // With SimOptions::block_delete_too and optional blocks: the run with block delete on (one).
+  std::vector<Simulation> with_block_delete;
 };
 
 struct SimOptions {
@@ -65,6 +68,10 @@ struct SimOptions {
   // position among them, in order, as Move{from == to}): verify of the path while the program
   // is read, with no moves kept.
   std::function<void(const Move&, const CutState&)> on_move;
+  // Also runs the program with block delete on (its optional blocks skipped), beside the run
+  // with it off: Simulation::with_block_delete. Its errors the other run has not are reported
+  // too, marked "(block delete on)".
+  bool block_delete_too = false;
 };
 
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control

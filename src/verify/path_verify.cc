@@ -98,8 +98,11 @@ void check_arc(PathCheck& k, const ClMotion& c, const Move& mv) {
                                k.point(c.center), k.point(mv.center)));
 }
 
-bool same_as_written(const Machine& m, std::string_view format, double cl, double program) {
-  return std::fabs(as_read(m, format, cl) - program) <= least_increment(m, format) / 2 + 1e-9;
+// `cl` as format `format` writes it in the program's units (`inch`) is `program`.
+bool same_as_written(const Machine& m, std::string_view format, double cl, double program,
+                     bool inch) {
+  const NumberFormat f = m.format_for(format).in_units(inch);
+  return std::fabs(as_read(f, cl) - program) <= least_increment(f) / 2 + 1e-9;
 }
 
 std::string tool_text(const CutState& s, const StateReadback& r) {
@@ -129,9 +132,10 @@ bool same_tool(const StateReadback& r, const CutState& a, const CutState& b) {
   return a.tool == b.tool && (!r.offset || a.offset < 0 || a.offset == b.offset);
 }
 
-bool same_feed(const Machine& m, const StateReadback& r, const CutState& a, const CutState& b) {
+bool same_feed(const Machine& m, const StateReadback& r, const CutState& a, const CutState& b,
+               bool inch) {
   if (a.feed <= 0) return true;
-  return same_as_written(m, "F", a.feed, b.feed) &&
+  return same_as_written(m, "F", a.feed, b.feed, inch) &&
          (!r.feed_mode || a.per_rev < 0 || a.per_rev == b.per_rev);
 }
 
@@ -140,8 +144,9 @@ bool same_spindle(const Machine& m, const StateReadback& r, const CutState& a, c
   if (a.spindle != b.spindle) return false;
   if (a.spindle == SpindleRun::kOff) return true;
   if (r.css && a.css != b.css) return false;
-  if (!same_as_written(m, "S", a.speed, b.speed)) return false;
-  return !a.css || !r.max_rpm || a.max_rpm <= 0 || same_as_written(m, "S", a.max_rpm, b.max_rpm);
+  if (!same_as_written(m, "S", a.speed, b.speed, false)) return false;
+  return !a.css || !r.max_rpm || a.max_rpm <= 0 ||
+         same_as_written(m, "S", a.max_rpm, b.max_rpm, false);
 }
 
 // Feed, spindle and tool of CL motion `c` against the program's state at `mv`.
@@ -151,7 +156,7 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
   const CutState& b = k.path.states[mv.state].state;
   const StateReadback& r = k.path.readback;
   const LengthUnit u = k.path.units;
-  const bool differs[3] = {!same_tool(r, a, b), !same_feed(k.m, r, a, b),
+  const bool differs[3] = {!same_tool(r, a, b), !same_feed(k.m, r, a, b, u == LengthUnit::kInch),
                            !same_spindle(k.m, r, a, b)};
   static constexpr const char* kWhat[3] = {"tool", "feed", "spindle"};
   const bool compared[3] = {true, !c.rapid, !c.rapid};  // feed and spindle: where it cuts
@@ -201,7 +206,11 @@ size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next
   const size_t j = find_move(moves, next, c, k.tol, !c.exit);
   if (j < moves.size()) return j;
   const size_t other = find_move(moves, next, c, k.tol, false);
-  const Move* mv = other < moves.size() ? &moves[other] : next > 0 ? &moves[next - 1] : nullptr;
+  // Where the program goes elsewhere: its next move (else its last).
+  const Move* mv = other < moves.size()  ? &moves[other]
+                   : next < moves.size() ? &moves[next]
+                   : next > 0            ? &moves[next - 1]
+                                         : nullptr;
   if (other < moves.size()) {
     k.problem(mv,
               fmt::format("motion at {}: {} is reached by a {} move, the CL {} there", k.at(c),

@@ -75,6 +75,7 @@ NcProgram::NcProgram(const Machine& m, Sink& out)
       code_thread_(m.code("thread")) {}
 
 TemplateWrite NcProgram::start(std::string_view program_name, bool inch, std::string_view file) {
+  if (units_copy_) use_units(*units_copy_, *units_loaded_, inch);
   TemplateFill<tmpl::kProgramStart> a;
   a.whole<"program_number">(m_.program_number)
       .text<"program_name">(std::string(program_name))
@@ -203,6 +204,13 @@ bool NcProgram::stays_at(LathePoint p) const {
          same_text(*last_z_, written_after(last_z_, p.z, fmt_z_));
 }
 
+bool NcProgram::arc_has_no_radius(LathePoint center) const {
+  if (!pos_) return false;
+  const WrittenNumber i = written(center.r - pos_->r, fmt_i_);
+  const WrittenNumber k = written(center.z - pos_->z, fmt_k_);
+  return i.exact && k.exact && i.digits == 0 && k.digits == 0;
+}
+
 void NcProgram::rapid(LathePoint p) {
   if (stays_at(p)) return;
   motion_code(code_rapid_);
@@ -276,7 +284,8 @@ void NcProgram::cycle_ended_at(LathePoint p) {
   pos_ = p;
 }
 
-void NcProgram::units_changed(double factor) {
+void NcProgram::units_changed(double factor, bool inch) {
+  if (units_copy_) use_units(*units_copy_, *units_loaded_, inch);
   if (pos_) pos_ = LathePoint{pos_->r * factor, pos_->z * factor};
   feed_ *= factor;
   last_x_.reset();

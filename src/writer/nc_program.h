@@ -105,6 +105,9 @@ class NcProgram {
 
   // `p` is where the program has just put the tool: its X and Z as last written.
   bool stays_at(LathePoint p) const;
+  // An arc around `center` from where the tool is would be written with I and K both zero: the
+  // written centre is the start, an arc of no radius (a full circle or an alarm on the control).
+  bool arc_has_no_radius(LathePoint center) const;
   // Where the tool is (unknown until the first move).
   std::optional<LathePoint> position() const { return pos_; }
   // Forgets the modal motion code, feed and spindle words (after a cycle or raw insert whose
@@ -113,7 +116,15 @@ class NcProgram {
   // After a units code (G20/G21): the control reads later numbers in the new units, so the
   // position and the feed are converted by `factor` (new units per old) and the next move writes
   // X, Z and F in full.
-  void units_changed(double factor);
+  // `inch`: the new units are inches (the formats follow them, see follow_units).
+  void units_changed(double factor, bool inch);
+  // The numbers follow the program's units: `copy` (the machine this program writes with, a
+  // post's own copy of `loaded`) takes loaded's formats in the units of the start and of every
+  // units code (use_units).
+  void follow_units(Machine& copy, const Machine& loaded) {
+    units_copy_ = &copy;
+    units_loaded_ = &loaded;
+  }
 
  private:
   void motion_code(const std::string& code);
@@ -123,6 +134,8 @@ class NcProgram {
   double x_out(double r) const { return diameter_factor(m_) * r; }
 
   const Machine& m_;
+  Machine* units_copy_ = nullptr;  // follow_units
+  const Machine* units_loaded_ = nullptr;
   NcWriter w_;
   // Looked up once: the formats and codes of every move.
   const NumberFormat& fmt_x_;

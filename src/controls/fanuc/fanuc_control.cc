@@ -15,6 +15,10 @@ extern const Control kFanucControl{
     .readback = &sim::kFanucReadback,
     .fixed_codes = kFanucCodes,
     // "%" ends the program text on the control (the end-of-record mark of its tape format).
-    .comment_control = "%"};
+    .comment_control = "%",
+    // Increment system IS-B: least input increment 0.001 mm, 0.0001 in (Fanuc's increment
+    // systems, as M. Lynch lists them: mmsonline.com, "Juggling Mismatches in Resolution and
+    // Least Input Increment"; docs/cl-meaning.md, inch output).
+    .inch_length_increment = 0.0001};
 
 }  // namespace clpost

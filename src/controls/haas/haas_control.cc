@@ -16,6 +16,10 @@ extern const Control kHaasControl{
     .readback = &sim::kHaasReadback,
     .fixed_codes = kFanucCodes,
     // "%" ends the program text on the control (the end-of-record mark of its tape format).
-    .comment_control = "%"};
+    .comment_control = "%",
+    // 0.0001 in: Setting 77 reads an F without a point in the inch default of .0001 (Haas,
+    // "Help with the Decimal Points", haas.co.uk); lengths are given to the same place (issue
+    // 24; docs/cl-meaning.md, inch output).
+    .inch_length_increment = 0.0001};
 
 }  // namespace clpost

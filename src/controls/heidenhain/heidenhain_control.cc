@@ -26,6 +26,9 @@ extern const Control kHeidenhainControl{.name = "heidenhain",
                                           return std::make_unique<HeidenhainG31Emitter>();
                                         },
                                         .readback = &sim::kHeidenhainReadback,
-                                        .fixed_codes = kHeidenhainCodes};
+                                        .fixed_codes = kHeidenhainCodes,
+                                        // Positions to 1 µm (MANUALplus 4110 manual, "Accuracy");
+                                        // its inch step 0.0001 in: docs/cl-meaning.md.
+                                        .inch_length_increment = 0.0001};
 
 }  // namespace clpost

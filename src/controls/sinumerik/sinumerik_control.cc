@@ -40,6 +40,9 @@ extern const Control kSinumerikControl{
       return std::make_unique<Cycle96Emitter>();
     },
     .readback = &sim::kSinumerikReadback,
-    .fixed_codes = kSinumerikCodes};
+    .fixed_codes = kSinumerikCodes,
+    // 0.0001 in in an inch program (G70/G700): issue 24; no public SINUMERIK source found
+    // (docs/cl-meaning.md, inch output).
+    .inch_length_increment = 0.0001};
 
 }  // namespace clpost
