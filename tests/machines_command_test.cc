@@ -34,7 +34,7 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
   for (const std::string& l :
        {"output.extension: .ngc                          # " + machine + ":7",
         "output.line_ending: lf                          # " + post + ":9",
-        "threading.cycle: linuxcnc_g76                   # " + post + ":77",
+        "threading.cycle: linuxcnc_g76                   # " + post + ":80",
         std::string("threading.fallback: error                       # --set"),
         std::string("threading.loop: g33                             # default"),
         "limits.max_rpm: 3000                            # " + machine + ":8",
@@ -42,12 +42,12 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
         std::string("formats.K.scale: 1                              # default"),
         "codes.thread: G33                               # " + post + ":36",
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
-            ":61"})
+            ":64"})
     EXPECT_TRUE(has_line(lines, l)) << l << "\n" << r.out;
-  // The heading, 60 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
-  // g76_depth g76_angle g76_taper) of 5 keys, 19 codes and 17 templates (9, 6 hole cycles,
-  // auxfun and prefun).
-  EXPECT_EQ(lines.size(), 1u + 60 + 12 * 5 + 19 + 17);
+  // The heading, 67 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
+  // g76_depth g76_angle g76_taper) of 5 keys, 21 codes (live_spindle_cw/ccw among them) and 17
+  // templates (9, 6 hole cycles, auxfun and prefun).
+  EXPECT_EQ(lines.size(), 1u + 67 + 12 * 5 + 21 + 17);
 }
 
 TEST(MachinesShow, WithoutOriginAndAnUnknownMachine) {
