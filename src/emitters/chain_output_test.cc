@@ -58,6 +58,9 @@ TEST(ChainOutput, CyclesFallBackWithTheirReason) {
       {"linuxcnc-lathe",
        "(G76 not used: a chained thread: G76 cuts one straight thread line. emulation instead)",
        "G33 Z-10. K1.5", "X31. Z-20. K1.5"},
+      {"linuxcnc-lathe-c",
+       "(G76 not used: a chained thread: G76 cuts one straight thread line. emulation instead)",
+       "G33 Z-10. K1.5", "X31. Z-20. K1.5"},
       {"heidenhain-pilot",
        "[G31 not used: a chained thread: clpost writes G31 for one straight thread line only. "
        "G33 loop instead]",

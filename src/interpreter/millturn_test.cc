@@ -81,6 +81,25 @@ TEST(MillTurn, EveryMillWordMakesAMillingTool) {
   EXPECT_NE(set.nc.find("(SET/MODE,ABSOL)"), std::string::npos) << set.nc;
 }
 
+// The issue's words post on linuxcnc-lathe-c: the live tool is spindle 1, C an axis of its own
+// (no engage or clamp code), and the turning tool turns spindle 0. Its live tool's limit is
+// 6000 rpm: the issue's 15000 needs it raised, as the issue raised limits.max_rpm.
+TEST(MillTurn, TheIssuesCatiaWordsPostOnLinuxcncLatheC) {
+  const std::string cl =
+      std::string(kCatia).replace(std::string(kCatia).find("3000.0000"), 9, "15000.0000");
+  Posted p = post(cl, load("linuxcnc-lathe-c", {"millturn.live_max_rpm=15000"}));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nG7 G18 G21 G90 G40 G80\nT3 M6 G43 H1\nM3 $1 S15000\nG0 C90.\nM5 $1\n"
+            "T1 M6 G43 H9\nG97 S1000 M3\nG1 X40. Z5. G95 F0.2\nM2\n%\n");
+  Posted q = post(cl, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(q.errors, 1u) << q.diags;
+  EXPECT_NE(q.diags.find("t.cl:3:8: error: live tool speed 15000 rpm exceeds the machine's "
+                         "maximum 6000 rpm (millturn.live_max_rpm)"),
+            std::string::npos)
+      << q.diags;
+}
+
 // With live tools: the live spindle's codes, C engaged after the tool change, clamped after it
 // moves; the turning tool's SPINDL unclamps and disengages C first.
 TEST(MillTurn, LiveToolAndCAxisOnAHaas) {
