@@ -55,6 +55,13 @@ TEST(ChainOutput, CyclesFallBackWithTheirReason) {
       {"haas-st",
        "(G76 NOT USED: A CHAINED THREAD: G76 CUTS ONE STRAIGHT THREAD LINE. EMULATION INSTEAD)",
        "G32 Z-10. F1.5", "X31. Z-20. F1.5"},
+      // The live-tool machines thread as the lathes they extend.
+      {"fanuc-0i-tf-live",
+       "(G76 NOT USED: A CHAINED THREAD: G76 CUTS ONE STRAIGHT THREAD LINE. EMULATION INSTEAD)",
+       "G32 Z-10. F1.5", "X31. Z-20. F1.5"},
+      {"haas-st-20y",
+       "(G76 NOT USED: A CHAINED THREAD: G76 CUTS ONE STRAIGHT THREAD LINE. EMULATION INSTEAD)",
+       "G32 Z-10. F1.5", "X31. Z-20. F1.5"},
       {"linuxcnc-lathe",
        "(G76 not used: a chained thread: G76 cuts one straight thread line. emulation instead)",
        "G33 Z-10. K1.5", "X31. Z-20. K1.5"},

@@ -100,6 +100,18 @@ TEST(MillTurn, TheIssuesCatiaWordsPostOnLinuxcncLatheC) {
       << q.diags;
 }
 
+// The shipped live-tool machines with their builders' codes (reference/millturn.md section 2):
+// Takisawa on Fanuc M76/M75 engage, M70/M72 live tool, M73/M74 clamp; Haas M154/M155, M133 P,
+// M135, M14/M15.
+TEST(MillTurn, TheIssuesCatiaWordsOnTheShippedLiveMachines) {
+  EXPECT_EQ(post(kCatia, load("fanuc-0i-tf-live")).nc,
+            "%\nO0001\nG18 G21 G40 G97\nT0301\nM76\nM70 S3000\nG0 C90.\nM73\nM72\nT0109\n"
+            "M74\nM75\nG97 S1000 M3\nG1 X40. Z5. G99 F0.2\nM30\n%\n");
+  EXPECT_EQ(post(kCatia, load("haas-st-20y")).nc,
+            "%\nO00001\nG18 G21 G40 G97\nT0301\nM154\nM133 P3000\nG0 C90.\nM14\nM135\n"
+            "T0109\nM15\nM155\nG97 S1000 M3\nG1 X40. Z5. G99 F0.2\nM30\n%\n");
+}
+
 // With live tools: the live spindle's codes, C engaged after the tool change, clamped after it
 // moves; the turning tool's SPINDL unclamps and disengages C first.
 TEST(MillTurn, LiveToolAndCAxisOnAHaas) {
