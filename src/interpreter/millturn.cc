@@ -262,3 +262,21 @@ void sync_stmt(PostState& s, const Statement& st) {
 }
 
 }  // namespace clpost
+
+namespace clpost {
+
+// CHANNEL,n (CATIA's multi-channel programs, read as CHANNEL/n): which channel this program is
+// for. A comment; channel 2 or more is a warning that names the missing channel.
+void channel_stmt(PostState& s, const Statement& st) {
+  const Arg* n = st.args.empty() || !st.args[0].is_number() ? nullptr : &st.args[0];
+  if (n != nullptr && n->number >= 2)
+    warning(s, st, n->loc,
+            fmt::format("the CL is the program of channel {} of a multi-channel machine, and "
+                        "machine '{}' has one channel (no channel {}): posted as a one-channel "
+                        "program",
+                        n->text, s.m.name, n->text));
+  ensure_started(s);
+  s.prog.comment(st.source);
+}
+
+}  // namespace clpost

@@ -205,6 +205,21 @@ TEST(MillTurn, RotablWithoutAxisWordOnAPlainLatheIsAComment) {
   EXPECT_NE(p.nc.find("(ROTABL/0,,TABLE,CLW)"), std::string::npos) << p.nc;
 }
 
+TEST(MillTurn, ChannelTwoIsAWarningNamingTheMissingChannel) {
+  Posted p = post("CHANNEL,2\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.errors, 0u);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:9: warning: the CL is the program of channel 2 of a multi-channel machine, and "
+            "machine 'generic-lathe' has one channel (no channel 2): posted as a one-channel "
+            "program\n"
+            "  CHANNEL,2\n"
+            "          ^\n");
+  EXPECT_NE(p.nc.find("(CHANNEL,2)"), std::string::npos) << p.nc;
+  Posted one = post("CHANNEL,1\nCHANNEL,\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(one.diags, "");
+  EXPECT_NE(one.nc.find("(CHANNEL,1)\n(CHANNEL,)"), std::string::npos) << one.nc;
+}
+
 TEST(MillTurn, SyncIsAWarningNamingTheMissingChannel) {
   Posted p = post("SYNC/2,1,2,1\nFINI\n", load("generic-lathe"));
   EXPECT_EQ(p.errors, 0u);

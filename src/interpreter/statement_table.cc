@@ -94,6 +94,7 @@ constexpr StatementEntry kEntries[] = {
     {"ROTABL", rotabl_stmt},
     {"ROTATE", rotabl_stmt},
     {"SYNC", sync_stmt},
+    {"CHANNEL", channel_stmt},
     // Text (text_words.cc)
     {"PARTNO", partno_stmt},
     {"PPRINT", pprint_stmt},

@@ -97,6 +97,7 @@ void tdata_stmt(PostState& s, const Statement& st);
 void apply_stmt(PostState& s, const Statement& st);
 void rotabl_stmt(PostState& s, const Statement& st);
 void sync_stmt(PostState& s, const Statement& st);
+void channel_stmt(PostState& s, const Statement& st);
 
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);
