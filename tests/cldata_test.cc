@@ -44,7 +44,7 @@ TEST(Cldata, BinaryPostsLikeItsAptText) {
     for (const auto& e : fs::directory_iterator(source_dir() + dir))
       if (e.path().extension() == ".apt") samples.push_back(e.path().string());
   std::sort(samples.begin(), samples.end());
-  ASSERT_EQ(samples.size(), 18u);
+  ASSERT_EQ(samples.size(), 19u);
   const std::string dir = temp_dir();
   for (const std::string& apt_path : samples) {
     const std::string apt = read_file(apt_path);

@@ -255,9 +255,11 @@ std::vector<Refusal> refusals() {
                      std::to_string(kThreadLine) + ") cannot be cut on machine '" + m +
                      "': it does not declare variable-lead threading (G34/G35)"});
   }
-  v.push_back({"linuxcnc-lathe", "fast_spindle",
-               "error: thread feed too fast for machine 'linuxcnc-lathe': lead 2.5 x 2200 rpm = "
-               "5500 per minute, above its maximum feed 5000"});
+  // linuxcnc-lathe-c is linuxcnc-lathe with C and a live tool: the same feed limit.
+  for (const char* m : {"linuxcnc-lathe", "linuxcnc-lathe-c"})
+    v.push_back({m, "fast_spindle",
+                 std::string("error: thread feed too fast for machine '") + m +
+                     "': lead 2.5 x 2200 rpm = 5500 per minute, above its maximum feed 5000"});
   return v;
 }
 

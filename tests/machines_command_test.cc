@@ -34,7 +34,7 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
   for (const std::string& l :
        {"output.extension: .ngc                          # " + machine + ":7",
         "output.line_ending: lf                          # " + post + ":9",
-        "threading.cycle: linuxcnc_g76                   # " + post + ":81",
+        "threading.cycle: linuxcnc_g76                   # " + post + ":84",
         std::string("threading.fallback: error                       # --set"),
         std::string("threading.loop: g33                             # default"),
         "limits.max_rpm: 3000                            # " + machine + ":8",
@@ -42,12 +42,12 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
         std::string("formats.K.scale: 1                              # default"),
         "codes.thread: G33                               # " + post + ":37",
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
-            ":65"})
+            ":68"})
     EXPECT_TRUE(has_line(lines, l)) << l << "\n" << r.out;
-  // The heading, 60 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
-  // g76_depth g76_angle g76_taper) of 6 keys, 19 codes and 18 templates (9, 6 hole cycles,
-  // auxfun, prefun and program_header).
-  EXPECT_EQ(lines.size(), 1u + 60 + 12 * 6 + 19 + 18);
+  // The heading, 67 keys, 12 formats (linuxcnc.yaml: default X Z I K F S dwell g76_lead
+  // g76_depth g76_angle g76_taper) of 6 keys, 21 codes (live_spindle_cw/ccw among them) and 18
+  // templates (9, 6 hole cycles, auxfun, prefun and program_header).
+  EXPECT_EQ(lines.size(), 1u + 67 + 12 * 6 + 21 + 18);
 }
 
 TEST(MachinesShow, WithoutOriginAndAnUnknownMachine) {

@@ -79,6 +79,47 @@ TEST(Rs274, SamplesRunAndFollowTheClPoints) {
   fs::remove_all(dir);
 }
 
+// linuxcnc-lathe-c (docs/millturn.md) with an INI of two spindles and X Z C: the live tool is
+// spindle 1 at the CL's 3000 rpm, C goes to 90, 45 (the shortest way) and 90 clockwise (C
+// decreasing: 45 - 315 = -270, the same place as 90), the turning tool turns spindle 0 and its
+// moves are the CL's points (radii) at that C.
+TEST(Rs274, MillTurnLiveToolOnSpindleOneAndC) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), ngc = dir + "/c.ngc";
+  RunResult post = run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " +
+                       quote(source_dir() + "/samples/machines/linuxcnc-lathe-c.apt"));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  std::vector<std::string> got;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) {
+    const size_t at = line.find("N..... ");
+    if (at == std::string::npos) continue;
+    const std::string call = line.substr(at + 7);
+    if (call.starts_with("SET_SPINDLE_SPEED") || call.starts_with("START_SPINDLE") ||
+        call.starts_with("STRAIGHT_"))
+      got.push_back(call);
+  }
+  const std::vector<std::string> want = {
+      "SET_SPINDLE_SPEED(1, 3000.0000)",
+      "START_SPINDLE_CLOCKWISE(1)",
+      "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 90.0000)",
+      "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 45.0000)",
+      "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, -270.0000)",
+      "SET_SPINDLE_SPEED(0, 1000.0000)",
+      "START_SPINDLE_CLOCKWISE(0)",
+      "STRAIGHT_TRAVERSE(22.0000, 0.0000, 2.0000, 0.0000, 0.0000, -270.0000)",
+      "STRAIGHT_FEED(20.0000, 0.0000, 0.0000, 0.0000, 0.0000, -270.0000)",
+      "STRAIGHT_FEED(20.0000, 0.0000, -15.0000, 0.0000, 0.0000, -270.0000)",
+      "STRAIGHT_TRAVERSE(22.0000, 0.0000, 2.0000, 0.0000, 0.0000, -270.0000)"};
+  EXPECT_EQ(got, want) << r.out;
+  fs::remove_all(dir);
+}
+
 TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   // From rs274 -g on "G7 G18 G21 G90 / G0 X20 Z5 / G2 X34 Z-22 I2 K0": radii, Z first on arcs.
   std::vector<XZ> m = rs274_motion_ends(

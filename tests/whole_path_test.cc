@@ -150,7 +150,8 @@ TEST(WholePathGoldens, EveryGoldenCutsTheCl) {
       {"generic-lathe", "0.001", true},     {"fanuc-0i-t", "0.005", true},
       {"haas-st", "0.005", true},           {"sinumerik-840d", "0.001", true},
       {"heidenhain-pilot", "0.001", false}, {"linuxcnc-lathe", "1e-05", true},
-      {"nct-2000t", "0.001", true}};
+      {"linuxcnc-lathe-c", "1e-05", true},  {"fanuc-0i-tf-live", "0.005", true},
+      {"haas-st-20y", "0.005", true},       {"nct-2000t", "0.001", true}};
   const std::vector<std::string> machines = shipped_machine_names();
   ASSERT_FALSE(machines.empty());
   for (const Case& c : cases)

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "interpreter/lathe_geometry.h"
+#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -156,6 +157,7 @@ Point3 frame_point_of(const PostState& s, double u, double v) {
 }  // namespace
 
 void go_stmt(PostState& s, const Statement& st) {
+  if (milling_motion_refused(s, st)) return;
   Side side;
   if (!tool_side(s, st, side)) return;
   if (st.args.size() < 2) {

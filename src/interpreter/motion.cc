@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -212,6 +213,7 @@ void goto_stmt(PostState& s, const Statement& st) {
     }
     note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
+  if (milling_motion_refused(s, st)) return;
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
     if (s.hole_cycle) hole_goto(s, st, p);
     return;
@@ -255,6 +257,7 @@ void godlta_stmt(PostState& s, const Statement& st) {
     if (st.args.size() >= 3 && !number_arg(s, st, 2, "dZ", d.z)) return;
   }
   const Point3 p{s.pos->x + d.x, s.pos->y + d.y, s.pos->z + d.z};
+  if (milling_motion_refused(s, st)) return;
   if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);
@@ -268,6 +271,7 @@ void circle_stmt(PostState& s, const Statement& st) {
       !number_arg(s, st, 6, "the radius", c.radius))
     return;
   c.loc = st.loc;
+  if (milling_motion_refused(s, st)) return;
   frame_normal(s, st, Point3{c.ax, c.ay, c.az});
   // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
   const double axis[3] = {c.ax, c.ay, c.az};

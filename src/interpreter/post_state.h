@@ -58,6 +58,24 @@ struct SpindleState {
   SpindleDir dir = SpindleDir::kCw;
 };
 
+// What a tool does: turn (the main spindle turns the part) or mill (a driven tool turns, the
+// part stands still or moves as the C axis). docs/millturn.md.
+enum class ToolKind : uint8_t { kTurn, kMill };
+
+// Where the CL said a tool mills or turns (LOADTL/…,MILL, TDATA/MILL, APPLY/MILL, …).
+struct ToolKindWord {
+  ToolKind kind = ToolKind::kTurn;
+  std::string said;   // "TDATA/MILL"
+  uint32_t line = 0;  // its CL line (0: none)
+};
+
+// The C axis as the program left it (millturn.cc).
+struct CAxisState {
+  bool engaged = false;         // the main spindle is the C axis (codes.c_engage written)
+  bool clamped = false;         // codes.c_clamp written since C last moved
+  std::optional<double> angle;  // C as last written (unknown after engaging)
+};
+
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number
 // and offset; tool-data words (TOOLNO, TPRINT, CUTTER, SWITCH, a `PPRINT TOOL:` comment) fill in
 // what they say. Read by the tool list and by whatever needs the tool's geometry.
@@ -69,6 +87,8 @@ struct ToolInfo {
   std::optional<int> tip_quadrant;    // tool-tip direction 1..9 (SWITCH/n), for nose-radius
                                       // compensation
   std::string feed, speed;            // its default feed and speed as written ("0.1 MMPR")
+  std::optional<ToolKindWord> kind;   // what the CL said it does (none: it turns)
+  bool mills() const { return kind && kind->kind == ToolKind::kMill; }
 };
 
 // The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything larger
@@ -99,6 +119,13 @@ struct PostState {
   FeedMode feed_mode = FeedMode::kPerMinute;
   double feed = 0;  // output units
   SpindleState spindle;
+  // Mill-turn (millturn.cc): the live tool's spindle, the C axis, the CL's mill/turn mode
+  // (APPLY/, SET/MODE, MODE/) for tool changes that do not say, and whether the first milling
+  // motion of the tool loaded last was reported (later ones are then left out silently).
+  SpindleState live;
+  CAxisState c;
+  std::optional<ToolKindWord> cl_mode;
+  bool mill_motion_reported = false;
   bool spindle_stopped = false;     // the control's tool change stopped the CL's turning spindle
   Coolant coolant = Coolant::kOff;  // as the CL last set it
   // OPSKIP/ON … OFF: the spindle and coolant before the range, which the blocks after it must

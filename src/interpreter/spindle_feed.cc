@@ -4,7 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
+#include "machine/template_values.h"
 
 namespace clpost {
 
@@ -83,6 +85,56 @@ void surface_speed_unit(PostState& s, const Statement& st, SpindleWords& w) {
                         w.surface_word->text, *w.value, file_unit));
 }
 
+// A speed the S format rounds to nothing would be written as S0: a turning spindle that stands
+// still on the machine (CATIA writes its tools' SPINDL/0.398,RPM defaults). False: reported.
+bool speed_written(PostState& s, const Statement& st, const SpindleWords& w) {
+  const NumberFormat& f = s.m.format_for("S");
+  if (std::llround(*w.value * f.scale * std::pow(10.0, f.decimals)) != 0) return true;
+  error(s, st, w.value_loc,
+        fmt::format("spindle speed {} would be written as S{} (formats.S: {} decimals): the "
+                    "spindle would not turn",
+                    *w.value, s.prog.num("S", *w.value), f.decimals));
+  return false;
+}
+
+// SPINDL/ while a milling tool is loaded: the live tool's speed (templates live_spindle_rpm and
+// live_spindle_stop, codes live_spindle_cw/ccw, millturn.live_max_rpm). The main spindle stays
+// stopped.
+void live_spindl(PostState& s, const Statement& st, SpindleWords w) {
+  if (!s.m.live_tools) return;  // the tool change was an error already
+  SpindleState& sp = s.live;
+  ensure_started(s);
+  if (w.off) {
+    sp.on = false;
+    if (TemplateWrite r = s.prog.write_template(TemplateFill<tmpl::kLiveSpindleStop>()); !r)
+      error(s, st, st.loc, template_error(s.m, r));
+    return;
+  }
+  if (w.css)
+    return error(s, st, w.surface_word ? w.surface_word->loc : st.loc,
+                 fmt::format("a live tool turns at a speed in RPM: a surface speed for milling "
+                             "tool {} is not supported",
+                             s.tool.number));
+  if (!w.value && w.on && sp.value > 0) w.value = sp.value;
+  if (!w.value) return error(s, st, st.loc, "SPINDL/ needs a speed for the live tool");
+  if (!(*w.value > 0))
+    return error(s, st, w.value_loc,
+                 fmt::format("spindle speed must be positive, got {}", *w.value));
+  if (!speed_written(s, st, w)) return;
+  if (s.m.live_max_rpm > 0 && *w.value > s.m.live_max_rpm)
+    return error(s, st, w.value_loc,
+                 fmt::format("live tool speed {} rpm exceeds the machine's maximum {} rpm "
+                             "(millturn.live_max_rpm)",
+                             *w.value, s.m.live_max_rpm));
+  if (w.dir) sp.dir = *w.dir;
+  sp.value = *w.value, sp.on = true;
+  TemplateFill<tmpl::kLiveSpindleRpm> v;
+  v.text<"rpm">(s.prog.num("S", sp.value))
+      .text<"direction">(
+          s.m.code(sp.dir == SpindleDir::kCw ? "live_spindle_cw" : "live_spindle_ccw"));
+  if (TemplateWrite r = s.prog.write_template(v); !r) error(s, st, st.loc, template_error(s.m, r));
+}
+
 // Turns the spindle on at the speed of `w` (the earlier speed for SPINDL/ON).
 void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
   SpindleState& sp = s.spindle;
@@ -98,16 +150,7 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
     return;
   }
   if (w.dir) sp.dir = *w.dir;
-  // A speed the S format rounds to nothing would be written as S0: a turning spindle that
-  // stands still on the machine (CATIA writes its tools' SPINDL/0.398,RPM defaults).
-  const NumberFormat& f = s.m.format_for("S");
-  if (std::llround(*w.value * f.scale * std::pow(10.0, f.decimals)) == 0) {
-    error(s, st, w.value_loc,
-          fmt::format("spindle speed {} would be written as S{} (formats.S: {} decimals): the "
-                      "spindle would not turn",
-                      *w.value, s.prog.num("S", *w.value), f.decimals));
-    return;
-  }
+  if (!speed_written(s, st, w)) return;
   if (!w.css && s.m.max_rpm > 0 && *w.value > s.m.max_rpm) {
     error(s, st, w.value_loc,
           fmt::format("spindle speed {} rpm exceeds the machine's maximum {} rpm", *w.value,
@@ -118,6 +161,7 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
   sp.value = *w.value;
   sp.on = true;
   s.spindle_line = st.loc.line;
+  release_c(s);  // the C axis is the main spindle again before it turns
   if (!w.css) {
     if (TemplateWrite r = s.prog.spindle_rpm(*w.value, sp.dir); !r)
       error(s, st, st.loc, template_error(s.m, r));
@@ -205,7 +249,8 @@ void restate_spindle(PostState& s, const Statement& st) {
 }
 
 void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_text) {
-  if (!s.spindle_stopped) return;
+  if (!s.spindle_stopped || s.tool.mills()) return;  // it stays stopped while a tool mills
+  release_c(s);
   s.spindle_stopped = false;
   if (s.before_skip) s.spindle_in_skip = true;  // a skipped block: stated again after the range
   restate_spindle(s, loc, line_text);
@@ -218,6 +263,7 @@ void restart_stopped_spindle(PostState& s, const Statement& st) {
 void spindl_stmt(PostState& s, const Statement& st) {
   SpindleWords w;
   if (!read_spindle_words(s, st, w)) return;
+  if (s.tool.mills()) return live_spindl(s, st, w);
   s.spindle_stopped = false;  // this statement says what the spindle does
   if (s.before_skip) s.spindle_in_skip = true;
   surface_speed_unit(s, st, w);

@@ -59,7 +59,6 @@ constexpr StatementEntry kEntries[] = {
     {"NURBS", spline_stmt},
     {"KNOT", spline_stmt},
     // Records that carry nothing a lathe program needs: understood and skipped, noted once.
-    {"TLDATA", skipped_stmt},
     {"MSYS", skipped_stmt},
     {"PAINT", skipped_stmt},
     {"END-OF-PATH", skipped_stmt},
@@ -86,6 +85,16 @@ constexpr StatementEntry kEntries[] = {
     {"REWIND", skipped_stmt},
     // APT's comment statement; NCL's APT source and binary clfile begin with one.
     {"REMARK", skipped_stmt},
+    // Mill-turn (millturn.cc)
+    {"TDATA", tdata_stmt},
+    {"TLDATA", tdata_stmt},
+    {"APPLY", apply_stmt},
+    {"SET", apply_stmt},
+    {"MODE", apply_stmt},
+    {"ROTABL", rotabl_stmt},
+    {"ROTATE", rotabl_stmt},
+    {"SYNC", sync_stmt},
+    {"CHANNEL", channel_stmt},
     // Text (text_words.cc)
     {"PARTNO", partno_stmt},
     {"PPRINT", pprint_stmt},

@@ -92,6 +92,13 @@ bool is_hole_cycle(std::string_view word);
 void hole_cycle_stmt(PostState& s, const Statement& st);
 void hole_goto(PostState& s, const Statement& st, Point3 p);
 
+// Mill-turn (millturn.cc): TDATA/TLDATA, APPLY/SET/MODE, ROTABL/ROTATE, SYNC.
+void tdata_stmt(PostState& s, const Statement& st);
+void apply_stmt(PostState& s, const Statement& st);
+void rotabl_stmt(PostState& s, const Statement& st);
+void sync_stmt(PostState& s, const Statement& st);
+void channel_stmt(PostState& s, const Statement& st);
+
 // A statement no handler knows: a warning and an NC comment, or an error with --strict.
 void unknown_stmt(PostState& s, const Statement& st);
 // A statement the reader could not read (Statement::problem) or with words before its major word

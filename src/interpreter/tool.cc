@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 #include "machine/template_values.h"
 
@@ -52,10 +53,18 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
     offset_loc = o.loc;
   }
   if (!offset_written(s, st, static_cast<int>(tool), offset, offset_loc)) return;
+  SourceLoc kind_at;
+  const std::optional<ToolKindWord> kind = loadtl_kind(s, st, first, kind_at);
   ensure_started(s);
+  if (!millturn_tool_change(s, st, static_cast<int>(tool), kind, kind_at)) {
+    s.tool = ToolInfo{};  // its SPINDL and motions are not posted: the error says why
+    s.tool.number = static_cast<int>(tool), s.tool.kind = kind;
+    return;
+  }
   // The tool data written before this change (CATIA: TOOLNO, TPRINT, PPRINT TOOL:) describe it.
   s.tool = std::move(s.next_tool);
   s.next_tool = ToolInfo{};
+  s.tool.kind = kind;
   s.prog.writer().number_next();
   tool_change_position(s, st);
   s.tool.number = static_cast<int>(tool);
@@ -67,6 +76,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   // A tool change leaves the spindle as the CL left it (docs/cl-meaning.md).
   if (s.m.control && s.m.control->tool_change_stops_spindle && s.spindle.on)
     s.spindle_stopped = true;
+  millturn_after_tool_change(s, st);
 }
 
 }  // namespace

@@ -41,6 +41,8 @@ enum class ThreadLoop : uint8_t { kG33, kG92 };
 // kAuto (cl.radial_axis only): the radial axis is found from the program (the one of the two
 // non-axial axes that is not constantly 0).
 enum class ClAxis : uint8_t { kX, kY, kZ, kAuto };
+// How a control moves its C axis to an absolute C word (millturn.c_rotation).
+enum class CRotation : uint8_t { kRollover, kContinuous };
 
 // A length a machine file gives as a number, or as `auto`: clpost works it out.
 struct LengthOrAuto {
@@ -126,6 +128,18 @@ struct Machine : ControlSettings {
   bool modal_words = true;                           // suppress unchanged X/Z/F/S words
   int program_number = 1;
   std::string block_delete = "/";  // starts a block the operator may skip (OPSKIP)
+
+  // Mill-turn (docs/millturn.md): what the lathe has besides X and Z. The codes and templates
+  // that drive them are machine data too (codes.live_spindle_cw …, templates.live_spindle_rpm …).
+  bool live_tools = false;      // driven (milling) tools: a milling tool is an error without them
+  bool c_axis = false;          // the main spindle positions as a C axis (ROTABL/…,CAXIS)
+  bool y_axis = false;          // a Y axis on the turret
+  double live_max_rpm = 0;      // the live spindle's speed limit (0: none)
+  std::string c_address = "C";  // the C axis word
+  // How the control takes an absolute C word: kRollover, an angle 0 <= C < 360 that it reaches
+  // the shortest way; kContinuous, a continuous angle (C360 is one turn more than C0).
+  CRotation c_rotation = CRotation::kRollover;
+  bool c_clw_increasing = false;  // a CLW turn (ROTABL/…,CLW) increases C (else decreases it)
 
   // Cycle time (0: not known)
   double rapid_x = 0;           // per minute along X (as a radius), output units

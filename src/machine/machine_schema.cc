@@ -29,9 +29,11 @@ constexpr auto kCycles = [] {
   for (size_t i = 0; i < c.size(); ++i) c[i] = Choice{kShippedCycles[i]};
   return c;
 }();
-constexpr Choice kLoops[] = {{"g33"}, {"g92"}};           // ThreadLoop order
-constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};  // false, true
-constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};  // false, true
+constexpr Choice kLoops[] = {{"g33"}, {"g92"}};                   // ThreadLoop order
+constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};          // false, true
+constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};          // false, true
+constexpr Choice kCRotations[] = {{"rollover"}, {"continuous"}};  // CRotation order
+constexpr Choice kClwTurns[] = {{"decreasing"}, {"increasing"}};  // false, true
 
 constexpr const char* kId = "Identity";
 constexpr const char* kCl = "CL frame";
@@ -41,6 +43,7 @@ constexpr const char* kThr = "Threading";
 constexpr const char* kFacts = "Control facts";
 constexpr const char* kHoles = "Holes";
 constexpr const char* kTime = "Cycle time";
+constexpr const char* kMillTurn = "Mill-turn";
 
 // Every key of a post or machine file (sections in docs order).
 // The keys before the controls' own.
@@ -197,6 +200,29 @@ constexpr KeySpec kLaterKeys[] = {
     {"holes.tap_turns_cw", kHoles, kBool, &M::tap_turns_cw,
      "the tap cycle turns the spindle clockwise itself (Haas G84): a left-hand tap (SPINDL/…,CCLW) "
      "is then written as moves"},
+    {"millturn.live_tools", kMillTurn, kBool, &M::live_tools,
+     "the turret has driven (live) tools: a milling tool (LOADTL/…,MILL, TDATA/MILL, …) turns "
+     "them through templates live_spindle_rpm and live_spindle_stop; without them a milling tool "
+     "is an error at its LOADTL (docs/millturn.md)"},
+    {"millturn.c_axis", kMillTurn, kBool, &M::c_axis,
+     "the main spindle positions as a C axis: ROTABL/a,…,CAXIS writes template c_index between "
+     "codes c_engage/c_unclamp and c_clamp; without it such a ROTABL is an error"},
+    {"millturn.y_axis", kMillTurn, kBool, &M::y_axis,
+     "the turret has a Y axis (milling motion in Y is not written yet: docs/millturn.md)"},
+    {"millturn.live_max_rpm", kMillTurn, kNumber, &M::live_max_rpm,
+     "the live tool's speed limit: a milling tool's SPINDL above it is an error (0: none)", 0, 1e6},
+    {"millturn.c_address", kMillTurn, kString, &M::c_address,
+     "the C axis word (`C`): template c_index's {address}"},
+    {"millturn.c_rotation", kMillTurn, kChoice, &M::c_rotation,
+     "how the control takes an absolute C word: `rollover`, an angle 0 <= C < 360 reached the "
+     "shortest way (a turn the CL gives the other way, or of 180 degrees or more, is written as "
+     "steps under 180 degrees); `continuous`, a continuous angle (C370 is C10 one turn on), "
+     "written as the last C plus the turn",
+     0, 0, kCRotations},
+    {"millturn.c_clw", kMillTurn, kChoice, &M::c_clw_increasing,
+     "what a CLW turn (ROTABL/…,CLW) does to C: `decreasing` (clockwise seen from +Z, the "
+     "right-hand rule about +Z; inferred, as no CAM source states it) or `increasing`",
+     0, 0, kClwTurns},
     {"time.rapid_x", kTime, kNumber, &M::rapid_x,
      "rapid rate along X (as a radius), per minute, output units; 0: rapids are not timed", 0, 1e7},
     {"time.rapid_z", kTime, kNumber, &M::rapid_z,
@@ -250,6 +276,12 @@ constexpr NameSpec kEarlierCodes[] = {
 
 // The codes after the controls' own.
 constexpr NameSpec kLaterCodes[] = {
+    {"live_spindle_cw", "live tool clockwise (Haas M133): live_spindle_rpm's {direction}"},
+    {"live_spindle_ccw", "live tool counter-clockwise (Haas M134)"},
+    {"c_engage", "the main spindle becomes the C axis (Haas M154), before C first moves"},
+    {"c_disengage", "the C axis becomes the main spindle again (Haas M155), before it turns"},
+    {"c_clamp", "C axis brake on (Haas M14), after C is positioned"},
+    {"c_unclamp", "C axis brake off (Haas M15), before C moves"},
     {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
     {"clamp_off", "CLAMP/OFF"},
 };
@@ -270,7 +302,6 @@ const NameSpec kFormats[] = {
     {"U", "HEIDENHAIN G31 thread depth"},
     {"A", "HEIDENHAIN G31 infeed angle"},
     {"B", "HEIDENHAIN G31 run-in"},
-    {"C", "HEIDENHAIN G31 start angle"},
     {"P", "HEIDENHAIN G31 run-out"},
     {"dwell", "the dwell template's {seconds} and {revolutions}"},
     {"thread_angle", "G92 / Haas G76 Q start angle (Fanuc: 0.001 degree, decimals 0, scale 1000)"},
@@ -283,6 +314,7 @@ const NameSpec kFormats[] = {
     {"cycle99_depth", "CYCLE99 APP, ROP, TDEP, FAL, VRT"},
     {"cycle99_angle", "CYCLE99 IANG, NSP"},
     {"cycle99_lead", "CYCLE99 PIT"},
+    {"C", "HEIDENHAIN G31 start angle; the C axis angle (template c_index), degrees"},
     {"hole_peck", "peck depth of the hole templates (Fanuc Q: 0.001 mm, decimals 0, scale 1000)"},
 };
 
@@ -307,11 +339,12 @@ constexpr const TemplateSpec* kCommonTemplates[] = {
     &tmpl::kProgramStart, &tmpl::kProgramEnd,  &tmpl::kToolChange, &tmpl::kSpindleRpm,
     &tmpl::kSpindleCss,   &tmpl::kSpindleStop, &tmpl::kDwell};
 constexpr const TemplateSpec* kLaterTemplates[] = {
-    &tmpl::kHoleDrill,     &tmpl::kHoleDwell, &tmpl::kHolePeck,
-    &tmpl::kHoleChipBreak, &tmpl::kHoleTap,   &tmpl::kHoleTapRigid,
-    &tmpl::kHoleBore,      &tmpl::kHome,      &tmpl::kToolChangePosition,
-    &tmpl::kAuxfun,        &tmpl::kPrefun,    &tmpl::kSelctl,
-    &tmpl::kProgramHeader};
+    &tmpl::kHoleDrill,     &tmpl::kHoleDwell,      &tmpl::kHolePeck,
+    &tmpl::kHoleChipBreak, &tmpl::kHoleTap,        &tmpl::kHoleTapRigid,
+    &tmpl::kHoleBore,      &tmpl::kHome,           &tmpl::kToolChangePosition,
+    &tmpl::kAuxfun,        &tmpl::kPrefun,         &tmpl::kSelctl,
+    &tmpl::kProgramHeader, &tmpl::kLiveSpindleRpm, &tmpl::kLiveSpindleStop,
+    &tmpl::kCIndex};
 constexpr auto kTemplates = join(kCommonTemplates, tmpl::kControlTemplates, kLaterTemplates);
 
 template <typename T, typename N>

@@ -29,7 +29,7 @@ using MachineMember =
     std::variant<std::string Machine::*, bool Machine::*, double Machine::*, int Machine::*,
                  std::vector<std::string> Machine::*, ThreadStrategy Machine::*,
                  ThreadFallback Machine::*, const Control * Machine::*, ThreadLoop Machine::*,
-                 ClAxis Machine::*, LengthOrAuto Machine::*>;
+                 ClAxis Machine::*, LengthOrAuto Machine::*, CRotation Machine::*>;
 using FormatMember =
     std::variant<int NumberFormat::*, bool NumberFormat::*, double NumberFormat::*>;
 
@@ -143,6 +143,12 @@ inline constexpr TemplateField kHoleFields[] = {
     {"lead", kText, "tap lead per revolution, format F"},
     {"rpm", kText, "spindle speed, format S"}};
 
+inline constexpr TemplateField kLiveSpindleFields[] = {
+    {"rpm", kText, "live tool speed, format S"},
+    {"direction", kText, "codes.live_spindle_cw or live_spindle_ccw"}};
+inline constexpr TemplateField kCIndexFields[] = {{"c", kText, "C angle, degrees, format C"},
+                                                  {"address", kText, "millturn.c_address"}};
+
 inline constexpr TemplateField kHeaderFields[] = {
     {"text", kText, "one line of the tool list or the cycle time, as comment text"}};
 inline constexpr TemplateField kCodeFields[] = {
@@ -226,6 +232,30 @@ inline constexpr TemplateSpec kHoleBore{
     {},
     {},
     "CYCLE/BORE, REAM"};
+
+inline constexpr TemplateSpec kLiveSpindleRpm{
+    "live_spindle_rpm",
+    kLiveSpindleFields,
+    kSetting,
+    "the live (driven) tool's speed and direction (`M133 P{rpm}`, LinuxCNC `{direction} $1 "
+    "S{rpm}`): SPINDL/n,RPM while a milling tool is loaded",
+    "millturn.live_tools",
+    "true",
+    "SPINDL/ after a milling tool's LOADTL"};
+inline constexpr TemplateSpec kLiveSpindleStop{"live_spindle_stop",
+                                               {},
+                                               kSetting,
+                                               "the live tool stops (`M135`, LinuxCNC `M5 $1`)",
+                                               "millturn.live_tools",
+                                               "true",
+                                               "SPINDL/OFF with a milling tool; a tool change"};
+inline constexpr TemplateSpec kCIndex{"c_index",
+                                      kCIndexFields,
+                                      kSetting,
+                                      "positions the C axis (`G0 {address}{c}`)",
+                                      "millturn.c_axis",
+                                      "true",
+                                      "ROTABL/a,…,CAXIS, ROTATE/CAXIS,…"};
 
 inline constexpr TemplateSpec kProgramHeader{
     "program_header",

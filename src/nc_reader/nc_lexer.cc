@@ -74,6 +74,9 @@ struct Lexer {
   bool word() {
     const size_t start = i;
     size_t j = i;
+    // LinuxCNC's spindle number `$1` (M3 $1 S2000: the live tool, docs/millturn.md) is a word
+    // of address '$'.
+    if (s[j] == '$') ++j;
     while (j < s.size() && is_letter(s[j])) ++j;
     // A call: an identifier of two letters or more, then letters or digits, then '(' at once
     // ("CYCLE99(" — "X1 (" and "X1(" are a word and a comment).
@@ -98,7 +101,8 @@ struct Lexer {
     if (n < s.size() && (s[n] == '+' || s[n] == '-')) ++n;
     while (n < s.size() && (is_digit(s[n]) || s[n] == '.')) ++n;
     if (n == i) {
-      if (w.address.back() == '=') return fail(start, fmt::format("'{}' has no value", w.address));
+      if (w.address.back() == '=' || w.address == "$")
+        return fail(start, fmt::format("'{}' has no value", w.address));
       b.words.push_back(std::move(w));  // a bare word: DIAMON, MACHINING, END
       return true;
     }
@@ -171,7 +175,7 @@ struct Lexer {
       } else if (c == ';') {
         b.comments.emplace_back(trim(s.substr(i + 1), kCr));
         return true;
-      } else if (is_letter(c)) {
+      } else if (is_letter(c) || c == '$') {
         if (!word()) return false;
       } else {
         return fail(i, fmt::format("unexpected '{}'", c));

@@ -29,6 +29,16 @@ std::string lex_error(std::string_view line, const NcSyntax& s) {
   return std::to_string(e.col) + ": " + e.message;
 }
 
+// LinuxCNC's spindle number (M3 $1 S2000: the live tool of linuxcnc-lathe-c) is a word.
+TEST(NcLexer, LinuxcncSpindleNumber) {
+  NcBlock b = lex("M3 $1 S2000", fanuc());
+  ASSERT_EQ(b.words.size(), 3u);
+  EXPECT_EQ(b.words[1].address, "$");
+  EXPECT_EQ(b.words[1].value, 1);
+  EXPECT_EQ(b.words[1].col, 4u);
+  EXPECT_EQ(lex_error("M5 $", fanuc()), "4: '$' has no value");
+}
+
 TEST(NcLexer, WordsAfterTheBlockNumber) {
   NcBlock b = lex("N200 G76 X14.16 Z-20. P920 Q376 F1.5", fanuc());
   ASSERT_EQ(b.words.size(), 6u);

@@ -43,7 +43,7 @@ expect() {
   fi
 }
 
-machines="fanuc-0i-t generic-lathe haas-st heidenhain-pilot linuxcnc-lathe nct-2000t sinumerik-840d"
+machines="fanuc-0i-t fanuc-0i-tf-live generic-lathe haas-st haas-st-20y heidenhain-pilot linuxcnc-lathe linuxcnc-lathe-c nct-2000t sinumerik-840d"
 files="cl-files lathe5.yaml notes.txt out part.cl part.nc"
 
 # Subcommands and inputs.
@@ -77,9 +77,9 @@ expect "clpost -m plot --s|" "--set --sheet --sheets --strict"
 expect "clpost -m fanuc-0i-t plot --t|" "--thread"
 # Machine names (from `clpost machines`), machine files and folders.
 expect "clpost -m |" "$machines lathe5.yaml cl-files out"
-expect "clpost --machine h|" "haas-st heidenhain-pilot"
-expect "clpost verify -m lin|" "linuxcnc-lathe"
-expect "clpost -m l|" "linuxcnc-lathe lathe5.yaml"
+expect "clpost --machine h|" "haas-st haas-st-20y heidenhain-pilot"
+expect "clpost verify -m lin|" "linuxcnc-lathe linuxcnc-lathe-c"
+expect "clpost -m l|" "linuxcnc-lathe linuxcnc-lathe-c lathe5.yaml"
 expect "clpost --machine=n|" "nct-2000t"
 expect "clpost plot --machine=|" "$machines lathe5.yaml cl-files out"
 # Other option values.

@@ -15,6 +15,10 @@ constexpr FixedCode kLinuxcncCodes[] = {
     {"thread", "G33", "is a spindle-synchronized move"},
     {"feed_per_min", "G94", "is feed per minute"},
     {"feed_per_rev", "G95", "is feed per revolution"},
+    // M-codes page, M3/M4/M5 with `$n`, the spindle number (docs/millturn.md): the live tool is
+    // a spindle like the main one, addressed by the live_spindle_rpm template's `$1`.
+    {"live_spindle_cw", "M3", "starts a spindle clockwise (the live tool's with `$1`)"},
+    {"live_spindle_ccw", "M4", "starts a spindle counter-clockwise (the live tool's with `$1`)"},
 };
 
 }  // namespace

@@ -1,0 +1,282 @@
+// Mill-turn (docs/millturn.md): which tools mill (LOADTL/…,MILL, TDATA/MILL, TLDATA/MILL,
+// TOOLNO/…,MILL, APPLY/MILL, SET/MODE,MILL, MODE/MILL), what a tool change does to the main
+// spindle, the live tool and the C axis, and C positioning (ROTABL/…,CAXIS, ROTATE/CAXIS,…).
+// Every code comes from the machine file (millturn.*, codes.c_engage …, templates.c_index …).
+#include "interpreter/millturn.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter/statement_table.h"
+#include "machine/template_values.h"
+
+namespace clpost {
+
+namespace {
+
+// The kind word `a` (MILL, TURN, LATHE) as a ToolKind, or none.
+std::optional<ToolKind> kind_word(const Arg& a) {
+  if (a.is("MILL")) return ToolKind::kMill;
+  if (a.is("TURN") || a.is("LATHE")) return ToolKind::kTurn;
+  return std::nullopt;
+}
+
+ToolKindWord said(const Statement& st, ToolKind k, std::string_view how) {
+  return ToolKindWord{k, fmt::format("{}/{}", st.major, how), st.loc.line};
+}
+
+// A bare code block (codes.c_engage …); nothing when the machine has no such code.
+void code_block(PostState& s, const std::string& key) {
+  const std::string& code = s.m.code(key);
+  if (!code.empty()) s.prog.writer().code(code).end_block();
+}
+
+// The live tool stops (template live_spindle_stop) when it turns.
+void stop_live(PostState& s, const Statement& st) {
+  if (!s.live.on) return;
+  s.live.on = false;
+  if (TemplateWrite r = s.prog.write_template(TemplateFill<tmpl::kLiveSpindleStop>()); !r)
+    error(s, st, st.loc, template_error(s.m, r));
+}
+
+// The main spindle stops for milling or C positioning: written when the CL left it turning.
+void hold_main_spindle(PostState& s, const Statement& st) {
+  if (!s.spindle.on || s.spindle_stopped) return;
+  s.spindle_stopped = true;  // turns again, as the CL left it, before the next turning motion
+  if (TemplateWrite r = s.prog.spindle_stop(); !r) error(s, st, st.loc, template_error(s.m, r));
+}
+
+// The main spindle becomes the C axis (once, until it turns again).
+void engage_c(PostState& s, const Statement& st) {
+  if (!s.m.c_axis || s.c.engaged) return;
+  hold_main_spindle(s, st);
+  code_block(s, "c_engage");
+  s.c.engaged = true;
+  s.c.clamped = false;
+  s.c.angle.reset();
+}
+
+}  // namespace
+
+std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st, size_t first,
+                                        SourceLoc& at) {
+  at = st.loc;
+  for (size_t i = first + 1; i < st.args.size(); ++i) {
+    if (auto k = kind_word(st.args[i])) {
+      at = st.args[i].loc;
+      return said(st, *k, fmt::format("…,{}", st.args[i].text));
+    }
+  }
+  if (s.next_tool.kind) return s.next_tool.kind;
+  return s.cl_mode;
+}
+
+bool millturn_tool_change(PostState& s, const Statement& st, int tool,
+                          const std::optional<ToolKindWord>& kind, SourceLoc at) {
+  const bool mills = kind && kind->kind == ToolKind::kMill;
+  s.mill_motion_reported = false;
+  if (mills && !s.m.live_tools) {
+    const std::string where = kind->line == st.loc.line
+                                  ? std::string("LOADTL's MILL word")
+                                  : fmt::format("{} at line {}", kind->said, kind->line);
+    error(s, st, at,
+          fmt::format("tool {} is a milling (live) tool ({}), but machine '{}' has no live tools "
+                      "(millturn.live_tools: false): its SPINDL would turn the main spindle, "
+                      "with the part, at the live tool's speed",
+                      tool, where, s.m.name));
+    s.mill_motion_reported = true;  // its motions are not reported again
+    return false;
+  }
+  if (s.tool.mills()) stop_live(s, st);
+  if (mills) hold_main_spindle(s, st);
+  return true;
+}
+
+void millturn_after_tool_change(PostState& s, const Statement& st) {
+  if (s.tool.mills()) engage_c(s, st);
+}
+
+void release_c(PostState& s) {
+  if (!s.c.engaged) return;
+  if (s.c.clamped) code_block(s, "c_unclamp");
+  code_block(s, "c_disengage");
+  s.c = CAxisState{};
+}
+
+bool milling_motion_refused(PostState& s, const Statement& st) {
+  if (!s.tool.mills()) return false;
+  if (!s.mill_motion_reported) {
+    s.mill_motion_reported = true;
+    error(
+        s, st, st.loc,
+        fmt::format("milling motion with live tool {} (loaded at line {}) is not supported yet: "
+                    "clpost writes no XZC, Y or hole motion for a milling tool (docs/millturn.md)",
+                    s.tool.number, s.tool_line));
+  }
+  return true;
+}
+
+// TDATA/MILL|TURN,… (CATIA) and TLDATA/MILL|TURN,… (NX): the kind of the tool the next tool
+// change loads; the rest of the record is tool geometry clpost does not need.
+void tdata_stmt(PostState& s, const Statement& st) {
+  if (!st.args.empty())
+    if (auto k = kind_word(st.args[0])) s.next_tool.kind = said(st, *k, st.args[0].text);
+  skipped_stmt(s, st);
+}
+
+// APPLY/MILL|TURN (ICAM, Fusion, NX-to-APT), SET/MODE,MILL|TURN, MODE/MILL|LATHE (NCL): the
+// kind of the tools loaded from here on whose own records do not say.
+void apply_stmt(PostState& s, const Statement& st) {
+  const size_t i = st.major == "SET" && !st.args.empty() && st.args[0].is("MODE") ? 1 : 0;
+  if (st.major == "SET" && i == 0) return unknown_stmt(s, st);
+  const std::optional<ToolKind> k = i < st.args.size() ? kind_word(st.args[i]) : std::nullopt;
+  if (!k) return unknown_stmt(s, st);
+  s.cl_mode = said(st, *k, i ? fmt::format("MODE,{}", st.args[i].text) : st.args[i].text);
+}
+
+}  // namespace clpost
+
+namespace clpost {
+
+namespace {
+
+// ROTABL/ or ROTATE/ as read: the words in any order.
+struct RotaryWords {
+  std::optional<double> angle;
+  SourceLoc angle_loc;
+  bool incremental = false;
+  std::optional<int> sign;    // +1 increasing C, -1 decreasing (CLW, CCLW), none: shortest
+  const Arg* axis = nullptr;  // CAXIS, AAXIS, BAXIS
+};
+
+bool read_rotary_words(PostState& s, const Statement& st, RotaryWords& w) {
+  const int clw = s.m.c_clw_increasing ? 1 : -1;
+  for (const Arg& a : st.args) {
+    if (a.is_number()) {
+      if (w.angle) {
+        error(s, st, a.loc,
+              fmt::format("{}/ takes one angle; found a second number '{}'", st.major, a.text));
+        return false;
+      }
+      if (!in_range(s, st, a, "a rotary angle")) return false;
+      w.angle = a.number, w.angle_loc = a.loc;
+    } else if (a.is("CAXIS") || a.is("AAXIS") || a.is("BAXIS")) {
+      w.axis = &a;
+    } else if (a.is("CLW") || a.is("CCLW")) {
+      w.sign = a.is("CLW") ? clw : -clw;
+    } else if (a.is("INCR")) {
+      w.incremental = true;
+    } else if (!(a.is("TABLE") || a.is("ATANGL") || a.is("ABSOL") || a.text.empty())) {
+      error(s, st, a.loc,
+            unknown_word(st, a, st.major, "an angle and CAXIS, TABLE, ATANGL, INCR, CLW, CCLW"));
+      return false;
+    }
+  }
+  if (w.angle) return true;
+  error(s, st, st.loc, fmt::format("{}/ needs an angle", st.major));
+  return false;
+}
+
+// `a` in 0 <= a < 360, to a millionth of a degree (so that 359.9999999 is written as 0).
+double in_one_turn(double a) {
+  double r = std::fmod(a, 360.0);
+  if (r < 0) r += 360;
+  r = std::round(r * 1e6) / 1e6;
+  return r >= 360 ? 0 : r;
+}
+
+}  // namespace
+
+std::vector<double> c_steps(const Machine& m, std::optional<double> from, double angle,
+                            bool incremental, std::optional<int> sign) {
+  const bool rollover = m.c_rotation == CRotation::kRollover;
+  if (!from) return {rollover ? in_one_turn(angle) : angle};
+  double d = 0;
+  if (incremental) {
+    d = sign ? *sign * std::abs(angle) : angle;
+  } else {
+    const double r = in_one_turn(angle - *from);
+    if (r != 0) d = sign ? (*sign > 0 ? r : r - 360) : (r <= 180 ? r : r - 360);
+  }
+  if (!(std::abs(d) > 1e-9)) return {};
+  if (!rollover) return {*from + d};
+  // A rollover control goes the shortest way: a turn of 180 degrees or more, or one the CL
+  // gives the other way, is written as equal steps under 180 degrees.
+  const int n = std::abs(d) < 180 ? 1 : static_cast<int>(std::floor(std::abs(d) / 180)) + 1;
+  std::vector<double> steps;
+  for (int k = 1; k <= n; ++k) steps.push_back(in_one_turn(*from + d * k / n));
+  return steps;
+}
+
+// ROTABL/a[,CAXIS][,TABLE][,CLW|CCLW][,INCR] (CATIA, ICAM) and ROTATE/CAXIS,ATANGL|INCR,a,CLW
+// (NX-to-APT): positions the C axis. Without an axis word on a machine without C it is the
+// comment it always was.
+void rotabl_stmt(PostState& s, const Statement& st) {
+  RotaryWords w;
+  const bool names_axis = std::any_of(st.args.begin(), st.args.end(), [](const Arg& a) {
+    return a.is("CAXIS") || a.is("AAXIS") || a.is("BAXIS");
+  });
+  if (!names_axis && !s.m.c_axis) return unknown_stmt(s, st);
+  if (!read_rotary_words(s, st, w)) return;
+  if (w.axis && !w.axis->is("CAXIS"))
+    return error(s, st, w.axis->loc,
+                 fmt::format("{}/…,{}: a lathe's rotary axis is C; machine '{}' has no {} axis",
+                             st.major, w.axis->text, s.m.name, w.axis->text.substr(0, 1)));
+  if (!s.m.c_axis)
+    return error(s, st, w.axis ? w.axis->loc : st.loc,
+                 fmt::format("{}/ positions a C axis, and machine '{}' has none "
+                             "(millturn.c_axis: false)",
+                             st.major, s.m.name));
+  ensure_started(s);
+  engage_c(s, st);
+  if (w.incremental && !s.c.angle)
+    return error(s, st, st.loc,
+                 fmt::format("{}/…,INCR: C's position is not known yet (no ROTABL since the C "
+                             "axis was engaged)",
+                             st.major));
+  const std::vector<double> steps = c_steps(s.m, s.c.angle, *w.angle, w.incremental, w.sign);
+  if (steps.empty()) return;  // C is there: nothing moves, nothing unclamps
+  if (s.c.clamped) code_block(s, "c_unclamp");
+  for (double c : steps) {
+    TemplateFill<tmpl::kCIndex> v;
+    v.text<"c">(s.prog.num("C", c)).text<"address">(s.m.c_address);
+    if (TemplateWrite r = s.prog.write_template(v); !r)
+      return error(s, st, st.loc, template_error(s.m, r));
+  }
+  s.c.angle = steps.back();
+  code_block(s, "c_clamp");
+  s.c.clamped = !s.m.code("c_clamp").empty();
+  s.prog.forget_modal();  // the motion code of c_index may not be the one in force
+}
+
+// SYNC/…: waits between channels of a multi-channel machine (CATIA's Swiss-type programs).
+void sync_stmt(PostState& s, const Statement& st) {
+  warning(s, st, st.loc,
+          fmt::format("{}/ synchronises this program with another channel, and machine '{}' has "
+                      "one channel (no second channel to wait for): written as a comment",
+                      st.major, s.m.name));
+  ensure_started(s);
+  s.prog.comment(st.source);
+}
+
+}  // namespace clpost
+
+namespace clpost {
+
+// CHANNEL,n (CATIA's multi-channel programs, read as CHANNEL/n): which channel this program is
+// for. A comment; channel 2 or more is a warning that names the missing channel.
+void channel_stmt(PostState& s, const Statement& st) {
+  const Arg* n = st.args.empty() || !st.args[0].is_number() ? nullptr : &st.args[0];
+  if (n != nullptr && n->number >= 2)
+    warning(s, st, n->loc,
+            fmt::format("the CL is the program of channel {} of a multi-channel machine, and "
+                        "machine '{}' has one channel (no channel {}): posted as a one-channel "
+                        "program",
+                        n->text, s.m.name, n->text));
+  ensure_started(s);
+  s.prog.comment(st.source);
+}
+
+}  // namespace clpost

@@ -1,0 +1,33 @@
+#pragma once
+// Mill-turn in the interpreter (millturn.cc, docs/millturn.md): milling tools, the live spindle
+// and the C axis around tool changes, spindle starts and motions.
+#include <optional>
+#include <vector>
+
+#include "interpreter/post_state.h"
+
+namespace clpost {
+
+// The kind of the tool LOADTL-like statement `st` loads (its tool number is argument `first`):
+// a MILL or TURN word of its own (`at` set to it), else the tool data before it (TDATA/MILL,
+// TOOLNO/…,MILL), else the CL's mode (APPLY/MILL); none: a turning tool.
+std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st, size_t first,
+                                        SourceLoc& at);
+// Before tool `tool` of `kind` is loaded: the live tool of the one leaving stops, the main
+// spindle stops for a milling tool. False (an error at `at`): a milling tool on a machine
+// without live tools.
+bool millturn_tool_change(PostState& s, const Statement& st, int tool,
+                          const std::optional<ToolKindWord>& kind, SourceLoc at);
+// After the tool change block: a milling tool engages C.
+void millturn_after_tool_change(PostState& s, const Statement& st);
+// Before the main spindle turns: C is unclamped and disengaged.
+void release_c(PostState& s);
+// A motion with a milling tool: true (reported once per tool) — not written yet.
+bool milling_motion_refused(PostState& s, const Statement& st);
+// The C words that take C from `from` (unknown: none) to `angle` (incremental: by `angle`),
+// turning `sign` (+1 increasing, -1 decreasing, none: the shortest way), as machine `m` takes
+// them (millturn.c_rotation); empty when C is there already.
+std::vector<double> c_steps(const Machine& m, std::optional<double> from, double angle,
+                            bool incremental, std::optional<int> sign);
+
+}  // namespace clpost

@@ -1,0 +1,235 @@
+// Mill-turn: milling tools, the live spindle, the C axis (millturn.cc, docs/millturn.md).
+#include <gtest/gtest.h>
+
+#include "interpreter/millturn.h"
+#include "interpreter/post_test_util.h"
+
+namespace clpost {
+namespace {
+
+using test::load;
+using test::post;
+using test::Posted;
+
+// The CATIA mill-turn words of issue #25 (realcam/catia_toussaint writes them so).
+constexpr const char* kCatia =
+    "TDATA/MILL,   38.000000,   38.000000,   38.000000,DIAM,    1.000000\n"
+    "LOADTL/3,ADJUST,1,SPINDL,15000,MILL\n"
+    "SPINDL/3000.0000,RPM,CLW\n"
+    "ROTABL/90.000000,CLW,CAXIS\n"
+    "SPINDL/OFF\n"
+    "LOADTL/1,ADJUST,9,TURN\n"
+    "SPINDL/1000,RPM,CLW\n"
+    "FEDRAT/0.2,MMPR\n"
+    "GOTO/20,0,5\n"
+    "FINI\n";
+
+// A Haas lathe with live tools and C, as --set gives it (Haas codes: reference/millturn.md).
+Machine haas_live() {
+  return load("haas-st",
+              {"millturn.live_tools=true", "millturn.c_axis=true", "millturn.live_max_rpm=4000",
+               "templates.live_spindle_rpm=[\"{direction} P{rpm}\"]",
+               "templates.live_spindle_stop=M135", "templates.c_index=[\"G0 {address}{c}\"]",
+               "codes.live_spindle_cw=M133", "codes.live_spindle_ccw=M134", "codes.c_engage=M154",
+               "codes.c_disengage=M155", "codes.c_clamp=M14", "codes.c_unclamp=M15"});
+}
+
+// The issue's silent bug: on a lathe without live tools the milling tool's SPINDL turned the
+// main spindle, with the part, at the live tool's speed. Now its LOADTL is an error (the MILL
+// word), and its SPINDL (above the lathe's 4000 rpm) is not reported again.
+TEST(MillTurn, MillingToolIsAnErrorAtItsLoadtlWithoutLiveTools) {
+  Posted p = post(kCatia, load("fanuc-0i-t"));
+  EXPECT_EQ(p.errors, 2u) << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:2:32: error: tool 3 is a milling (live) tool (LOADTL's MILL word), "
+                         "but machine 'fanuc-0i-t' has no live tools (millturn.live_tools: "
+                         "false): its SPINDL would turn the main spindle, with the part, at the "
+                         "live tool's speed\n"
+                         "  LOADTL/3,ADJUST,1,SPINDL,15000,MILL\n"
+                         "                                 ^\n"),
+            std::string::npos)
+      << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:4:22: error: ROTABL/ positions a C axis, and machine 'fanuc-0i-t' "
+                         "has none (millturn.c_axis: false)\n"),
+            std::string::npos)
+      << p.diags;
+  EXPECT_EQ(p.diags.find("rpm"), std::string::npos) << p.diags;
+}
+
+// Every way the CL says a tool mills, on a lathe without live tools: the error names it.
+TEST(MillTurn, EveryMillWordMakesAMillingTool) {
+  const Machine m = load("generic-lathe");
+  const std::pair<const char*, const char*> cases[] = {
+      {"TDATA/MILL,10\nLOADTL/3\n", "(TDATA/MILL at line 1)"},
+      {"TLDATA/MILL,10,0,50,0,0\nLOAD/TOOL,3\n", "(TLDATA/MILL at line 1)"},
+      {"TOOLNO/3,MILL,OSETNO,3\nLOADTL/3\n", "(TOOLNO/…,MILL at line 1)"},
+      {"APPLY/MILL\nLOADTL/3\n", "(APPLY/MILL at line 1)"},
+      {"SET/MODE,MILL\nLOADTL/3\n", "(SET/MODE,MILL at line 1)"},
+      {"MODE/MILL,FACE\nLOADTL/3\n", "(MODE/MILL at line 1)"},
+  };
+  for (const auto& [cl, said] : cases) {
+    Posted p = post(cl, m);
+    EXPECT_EQ(p.errors, 1u) << cl << p.diags;
+    EXPECT_NE(p.diags.find(std::string("t.cl:2:1: error: tool 3 is a milling (live) tool ") + said),
+              std::string::npos)
+        << cl << p.diags;
+  }
+  // The tool's own word wins over the mode; TURN tools and other SET/ words are as before.
+  EXPECT_EQ(post("APPLY/MILL\nLOADTL/3,TURN\nFINI\n", m).errors, 0u);
+  EXPECT_EQ(post("APPLY/MILL\nAPPLY/TURN\nLOADTL/3\nFINI\n", m).errors, 0u);
+  Posted set = post("SET/MODE,ABSOL\nFINI\n", m);
+  EXPECT_EQ(set.errors, 0u);
+  EXPECT_NE(set.nc.find("(SET/MODE,ABSOL)"), std::string::npos) << set.nc;
+}
+
+// The issue's words post on linuxcnc-lathe-c: the live tool is spindle 1, C an axis of its own
+// (no engage or clamp code), and the turning tool turns spindle 0. Its live tool's limit is
+// 6000 rpm: the issue's 15000 needs it raised, as the issue raised limits.max_rpm.
+TEST(MillTurn, TheIssuesCatiaWordsPostOnLinuxcncLatheC) {
+  const std::string cl =
+      std::string(kCatia).replace(std::string(kCatia).find("3000.0000"), 9, "15000.0000");
+  Posted p = post(cl, load("linuxcnc-lathe-c", {"millturn.live_max_rpm=15000"}));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nG7 G18 G21 G90 G40 G80\nT3 M6 G43 H1\nM3 $1 S15000\nG0 C90.\nM5 $1\n"
+            "T1 M6 G43 H9\nG97 S1000 M3\nG1 X40. Z5. G95 F0.2\nM2\n%\n");
+  Posted q = post(cl, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(q.errors, 1u) << q.diags;
+  EXPECT_NE(q.diags.find("t.cl:3:8: error: live tool speed 15000 rpm exceeds the machine's "
+                         "maximum 6000 rpm (millturn.live_max_rpm)"),
+            std::string::npos)
+      << q.diags;
+}
+
+// The shipped live-tool machines with their builders' codes (reference/millturn.md section 2):
+// Takisawa on Fanuc M76/M75 engage, M70/M72 live tool, M73/M74 clamp; Haas M154/M155, M133 P,
+// M135, M14/M15.
+TEST(MillTurn, TheIssuesCatiaWordsOnTheShippedLiveMachines) {
+  EXPECT_EQ(post(kCatia, load("fanuc-0i-tf-live")).nc,
+            "%\nO0001\nG18 G21 G40 G97\nT0301\nM76\nM70 S3000\nG0 C90.\nM73\nM72\nT0109\n"
+            "M74\nM75\nG97 S1000 M3\nG1 X40. Z5. G99 F0.2\nM30\n%\n");
+  EXPECT_EQ(post(kCatia, load("haas-st-20y")).nc,
+            "%\nO00001\nG18 G21 G40 G97\nT0301\nM154\nM133 P3000\nG0 C90.\nM14\nM135\n"
+            "T0109\nM15\nM155\nG97 S1000 M3\nG1 X40. Z5. G99 F0.2\nM30\n%\n");
+}
+
+// With live tools: the live spindle's codes, C engaged after the tool change, clamped after it
+// moves; the turning tool's SPINDL unclamps and disengages C first.
+TEST(MillTurn, LiveToolAndCAxisOnAHaas) {
+  Posted p = post(kCatia, haas_live());
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nO00001\nG18 G21 G40 G97\nT0301\nM154\nM133 P3000\nG0 C90.\nM14\nM135\nT0109\n"
+            "M15\nM155\nG97 S1000 M3\nG1 X40. Z5. G99 F0.2\nM30\n%\n");
+}
+
+// The main spindle turning when a milling tool comes is stopped; it turns again as the CL left
+// it when the next turning tool moves. C does not move, unclamp or clamp for the same angle.
+TEST(MillTurn, MainSpindleStopsForMillingAndCMovesOnlyWhenItChanges) {
+  Posted p = post(
+      "SPINDL/500,RPM,CLW\nLOADTL/3,MILL\nSPINDL/2000,RPM,CCLW\nROTABL/30,CAXIS\n"
+      "ROTABL/30,CAXIS\nROTABL/390,CAXIS\nLOADTL/1\nRAPID\nGOTO/20,0,5\nFINI\n",
+      haas_live());
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nO00001\nG18 G21 G40 G97\nG97 S500 M3\nM5\nT0303\nM154\nM134 P2000\nG0 C30.\nM14\n"
+            "M135\nT0101\nM15\nM155\nG97 S500 M3\nG0 X40. Z5.\nM30\n%\n");
+}
+
+TEST(MillTurn, LiveToolLimitsAndMillingMotionAreLocatedErrors) {
+  Posted p = post(
+      "LOADTL/3,MILL\nSPINDL/5000,RPM,CLW\nSPINDL/100,SMM\nGOTO/10,5,0\n"
+      "GOTO/10,6,0\nROTABL/10,BAXIS\nFINI\n",
+      haas_live());
+  EXPECT_EQ(p.errors, 4u) << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:2:8: error: live tool speed 5000 rpm exceeds the machine's maximum "
+                         "4000 rpm (millturn.live_max_rpm)"),
+            std::string::npos)
+      << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:3:12: error: a live tool turns at a speed in RPM: a surface speed "
+                         "for milling tool 3 is not supported"),
+            std::string::npos)
+      << p.diags;
+  // One error for the tool's motions, at the first.
+  EXPECT_NE(p.diags.find("t.cl:4:1: error: milling motion with live tool 3 (loaded at line 1) is "
+                         "not supported yet: clpost writes no XZC, Y or hole motion for a milling "
+                         "tool (docs/millturn.md)"),
+            std::string::npos)
+      << p.diags;
+  EXPECT_NE(p.diags.find("t.cl:6:11: error: ROTABL/…,BAXIS: a lathe's rotary axis is C; machine "
+                         "'haas-st' has no B axis"),
+            std::string::npos)
+      << p.diags;
+}
+
+// C from 0: the CL's direction, else the shortest way. A rollover control (0 <= C < 360)
+// goes the shortest way itself, so a turn the CL gives the other way, or of 180 degrees or
+// more, is written in equal steps under 180 degrees; a continuous C is the last C plus the turn.
+TEST(MillTurn, CStepsTakeTheClsDirectionElseTheShortestWay) {
+  const Machine roll = haas_live();
+  Machine cont = roll;
+  cont.c_rotation = CRotation::kContinuous;
+  using V = std::vector<double>;
+  EXPECT_EQ(c_steps(roll, std::nullopt, -90, false, std::nullopt), V{270});
+  EXPECT_EQ(c_steps(cont, std::nullopt, -90, false, std::nullopt), V{-90});
+  EXPECT_EQ(c_steps(roll, 0.0, 90, false, std::nullopt), V{90});
+  EXPECT_EQ(c_steps(roll, 0.0, 270, false, std::nullopt), V{270});  // -90, the shortest
+  EXPECT_EQ(c_steps(cont, 0.0, 270, false, std::nullopt), V{-90});
+  EXPECT_EQ(c_steps(roll, 0.0, 90, false, -1), (V{225, 90}));  // -270 in two -135 steps
+  EXPECT_EQ(c_steps(cont, 0.0, 90, false, -1), V{-270});
+  EXPECT_EQ(c_steps(roll, 0.0, 180, false, std::nullopt), (V{90, 180}));
+  EXPECT_EQ(c_steps(roll, 350.0, 10, false, std::nullopt), V{10});   // +20 across 0
+  EXPECT_EQ(c_steps(cont, 350.0, 10, false, std::nullopt), V{370});  // a continuous angle
+  EXPECT_EQ(c_steps(roll, 10.0, 370, false, 1), V{});                // there already
+  EXPECT_EQ(c_steps(roll, 10.0, 360, true, 1), (V{130, 250, 10}));   // INCR: one whole turn
+  EXPECT_EQ(c_steps(cont, 10.0, 30, true, -1), V{-20});
+}
+
+// CLW decreases C by default (millturn.c_clw); ROTATE/ (NX) reads as ROTABL/.
+TEST(MillTurn, RotablDirectionsAndRotate) {
+  Machine m = haas_live();
+  Posted p = post(
+      "LOADTL/3,MILL\nROTABL/0,CAXIS\nROTABL/90,CAXIS,CLW\n"
+      "ROTATE/CAXIS,INCR,30,CCLW\nFINI\n",
+      m);
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nO00001\nG18 G21 G40 G97\nT0303\nM154\nG0 C0.\nM14\nM15\nG0 C225.\nG0 C90.\nM14\n"
+            "M15\nG0 C120.\nM14\nM30\n%\n");
+}
+
+// Without a C axis and without an axis word, ROTABL stays the comment it was (CATIA with ICAM
+// writes ROTABL/0,,TABLE,CLW before centre-line drilling on plain lathes).
+TEST(MillTurn, RotablWithoutAxisWordOnAPlainLatheIsAComment) {
+  Posted p = post("ROTABL/0,,TABLE,CLW\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.errors, 0u);
+  EXPECT_NE(p.nc.find("(ROTABL/0,,TABLE,CLW)"), std::string::npos) << p.nc;
+}
+
+TEST(MillTurn, ChannelTwoIsAWarningNamingTheMissingChannel) {
+  Posted p = post("CHANNEL,2\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.errors, 0u);
+  EXPECT_EQ(p.diags,
+            "t.cl:1:9: warning: the CL is the program of channel 2 of a multi-channel machine, and "
+            "machine 'generic-lathe' has one channel (no channel 2): posted as a one-channel "
+            "program\n"
+            "  CHANNEL,2\n"
+            "          ^\n");
+  EXPECT_NE(p.nc.find("(CHANNEL,2)"), std::string::npos) << p.nc;
+  Posted one = post("CHANNEL,1\nCHANNEL,\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(one.diags, "");
+  EXPECT_NE(one.nc.find("(CHANNEL,1)\n(CHANNEL,)"), std::string::npos) << one.nc;
+}
+
+TEST(MillTurn, SyncIsAWarningNamingTheMissingChannel) {
+  Posted p = post("SYNC/2,1,2,1\nFINI\n", load("generic-lathe"));
+  EXPECT_EQ(p.errors, 0u);
+  EXPECT_NE(p.diags.find("t.cl:1:1: warning: SYNC/ synchronises this program with another "
+                         "channel, and machine 'generic-lathe' has one channel (no second channel "
+                         "to wait for): written as a comment"),
+            std::string::npos)
+      << p.diags;
+  EXPECT_NE(p.nc.find("(SYNC/2,1,2,1)"), std::string::npos) << p.nc;
+}
+
+}  // namespace
+}  // namespace clpost
