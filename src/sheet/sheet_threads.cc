@@ -1,7 +1,9 @@
-// One section per thread: the plan as `clpost plan` prints it (same numbers, num_text), the
-// output that wrote it (or the fallback and why), the run-in and run-out, every pass's depth,
-// and its cross-section as `clpost plot` draws it.
+// One section per thread, identical threads once (named together): the plan as `clpost plan`
+// prints it (same numbers, num_text), the output that wrote it (or the fallback and why), the
+// run-in and run-out, every pass's depth, and its cross-section as `clpost plot` draws it.
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "planner/plan_format.h"
 #include "planner/run_in.h"
@@ -83,31 +85,78 @@ std::string passes_table(const ThreadPlan& p) {
   return o + "</tbody>\n</table>\n";
 }
 
-// The plan's cross-sections, each its own inline SVG with ids unique on the page.
-std::string section_figures(const ThreadPlan& p, size_t k) {
+// The plan's cross-sections, each its own inline SVG with ids unique on the page; without their
+// titles (which name the CL line) when `titled` is false, to compare threads.
+std::string section_figures(const ThreadPlan& p, const std::string& ids, bool titled = true) {
   std::string o;
   size_t j = 0;
-  for (const ThreadSection& s : sections_from_plan(p)) {
+  for (ThreadSection& s : sections_from_plan(p)) {
+    if (!titled) s.title.clear();
     const SvgSize size = thread_section_size(s);
     SvgWriter w(size.width, size.height);
-    draw_thread_section(w, s, fmt::format("t{}-{}-", k, ++j));
+    draw_thread_section(w, s, fmt::format("{}{}-", ids, ++j));
     o += "<figure class=\"section\">\n" + inline_svg(w.finish()) + "<figcaption>" + esc(s.title) +
          "</figcaption>\n</figure>\n";
   }
   return o;
 }
 
+// Threads whose sections would read the same (facts, passes, pictures) share one: a file of
+// 3000 identical threads gives one section that names them, not 3000.
+struct ThreadGroup {
+  std::string key;  // the section's text, pictures drawn with a fixed id prefix
+  std::vector<size_t> members;
+};
+
+std::string thread_body(const SheetData& d, const ThreadPlan& p, const std::string& ids,
+                        bool titled = true) {
+  return "<div class=\"side-by-side\">\n" + facts(d, p) + passes_table(p) + "</div>\n" +
+         section_figures(p, ids, titled);
+}
+
+std::vector<ThreadGroup> thread_groups(const SheetData& d) {
+  std::vector<ThreadGroup> groups;
+  for (size_t k = 0; k < d.plans.size(); ++k) {
+    std::string key = thread_body(d, d.plans[k], "same-", false);
+    auto g = std::find_if(groups.begin(), groups.end(),
+                          [&](const ThreadGroup& x) { return x.key == key; });
+    if (g == groups.end())
+      groups.push_back({std::move(key), {k}});
+    else
+      g->members.push_back(k);
+  }
+  return groups;
+}
+
+// "Thread 2 of 5: CL line 53", or for a group "Threads 1, 3, 4 of 5 (3 identical): CL lines 53,
+// 70, 88", the lists cut after kListed with how many more.
+std::string group_heading(const SheetData& d, const std::vector<size_t>& ks) {
+  constexpr size_t kListed = 12;
+  std::string numbers, lines;
+  for (size_t i = 0; i < std::min(ks.size(), kListed); ++i) {
+    numbers += fmt::format("{}{}", i ? ", " : "", ks[i] + 1);
+    lines += fmt::format("{}{}", i ? ", " : "", d.plans[ks[i]].loc.line);
+  }
+  if (ks.size() > kListed) {
+    numbers += fmt::format(" and {} more", ks.size() - kListed);
+    lines += fmt::format(" and {} more", ks.size() - kListed);
+  }
+  if (ks.size() == 1)
+    return fmt::format("Thread {} of {}: CL line {}", numbers, d.plans.size(), lines);
+  return fmt::format("Threads {} of {} ({} identical): CL lines {}", numbers, d.plans.size(),
+                     ks.size(), lines);
+}
+
 }  // namespace
 
 std::string threads_sections(const SheetData& d) {
   std::string o;
-  for (size_t k = 0; k < d.plans.size(); ++k) {
-    const ThreadPlan& p = d.plans[k];
+  for (const ThreadGroup& g : thread_groups(d)) {
+    const size_t k = g.members.front() + 1;
     // No class "thread": the inline backplot's <style> has one, and it would apply here.
-    o += fmt::format("<section class=\"page\" id=\"thread-{}\">\n", k + 1);
-    o += fmt::format("<h2>Thread {} of {}: CL line {}</h2>\n", k + 1, d.plans.size(), p.loc.line);
-    o += "<div class=\"side-by-side\">\n" + facts(d, p) + passes_table(p) + "</div>\n";
-    o += section_figures(p, k + 1);
+    o += fmt::format("<section class=\"page\" id=\"thread-{}\">\n", k);
+    o += "<h2>" + esc(group_heading(d, g.members)) + "</h2>\n";
+    o += thread_body(d, d.plans[g.members.front()], fmt::format("t{}-", k));
     o += "</section>\n";
   }
   return o;
