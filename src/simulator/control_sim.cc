@@ -370,18 +370,70 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
 
 }  // namespace
 
+struct ControlSim::Impl {
+  Impl(const Machine& m, Diagnostics& d, Simulation& out, const SimOptions& o)
+      : options(o), s(m, d, out, options), syntax(nc_syntax(m)), codes(codes_of(m)) {}
+  SimOptions options;
+  State s;
+  NcSyntax syntax;
+  Codes codes;
+  NcBlock block;
+  NcLexError lex_error;
+};
+
+ControlSim::ControlSim(const Machine& m, Diagnostics& diags, Simulation& out,
+                       const SimOptions& options) {
+  out = Simulation{};
+  out.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+  impl_ = std::make_unique<Impl>(m, diags, out, options);
+  impl_->s.diameter = m.diameter_output;
+  out.path.readback = impl_->codes.modal.readback;
+}
+
+ControlSim::~ControlSim() = default;
+
+const StateReadback& ControlSim::readback() const {
+  return impl_->codes.modal.readback;
+}
+
+bool ControlSim::line(uint32_t number, std::string_view text) {
+  State& s = impl_->s;
+  ++s.out.blocks;
+  s.line = number;
+  s.line_text = text;
+  if (!lex_nc_line(s.line_text, number, impl_->syntax, impl_->block, impl_->lex_error)) {
+    s.diags.error(SourceLoc{number, impl_->lex_error.col}, s.line_text, impl_->lex_error.message);
+    s.ok = false;
+  } else {
+    run_block(s, impl_->block, impl_->codes);
+  }
+  if (s.diags.error_count() > 100) {
+    s.diags.error(SourceLoc{number, 1}, {}, "too many errors; verify stopped here");
+    return false;
+  }
+  return true;
+}
+
+void ControlSim::unreadable() {
+  impl_->s.ok = false;
+}
+
+bool ControlSim::finish() {
+  State& s = impl_->s;
+  if (s.pending.set && s.pending.takes_blocks) {
+    s.diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
+                  std::string(impl_->codes.control->unclosed));
+    s.ok = false;
+  }
+  s.out.path.units = s.out.units;
+  return s.ok;
+}
+
 bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
                  const SimOptions& options) {
   using Status = reader::LineSource::Status;
   constexpr size_t kMaxLine = 64 * 1024;
-  out = Simulation{};
-  out.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
-  State s{m, diags, out, options};
-  s.diameter = m.diameter_output;
-  const NcSyntax syntax = nc_syntax(m);
-  const Codes codes = codes_of(m);
-  NcBlock block;
-  NcLexError lex_error;
+  ControlSim sim(m, diags, out, options);
   while (true) {
     src.mark();
     reader::LineSource::Line l;
@@ -399,31 +451,12 @@ bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, 
     if (st == Status::kTooLong) {
       diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
       src.skip_line();
-      s.ok = false;
+      sim.unreadable();
       continue;
     }
-    ++out.blocks;
-    s.line = l.number;
-    s.line_text = src.text(l);
-    if (!lex_nc_line(s.line_text, l.number, syntax, block, lex_error)) {
-      diags.error(SourceLoc{l.number, lex_error.col}, s.line_text, lex_error.message);
-      s.ok = false;
-    } else {
-      run_block(s, block, codes);
-    }
-    if (diags.error_count() > 100) {
-      diags.error(SourceLoc{l.number, 1}, {}, "too many errors; verify stopped here");
-      return false;
-    }
+    if (!sim.line(l.number, src.text(l))) return false;
   }
-  if (s.pending.set && s.pending.takes_blocks) {
-    diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
-                std::string(codes.control->unclosed));
-    s.ok = false;
-  }
-  out.path.units = out.units;
-  out.path.readback = codes.modal.readback;
-  return s.ok;
+  return sim.finish();
 }
 
 }  // namespace clpost

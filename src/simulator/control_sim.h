@@ -4,6 +4,7 @@
 // law (controls/*/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
 // cuts (for `clpost verify`).
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,26 @@ struct SimOptions {
   // position among them, in order, as Move{from == to}): verify of the path while the program
   // is read, with no moves kept.
   std::function<void(const Move&, const CutState&)> on_move;
+};
+
+// The simulation a line at a time, as the program is written (clpost --verify). `out` and
+// `options` must outlive it.
+class ControlSim {
+ public:
+  ControlSim(const Machine& m, Diagnostics& diags, Simulation& out, const SimOptions& options);
+  ~ControlSim();
+  // One line of the program, 1-based, without its line end. False: too many errors, stop.
+  bool line(uint32_t number, std::string_view text);
+  // A line that cannot be read (reported by the caller).
+  void unreadable();
+  // The end of the program: true when it was read without errors.
+  bool finish();
+  // What the program's words let verify compare (the machine's codes and templates).
+  const StateReadback& readback() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control

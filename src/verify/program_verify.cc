@@ -2,11 +2,54 @@
 
 #include <fmt/format.h>
 
-#include "simulator/control_sim.h"
 #include "verify/hole_verify.h"
 #include "verify/verify.h"
 
 namespace clpost {
+
+namespace {
+
+// The program, read: its thread cuts against the plans; with `holes` (the CL's), its holes, then
+// its path by `path()` (its problems come last).
+template <typename Path>
+void compare(const Simulation& sim, const std::vector<ThreadPlan>& plans,
+             const std::vector<Hole>* holes, const Machine& m, const VerifyOptions& vo,
+             const std::string& program_name, Diagnostics& diags, VerifyOutcome& out, Path&& path) {
+  VerifyReport report;
+  out.ok = verify_cuts(plans, sim, m, vo, diags, report);
+  out.report = verify_report_text(report, plans, program_name, m, vo);
+  if (holes != nullptr) {
+    const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
+    const PathReport pr = path();
+    out.ok = out.ok && hr.problems == 0 && pr.problems == 0;
+    out.report += hr.text + pr.text;
+  }
+}
+
+void cannot_read(const std::string& program_name, VerifyOutcome& out) {
+  out.report =
+      fmt::format("verify {}: the program cannot be read (see the errors)\n", program_name);
+}
+
+// The diagnostics into `out`: counted, rendered, the first error for one-line summaries.
+void diagnose(const Diagnostics& diags, const std::string& program_name, VerifyOutcome& out) {
+  out.errors = diags.error_count();
+  out.diagnostics = diags.render_all();
+  for (const Diagnostic& d : diags.kept())
+    if (d.severity == Severity::kError) {
+      out.first_error = fmt::format("{}:{}: {}", program_name, d.loc.line, d.message);
+      break;
+    }
+}
+
+VerifyOptions verify_options(const std::string& plan_name, double tolerance) {
+  VerifyOptions vo;
+  vo.tolerance = tolerance;
+  vo.plan_name = plan_name;
+  return vo;
+}
+
+}  // namespace
 
 VerifyOutcome verify_program(reader::LineSource& src, const std::string& program_name,
                              const std::vector<ThreadPlan>& plans, const ClExpected* cl,
@@ -17,29 +60,76 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
   SimOptions so;
   so.keep_moves = cl != nullptr && !cl->path.motions.empty();
   if (simulate_nc(src, m, diags, sim, so)) {
-    VerifyOptions vo;
-    vo.tolerance = tolerance;
-    vo.plan_name = plan_name;
-    VerifyReport report;
-    out.ok = verify_cuts(plans, sim, m, vo, diags, report);
-    out.report = verify_report_text(report, plans, program_name, m, vo);
-    if (cl != nullptr) {
-      const HoleReport hr = verify_holes(cl->holes, sim.holes, m, vo, diags);
-      const PathReport pr = verify_path(cl->path, sim.path, m, vo, diags);
-      out.ok = out.ok && hr.problems == 0 && pr.problems == 0;
-      out.report += hr.text + pr.text;
-    }
+    const VerifyOptions vo = verify_options(plan_name, tolerance);
+    compare(sim, plans, cl ? &cl->holes : nullptr, m, vo, program_name, diags, out,
+            [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
   } else {
-    out.report =
-        fmt::format("verify {}: the program cannot be read (see the errors)\n", program_name);
+    cannot_read(program_name, out);
   }
-  out.errors = diags.error_count();
-  out.diagnostics = diags.render_all();
-  for (const Diagnostic& d : diags.kept())
-    if (d.severity == Severity::kError) {
-      out.first_error = fmt::format("{}:{}: {}", program_name, d.loc.line, d.message);
-      break;
+  diagnose(diags, program_name, out);
+  return out;
+}
+
+ProgramStream::ProgramStream(const std::string& program_name, const std::string& plan_name,
+                             const Machine& m, double tolerance)
+    : name_(program_name),
+      m_(m),
+      vo_(verify_options(plan_name, tolerance)),
+      diags_(program_name),
+      sim_(m, diags_, out_, options()),
+      path_(m, vo_, sim_.readback(), out_.units, kWindow) {}
+
+ProgramStream::~ProgramStream() = default;
+
+const SimOptions& ProgramStream::options() {
+  so_.keep_moves = false;
+  so_.on_move = [this](const Move& mv, const CutState& state) { path_.program_move(mv, &state); };
+  return so_;
+}
+
+void ProgramStream::program_text(std::string_view text) {
+  // Lines end at "\n", "\r" or "\r\n", as reader::LineSource reads them.
+  while (!text.empty()) {
+    if (after_cr_ && text.front() == '\n') text.remove_prefix(1);
+    after_cr_ = false;
+    const size_t end = text.find_first_of("\r\n");
+    if (end == std::string_view::npos) {
+      partial_.append(text);
+      return;
     }
+    after_cr_ = text[end] == '\r';
+    if (partial_.empty()) {
+      line(text.substr(0, end));
+    } else {
+      partial_.append(text.substr(0, end));
+      line(partial_);
+      partial_.clear();
+    }
+    text.remove_prefix(end + 1);
+  }
+}
+
+void ProgramStream::line(std::string_view text) {
+  ++number_;
+  if (!stopped_) stopped_ = !sim_.line(number_, text);
+}
+
+void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
+  ++motions_;
+  path_.cl_motion(c, &state);
+}
+
+VerifyOutcome ProgramStream::finish(const std::vector<ThreadPlan>& plans,
+                                    const std::vector<Hole>& holes, size_t cl_states) {
+  if (!partial_.empty()) line(partial_);
+  VerifyOutcome out;
+  if (!stopped_ && sim_.finish()) {
+    compare(out_, plans, &holes, m_, vo_, name_, diags_, out,
+            [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
+  } else {
+    cannot_read(name_, out);
+  }
+  diagnose(diags_, name_, out);
   return out;
 }
 
