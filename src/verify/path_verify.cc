@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -68,6 +69,10 @@ struct PathStream::Check {
   // Each kind of state difference (tool, feed, spindle) as last reported, CL and program: a
   // difference is reported once, where it begins.
   std::pair<std::string, std::string> reported[3];
+  // The last states compared (check_state) and whether tool, feed and spindle differ in them.
+  bool compared = false;
+  CutState cl_state, program_state;
+  std::array<bool, 3> differs{};
 
   std::string at(const ClMotion& c) const {
     return fmt::format("{}:{}", options.plan_name, c.line);
@@ -158,8 +163,14 @@ void check_state(Check& k, const PathStream::ClStep& c, size_t j) {
   const CutState& b = mv.state;
   const StateReadback& r = k.readback;
   const LengthUnit u = k.units;
-  const bool differs[3] = {!same_tool(r, a, b), !same_feed(k.m, r, a, b),
-                           !same_spindle(k.m, r, a, b)};
+  // The states change seldom: the comparison of the last pair is kept.
+  if (!k.compared || !(k.cl_state == a) || !(k.program_state == b)) {
+    k.differs = {!same_tool(r, a, b), !same_feed(k.m, r, a, b), !same_spindle(k.m, r, a, b)};
+    k.compared = true;
+    k.cl_state = a;
+    k.program_state = b;
+  }
+  const std::array<bool, 3>& differs = k.differs;
   static constexpr const char* kWhat[3] = {"tool", "feed", "spindle"};
   const bool compared[3] = {true, !c.motion.rapid,
                             !c.motion.rapid};  // feed and spindle: where it cuts
