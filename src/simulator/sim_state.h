@@ -125,6 +125,8 @@ struct State {
   CutState cut;            // feed mode, spindle and tool as the program last stated them
   // The machine's hole templates taken apart, once (hole_cycles.cc; null until the first block).
   std::shared_ptr<const void> hole_lines;
+  // The codes of the machine's own positions (positions.cc), found at the first block.
+  std::optional<std::vector<Code>> position_codes;
 
   // A word's value as the control reads it: divided by the format's scale (machine formats).
   double value(const NcWord& w, std::string_view format) const;
