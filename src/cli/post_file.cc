@@ -54,12 +54,12 @@ PostOutcome not_opened(const Diagnostics& diags) {
 
 // Reads, interprets and writes the program to `sink`: what the post found goes into `out`, the
 // thread plans into `plans` when --verify will need them.
-// With --verify (`verify`), the CL's motions go to it as they are posted.
+// With --verify (`verify`), the CL's motions and thread plans go to it as they are posted.
 void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& diags,
-             std::vector<ThreadPlan>& plans, ProgramStream* verify, PostOutcome& out) {
+             ProgramStream* verify, PostOutcome& out) {
   auto on_thread = [&](const ThreadPlan& p) {
     if (req.on_thread) req.on_thread(p);
-    if (req.verify) plans.push_back(p);
+    if (verify != nullptr) verify->plan(p);
   };
   ClReader reader(input, diags);
   PostOptions options = req.options;
@@ -86,9 +86,9 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
 // while it was written (`verify`), finished. The report goes into `out`, the program's
 // diagnostics into `verify_diagnostics`. False when the program does not cut the plan (one
 // error on the CL file says so).
-bool verify_posted(ProgramStream& verify, const std::vector<ThreadPlan>& plans, Diagnostics& diags,
-                   PostOutcome& out, std::string& verify_diagnostics) {
-  VerifyOutcome v = verify.finish(plans, out.holes, out.path.state_count);
+bool verify_posted(ProgramStream& verify, Diagnostics& diags, PostOutcome& out,
+                   std::string& verify_diagnostics) {
+  VerifyOutcome v = verify.finish(out.holes, out.path.state_count);
   out.verify_report = std::move(v.report);
   out.path = {};  // compared: a batch keeps every outcome
   verify_diagnostics = std::move(v.diagnostics);
@@ -149,15 +149,14 @@ PostOutcome post_file(const PostRequest& req) {
     verify = std::make_unique<ProgramStream>(
         req.output.empty() || req.output == "-" ? "<program>" : req.output, display_name(req.input),
         *req.machine, req.verify_tolerance);
-  std::vector<ThreadPlan> plans;
   TeeSink tee(*sink, req.program, verify.get());
   if (req.verify || req.program != nullptr) sink = &tee;
   if (req.program_sink != nullptr && !req.verify && req.program == nullptr && !writing)
     sink = req.program_sink;
-  post_to(req, input.get(), *sink, diags, plans, verify.get(), out);
+  post_to(req, input.get(), *sink, diags, verify.get(), out);
   std::string verify_diagnostics;
-  const bool verify_failed = req.verify && !diags.has_errors() &&
-                             !verify_posted(*verify, plans, diags, out, verify_diagnostics);
+  const bool verify_failed =
+      req.verify && !diags.has_errors() && !verify_posted(*verify, diags, out, verify_diagnostics);
   if (writing) {
     finish_output(req, file, diags.has_errors() || verify_failed, diags, out);
   } else {

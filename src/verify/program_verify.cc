@@ -9,15 +9,13 @@ namespace clpost {
 
 namespace {
 
-// The program, read: its thread cuts against the plans; with `holes` (the CL's), its holes, then
-// its path by `path()` (its problems come last).
-template <typename Path>
-void compare(const Simulation& sim, const std::vector<ThreadPlan>& plans,
-             const std::vector<Hole>* holes, const Machine& m, const VerifyOptions& vo,
-             const std::string& program_name, Diagnostics& diags, VerifyOutcome& out, Path&& path) {
-  VerifyReport report;
-  out.ok = verify_cuts(plans, sim, m, vo, diags, report);
-  out.report = verify_report_text(report, plans, program_name, m, vo);
+// The program, read: its thread cuts against the plans by `threads(report)` (true: as
+// planned); with `holes` (the CL's), its holes, then its path by `path()` (its problems last).
+template <typename Threads, typename Path>
+void compare(const Simulation& sim, const std::vector<Hole>* holes, const Machine& m,
+             const VerifyOptions& vo, Diagnostics& diags, VerifyOutcome& out, Threads&& threads,
+             Path&& path) {
+  out.ok = threads(out.report);
   if (holes != nullptr) {
     const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
     const PathReport pr = path();
@@ -61,7 +59,13 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
   so.keep_moves = cl != nullptr && !cl->path.motions.empty();
   if (simulate_nc(src, m, diags, sim, so)) {
     const VerifyOptions vo = verify_options(plan_name, tolerance);
-    compare(sim, plans, cl ? &cl->holes : nullptr, m, vo, program_name, diags, out,
+    const auto threads = [&](std::string& text) {
+      VerifyReport report;
+      const bool ok = verify_cuts(plans, sim, m, vo, diags, report);
+      text = verify_report_text(report, plans, program_name, m, vo);
+      return ok;
+    };
+    compare(sim, cl ? &cl->holes : nullptr, m, vo, diags, out, threads,
             [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
   } else {
     cannot_read(program_name, out);
@@ -77,7 +81,8 @@ ProgramStream::ProgramStream(const std::string& program_name, const std::string&
       vo_(verify_options(plan_name, tolerance)),
       diags_(program_name),
       sim_(m, diags_, out_, options()),
-      path_(m, vo_, sim_.readback(), out_.units, kWindow) {}
+      path_(m, vo_, sim_.readback(), out_.units, kWindow),
+      threads_(m, vo_) {}
 
 ProgramStream::~ProgramStream() = default;
 
@@ -119,13 +124,18 @@ void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
   path_.cl_motion(c, &state);
 }
 
-VerifyOutcome ProgramStream::finish(const std::vector<ThreadPlan>& plans,
-                                    const std::vector<Hole>& holes, size_t cl_states) {
+void ProgramStream::plan(const ThreadPlan& p) {
+  threads_.plan(p, out_.cuts);
+}
+
+VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes, size_t cl_states) {
   if (!partial_.empty()) line(partial_);
   VerifyOutcome out;
   if (!stopped_ && sim_.finish()) {
-    compare(out_, plans, &holes, m_, vo_, name_, diags_, out,
-            [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
+    compare(
+        out_, &holes, m_, vo_, diags_, out,
+        [&](std::string& text) { return threads_.finish(out_.cuts, name_, diags_, text); },
+        [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
   } else {
     cannot_read(name_, out);
   }

@@ -33,8 +33,8 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
 // `clpost --verify`: the program verified as it is written while its CL file is posted, as
 // verify_program would: each chunk written goes to program_text(), each CL motion to
 // cl_motion() (PostOptions::on_motion). The program is read a line at a time and the path
-// compared in a window of moves (PathStream), so memory does not grow with the file; the
-// threads and holes (a few each) are compared at the end.
+// compared in a window of moves (PathStream) and the threads in a window of threads
+// (ThreadStream), so memory does not grow with the file; the holes are compared at the end.
 class ProgramStream {
  public:
   ProgramStream(const std::string& program_name, const std::string& plan_name, const Machine& m,
@@ -42,9 +42,10 @@ class ProgramStream {
   ~ProgramStream();
   void program_text(std::string_view text);
   void cl_motion(const ClMotion& c, const CutStateAt& state);
+  // A thread's plan, as it is planned.
+  void plan(const ThreadPlan& p);
   // Both ended: the outcome. `cl_states`: the states the CL made (ClPath::state_count).
-  VerifyOutcome finish(const std::vector<ThreadPlan>& plans, const std::vector<Hole>& holes,
-                       size_t cl_states);
+  VerifyOutcome finish(const std::vector<Hole>& holes, size_t cl_states);
 
  private:
   // Moves the path is compared ahead in: far more than a program's moves can run ahead of the
@@ -61,6 +62,7 @@ class ProgramStream {
   SimOptions so_;
   ControlSim sim_;
   PathStream path_;
+  ThreadStream threads_;
   std::string partial_;  // the line being written
   uint32_t number_ = 0;
   bool after_cr_ = false;
