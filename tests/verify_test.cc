@@ -340,9 +340,9 @@ TEST(Verify, StreamedThreadsReportAsTheWholeProgram) {
   EXPECT_FALSE(whole.ok);
   EXPECT_NE(whole.report.find(": 100 threads, 500 passes planned, 499 cut\n"), std::string::npos)
       << whole.report;
-  // Thread 30: THREAD/ON at CL line 7 + 6 x 29, its G33 blocks on NC lines 12 + 33 x 29 to
-  // 36 + 33 x 29 (33 lines a thread); its pass 3 ends 1 mm short of Z-29.8313.
-  EXPECT_NE(whole.report.find("  t.cl:181     5 passes  DIFFERS G33, NC lines 969-993\n"
+  // Thread 30: THREAD/ON at CL line 7 + 6 x 29, its G33 blocks on NC lines 15 + 33 x 29 to
+  // 39 + 33 x 29 (33 lines a thread); its pass 3 ends 1 mm short of Z-29.8313.
+  EXPECT_NE(whole.report.find("  t.cl:181     5 passes  DIFFERS G33, NC lines 972-996\n"
                               "      pass 3: ends at X17.5160 Z-28.8310, plan X17.5162 Z-29.8313 "
                               "(tolerance 0.001)\n"),
             std::string::npos)

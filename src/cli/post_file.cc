@@ -52,8 +52,7 @@ PostOutcome not_opened(const Diagnostics& diags) {
   return out;
 }
 
-// Reads, interprets and writes the program to `sink`: what the post found goes into `out`, the
-// thread plans into `plans` when --verify will need them.
+// Reads, interprets and writes the program to `sink`: what the post found goes into `out`.
 // With --verify (`verify`), the CL's motions and thread plans go to it as they are posted.
 void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& diags,
              ProgramStream* verify, PostOutcome& out) {

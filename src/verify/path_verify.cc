@@ -5,7 +5,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <deque>
+#include <type_traits>
 
 #include "laws/cut_pass.h"
 #include "laws/written_value.h"
@@ -275,10 +277,52 @@ PathStream::PathStream(const Machine& m, const VerifyOptions& options,
   k_ = std::make_unique<Check>(m, options, readback, units, shown_ + 1e-9);
 }
 
-PathStream::~PathStream() = default;
+PathStream::~PathStream() {
+  if (spill_ != nullptr) std::fclose(spill_);
+}
+
+static_assert(std::is_trivially_copyable_v<PathStream::ClStep>, "spilled as bytes");
+
+// A CL motion in order: in memory while the window has room and nothing waits on disk, else
+// on disk (a program that is written after the whole post, behind its header, comes after
+// every CL motion).
+void PathStream::queue(const ClStep& step) {
+  if (window_ == SIZE_MAX ||
+      (cl_.size() < window_ && spill_read_ == spill_written_ && spill_buffer_.empty())) {
+    cl_.push_back(step);
+    return;
+  }
+  spill_buffer_.push_back(step);
+  if (spill_buffer_.size() < kSpillBatch) return;
+  if (spill_ == nullptr) spill_ = std::tmpfile();
+  if (spill_ == nullptr) return;  // no temporary file: they wait in memory
+  const bool ok =
+      std::fseek(spill_, static_cast<long>(spill_written_ * sizeof(ClStep)), SEEK_SET) == 0 &&
+      std::fwrite(spill_buffer_.data(), sizeof(ClStep), spill_buffer_.size(), spill_) ==
+          spill_buffer_.size();
+  if (!ok) return;  // they wait in memory
+  spill_written_ += spill_buffer_.size();
+  spill_buffer_.clear();
+}
+
+// The CL motions waiting on disk, then in the buffer, back in order.
+void PathStream::refill() {
+  if (spill_read_ < spill_written_) {
+    std::vector<ClStep> batch(std::min(kSpillBatch, spill_written_ - spill_read_));
+    if (std::fseek(spill_, static_cast<long>(spill_read_ * sizeof(ClStep)), SEEK_SET) == 0 &&
+        std::fread(batch.data(), sizeof(ClStep), batch.size(), spill_) == batch.size()) {
+      spill_read_ += batch.size();
+      cl_.insert(cl_.end(), batch.begin(), batch.end());
+      return;
+    }
+    spill_read_ = spill_written_;  // unreadable: those motions are lost, not compared
+  }
+  cl_.insert(cl_.end(), spill_buffer_.begin(), spill_buffer_.end());
+  spill_buffer_.clear();
+}
 
 void PathStream::cl_motion(const ClMotion& c, const CutStateAt* state) {
-  cl_.push_back({c, state ? *state : CutStateAt{}, state != nullptr});
+  queue({c, state ? *state : CutStateAt{}, state != nullptr});
   advance(false);
 }
 
@@ -292,10 +336,10 @@ void PathStream::program_move(const Move& mv, const CutState* state) {
 // may be reported at it).
 void PathStream::advance(bool at_end) {
   MoveWindow& w = k_->moves;
-  while (!cl_.empty() &&
-         (at_end || w.size() - std::min(w.size(), k_->next) >= window_ || cl_.size() > window_)) {
+  while (!cl_.empty() && (at_end || w.size() - std::min(w.size(), k_->next) >= window_)) {
     check_motion(*k_, cl_.front());
     cl_.pop_front();
+    if (cl_.empty()) refill();
   }
   while (w.base + 1 < k_->next && !w.moves.empty()) {
     w.moves.pop_front();

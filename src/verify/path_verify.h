@@ -8,6 +8,7 @@
 // hand, is caught as a control emulator would catch it. A state difference is reported once,
 // where it begins. Thread passes and holes are compared on their own (verify.h, hole_verify.h);
 // their moves lie between these points.
+#include <cstdio>
 #include <deque>
 #include <memory>
 #include <string>
@@ -66,8 +67,15 @@ class PathStream {
   PathReport finish(size_t cl_states, Diagnostics& nc_diags);
 
  private:
+  static constexpr size_t kSpillBatch = 4096;
   void advance(bool at_end);
+  void queue(const ClStep& step);
+  void refill();
   size_t window_;
+  // CL motions beyond the window wait on disk, then in spill_buffer_, after cl_.
+  std::FILE* spill_ = nullptr;
+  size_t spill_written_ = 0, spill_read_ = 0;  // motions written to it, read back
+  std::vector<ClStep> spill_buffer_;
   double shown_ = 0;  // the tolerance as the report says it
   std::deque<ClStep> cl_;
   std::unique_ptr<Check> k_;

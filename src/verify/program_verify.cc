@@ -93,6 +93,11 @@ const SimOptions& ProgramStream::options() {
 }
 
 void ProgramStream::program_text(std::string_view text) {
+  read_lines(text);
+  threads_.poll(out_.cuts);
+}
+
+void ProgramStream::read_lines(std::string_view text) {
   // Lines end at "\n", "\r" or "\r\n", as reader::LineSource reads them.
   while (!text.empty()) {
     if (after_cr_ && text.front() == '\n') text.remove_prefix(1);

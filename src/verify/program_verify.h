@@ -52,6 +52,7 @@ class ProgramStream {
   // CL's or behind them (the writer's buffer).
   static constexpr size_t kWindow = 1 << 14;
   const SimOptions& options();
+  void read_lines(std::string_view text);
   void line(std::string_view text);
 
   std::string name_;

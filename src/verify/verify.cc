@@ -552,7 +552,12 @@ ThreadStream::~ThreadStream() = default;
 void ThreadStream::plan(const ThreadPlan& p, std::vector<NcCut>& cuts) {
   if (!mm_) mm_ = p.units == LengthUnit::kMm;
   plans_.push_back(p);
-  if (plans_.size() >= attempt_at_) flush(cuts);
+  if (plans_.size() >= attempt_at_) poll(cuts);
+}
+
+void ThreadStream::poll(std::vector<NcCut>& cuts) {
+  while (plans_.size() >= kWindow && cuts.size() >= retry_at_ && flush(cuts)) {
+  }
 }
 
 namespace {
@@ -584,30 +589,39 @@ size_t flush_point(const Window& w, size_t exact, size_t ahead, size_t margin, s
 
 }  // namespace
 
-void ThreadStream::flush(std::vector<NcCut>& cuts) {
-  const Comparer cmp(plans_, m_, tolerance_);
+bool ThreadStream::flush(std::vector<NcCut>& cuts) {
+  // The leading threads, and enough of the program's cuts for their passes.
+  const std::vector<ThreadPlan> head(
+      plans_.begin(), plans_.begin() + static_cast<long>(std::min(plans_.size(), 2 * kWindow)));
+  const Comparer cmp(head, m_, tolerance_);
   Window win;
-  align_window(plans_, cuts, cmp, tolerance_, win, false);
+  const size_t passes = expected_cuts(head).size();
+  const std::vector<NcCut> front(
+      cuts.begin(), cuts.begin() + static_cast<long>(std::min(cuts.size(), passes + 1)));
+  align_window(head, front, cmp, tolerance_, win, false);
   const size_t end =
-      flush_point(win, exact_prefix(win, cmp), kAhead, kMargin, plans_.size(), cuts.size());
-  if (end == 0) {  // not now: when twice as many threads wait
+      flush_point(win, exact_prefix(win, cmp), kAhead, kMargin, head.size(), cuts.size());
+  if (end == 0) {  // not now: when twice as many threads wait, or more cuts are read
     attempt_at_ = plans_.size() * 2;
-    return;
+    retry_at_ = cuts.size() + kRetryCuts;
+    return false;
   }
   attempt_at_ = kWindow;
+  retry_at_ = 0;
   for (size_t i = 0; i < end; ++i)
     win.pairs.push_back({static_cast<long>(i), static_cast<long>(i)});
   const size_t threads = win.expected[end].thread;
   Diagnostics none("");  // an exact prefix has no problems
-  Walk w{plans_, win.expected, win.cuts, win.order, win.pairs, cmp, options_, none};
+  Walk w{head, win.expected, win.cuts, win.order, win.pairs, cmp, options_, none};
   for (const ThreadVerdict& v : walk_window(w, end, threads))
-    lines_ += thread_lines(v, plans_[v.plan], options_);
+    lines_ += thread_lines(v, head[v.plan], options_);
   threads_ += threads;
   planned_ += end;
   cut_ += end;
   last_cut_ = win.cuts[end - 1];
   plans_.erase(plans_.begin(), plans_.begin() + static_cast<long>(threads));
   cuts.erase(cuts.begin(), cuts.begin() + static_cast<long>(win.origin[end]));
+  return true;
 }
 
 bool ThreadStream::finish(const std::vector<NcCut>& cuts, const std::string& program_name,
