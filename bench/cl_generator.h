@@ -59,6 +59,24 @@ void turning_program(std::string& buf, Flush&& flush, std::string_view name, lon
   flush(buf);
 }
 
+// `count` identical multi-pass threads (THREAD/ON with 4 cuts and a finish), one after the other,
+// each from a rapid approach: the plot and verify of many threads.
+template <typename Flush>
+void threads_program(std::string& buf, Flush&& flush, std::string_view name, long count) {
+  fmt::format_to(std::back_inserter(buf), "$$ clpost benchmark: {} threads\nPARTNO {}\n", count,
+                 name);
+  buf += "UNITS/MM\nLOADTL/7,ADJUST,7\nSPINDL/600,RPM,CLW\nCOOLNT/FLOOD\nFEDRAT/0.25,MMPR\n";
+  for (long n = 0; n < count; ++n) {
+    buf +=
+        "RAPID\nGOTO/15.0000,0.0000,5.0000\n"
+        "THREAD/ON,DEPTH,1.534,CUTS,4,FINCUT,1,0.1,OPTION,1,MMPR,2.5,CHAMFR,2.5\n"
+        "GOTO/10.0000,0.0000,2.0000\nGOTO/10.0000,0.0000,-30.0000\nTHREAD/OFF\n";
+    if (buf.size() > (1 << 20)) flush(buf);
+  }
+  buf += "RAPID\nGOTO/50.0000,0.0000,50.0000\nCOOLNT/OFF\nSPINDL/OFF\nEND\nFINI\n";
+  flush(buf);
+}
+
 // The whole program in memory (benchmarks of small inputs).
 inline std::string turning_program_text(long gotos, long thread_every) {
   std::string all, buf;

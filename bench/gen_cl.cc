@@ -4,6 +4,7 @@
 //                                                sequence every THREAD_EVERY of them (3000)
 //   gen_cl small DIR [COUNT [GOTOS]]             COUNT files DIR/part-NNNN.cl (1000) of GOTOS
 //                                                GOTO lines each (2000), a thread every 1500
+//   gen_cl threads OUT.cl [COUNT]                COUNT identical multi-pass threads (3000)
 //   gen_cl binary IN.cl OUT.cl                   IN (APT text) as binary CLDATA, records as
 //                                                APT360 writes them: a sequence number record
 //                                                before each statement, up to 80 GOTO points
@@ -23,7 +24,9 @@
 
 namespace {
 
-bool write_program(const std::string& path, std::string_view name, long gotos, long every) {
+// Writes what `generate(buf, flush)` makes to `path`.
+template <typename Generate>
+bool write_file(const std::string& path, Generate&& generate) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (f == nullptr) {
     fmt::print(stderr, "gen_cl: cannot write {}: {}\n", path, std::strerror(errno));
@@ -31,16 +34,19 @@ bool write_program(const std::string& path, std::string_view name, long gotos, l
   }
   bool ok = true;
   std::string buf;
-  clpost::bench::turning_program(
-      buf,
-      [&](std::string& b) {
-        ok = ok && std::fwrite(b.data(), 1, b.size(), f) == b.size();
-        b.clear();
-      },
-      name, gotos, every);
+  generate(buf, [&](std::string& b) {
+    ok = ok && std::fwrite(b.data(), 1, b.size(), f) == b.size();
+    b.clear();
+  });
   ok = std::fclose(f) == 0 && ok;
   if (!ok) fmt::print(stderr, "gen_cl: cannot write {}\n", path);
   return ok;
+}
+
+bool write_program(const std::string& path, std::string_view name, long gotos, long every) {
+  return write_file(path, [&](std::string& buf, auto&& flush) {
+    clpost::bench::turning_program(buf, flush, name, gotos, every);
+  });
 }
 
 bool parse_long(const char* s, long& v) {
@@ -76,6 +82,7 @@ int usage() {
   std::fputs(
       "usage: gen_cl large OUT.cl [GOTOS [THREAD_EVERY]]\n"
       "       gen_cl small DIR [COUNT [GOTOS]]\n"
+      "       gen_cl threads OUT.cl [COUNT]\n"
       "       gen_cl binary IN.cl OUT.cl\n",
       stderr);
   return 2;
@@ -102,6 +109,16 @@ int main(int argc, char** argv) {
         return 1;
     }
     return 0;
+  }
+  if (mode == "threads") {
+    long count = 3000;
+    if (argc > 3 && !parse_long(argv[3], count)) return usage();
+    return write_file(argv[2],
+                      [&](std::string& buf, auto&& flush) {
+                        clpost::bench::threads_program(buf, flush, "BENCH-THREADS", count);
+                      })
+               ? 0
+               : 1;
   }
   if (mode == "binary" && argc == 4) return write_binary(argv[2], argv[3]) ? 0 : 1;
   return usage();

@@ -4,7 +4,10 @@
 // golden_test.cc; every machine on generated cases: conformance_test.cc.)
 #include <gtest/gtest.h>
 
+#include "interpreter/post.h"
+#include "reader/line_source.h"
 #include "test_util.h"
+#include "verify/program_verify.h"
 
 namespace clpost::test {
 namespace {
@@ -284,6 +287,70 @@ TEST(Verify, ABatchVerifiesEveryProgram) {
             std::string::npos)
       << r.err;
   EXPECT_FALSE(file_exists(bad + "/options.nc"));
+}
+
+// `count` identical multi-pass threads, each 5 passes (4 cuts and a finish) on generic-lathe.
+std::string identical_threads(int count) {
+  std::string cl = "PARTNO THREADS\nUNITS/MM\nLOADTL/7,ADJUST,7\nSPINDL/600,RPM,CLW\n";
+  for (int i = 0; i < count; ++i)
+    cl +=
+        "RAPID\nGOTO/15.0000,0.0000,5.0000\n"
+        "THREAD/ON,DEPTH,1.534,CUTS,4,FINCUT,1,0.1,OPTION,1,MMPR,2.5,CHAMFR,2.5\n"
+        "GOTO/10.0000,0.0000,2.0000\nGOTO/10.0000,0.0000,-30.0000\nTHREAD/OFF\n";
+  return cl + "RAPID\nGOTO/50.0000,0.0000,50.0000\nSPINDL/OFF\nEND\nFINI\n";
+}
+
+// Line `n` (1-based) of the lines of `text` that contain `what`, replaced by `to`.
+void replace_nth_line(std::string& text, const std::string& what, int n, const std::string& to) {
+  size_t at = 0;
+  for (int seen = 0; (at = text.find(what, at)) != std::string::npos; ++at)
+    if (++seen == n) break;
+  ASSERT_NE(at, std::string::npos) << what << " " << n;
+  const size_t begin = text.rfind('\n', at) + 1;
+  text.replace(begin, text.find('\n', at) - begin, to);
+}
+
+// --verify compares the threads in windows as the program is written (ThreadStream, 64 threads
+// at a time): on 100 identical threads, with a pass ending short in thread 30 and a pass
+// dropped in thread 90, it says word for word what `clpost verify` says comparing the whole
+// program at once. (Thread 90's missing pass is named as thread 91's first: the threads are
+// identical, and the alignment puts the gap where it costs least.)
+TEST(Verify, StreamedThreadsReportAsTheWholeProgram) {
+  const Machine m = shipped_machine("generic-lathe");
+  PostOptions options;
+  options.keep_motions = true;
+  const PostedText posted = post_text(identical_threads(100), m, "t.cl", options);
+  ASSERT_FALSE(posted.diags.has_errors()) << posted.diags.render_all();
+  ASSERT_EQ(posted.plans.size(), 100u);
+  std::string program = posted.program;
+  // The 148th G33 is thread 30's pass 3 (5 per thread); the 450th, thread 90's pass 5.
+  replace_nth_line(program, " G33 ", 148, "G33 Z-28.831 F2.5");
+  replace_nth_line(program, " G33 ", 450, "");
+  reader::LineSource src{std::string_view(program)};
+  const ClExpected expected{posted.summary.holes, posted.summary.path};
+  const VerifyOutcome whole = verify_program(src, "t.nc", posted.plans, &expected, "t.cl", m, 0);
+
+  ProgramStream stream("t.nc", "t.cl", m, 0);
+  stream.program_text(program);
+  for (const ThreadPlan& p : posted.plans) stream.plan(p);
+  const ClPath& path = posted.summary.path;
+  for (const ClMotion& c : path.motions) stream.cl_motion(c, path.states[c.state]);
+  const VerifyOutcome streamed = stream.finish(posted.summary.holes, path.states.size());
+
+  EXPECT_FALSE(whole.ok);
+  EXPECT_NE(whole.report.find(": 100 threads, 500 passes planned, 499 cut\n"), std::string::npos)
+      << whole.report;
+  // Thread 30: THREAD/ON at CL line 7 + 6 x 29, its G33 blocks on NC lines 15 + 33 x 29 to
+  // 39 + 33 x 29 (33 lines a thread); its pass 3 ends 1 mm short of Z-29.8313.
+  EXPECT_NE(whole.report.find("  t.cl:181     5 passes  DIFFERS G33, NC lines 972-996\n"
+                              "      pass 3: ends at X17.5160 Z-28.8310, plan X17.5162 Z-29.8313 "
+                              "(tolerance 0.001)\n"),
+            std::string::npos)
+      << whole.report;
+  EXPECT_EQ(streamed.ok, whole.ok);
+  EXPECT_EQ(streamed.report, whole.report);
+  EXPECT_EQ(streamed.diagnostics, whole.diagnostics);
+  EXPECT_EQ(streamed.errors, whole.errors);
 }
 
 }  // namespace

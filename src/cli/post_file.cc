@@ -11,6 +11,7 @@
 #include "reader/cl_reader.h"
 #include "support/input_file.h"
 #include "support/output_file.h"
+#include "verify/program_verify.h"
 #include "writer/nc_program.h"
 
 namespace clpost {
@@ -23,19 +24,23 @@ class NullSink : public Sink {
  private:
   void overflow(std::string_view text) override { bytes += text.size(); }
 };
-// Keeps a copy of the program for --verify.
+// Hands the program as it is written to --verify (`verify`), and keeps a copy when asked
+// (`copy`, PostRequest::program).
 class TeeSink : public Sink {
  public:
-  TeeSink(Sink& to, std::string& copy) : to_(to), copy_(copy) {}
+  TeeSink(Sink& to, std::string* copy, ProgramStream* verify)
+      : to_(to), copy_(copy), verify_(verify) {}
 
  private:
   void overflow(std::string_view text) override {
     to_.write(text);
-    copy_.append(text);
+    if (copy_ != nullptr) copy_->append(text);
+    if (verify_ != nullptr) verify_->program_text(text);
   }
 
   Sink& to_;
-  std::string& copy_;
+  std::string* copy_;
+  ProgramStream* verify_;
 };
 
 // A file not posted: its input or its output could not be opened (the error is in `diags`).
@@ -47,13 +52,13 @@ PostOutcome not_opened(const Diagnostics& diags) {
   return out;
 }
 
-// Reads, interprets and writes the program to `sink`: what the post found goes into `out`, the
-// thread plans into `plans` when --verify will need them.
+// Reads, interprets and writes the program to `sink`: what the post found goes into `out`.
+// With --verify (`verify`), the CL's motions and thread plans go to it as they are posted.
 void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& diags,
-             std::vector<ThreadPlan>& plans, PostOutcome& out) {
+             ProgramStream* verify, PostOutcome& out) {
   auto on_thread = [&](const ThreadPlan& p) {
     if (req.on_thread) req.on_thread(p);
-    if (req.verify) plans.push_back(p);
+    if (verify != nullptr) verify->plan(p);
   };
   ClReader reader(input, diags);
   PostOptions options = req.options;
@@ -61,6 +66,10 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
   // The body waits for its header beside the output file (same file system, no name), else in
   // the system's temporary directory.
   if (!req.output.empty()) options.spool_dir = OutputFile::directory_beside(req.output);
+  if (verify != nullptr)
+    options.on_motion = [verify](const ClMotion& c, const CutStateAt& state) {
+      verify->cl_motion(c, state);
+    };
   PostSummary summary = post(reader, *req.machine, sink, diags, options, on_thread);
   out.holes = std::move(summary.holes);
   out.outputs = std::move(summary.outputs);
@@ -72,17 +81,13 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
   out.bytes_in = summary.bytes_in;
 }
 
-// --verify: the program as written, read back through the control and compared with the plans.
-// The report goes into `out`, the program's diagnostics into `verify_diagnostics`. False when
-// the program does not cut the plan (one error on the CL file says so).
-bool verify_posted(const PostRequest& req, const std::string& program,
-                   const std::vector<ThreadPlan>& plans, Diagnostics& diags, PostOutcome& out,
+// --verify: the program as written, read back through the control and compared with the plans
+// while it was written (`verify`), finished. The report goes into `out`, the program's
+// diagnostics into `verify_diagnostics`. False when the program does not cut the plan (one
+// error on the CL file says so).
+bool verify_posted(ProgramStream& verify, Diagnostics& diags, PostOutcome& out,
                    std::string& verify_diagnostics) {
-  reader::LineSource src{std::string_view(program)};
-  const std::string name = req.output.empty() || req.output == "-" ? "<program>" : req.output;
-  const ClExpected expected{out.holes, out.path};
-  VerifyOutcome v = verify_program(src, name, plans, &expected, display_name(req.input),
-                                   *req.machine, req.verify_tolerance);
+  VerifyOutcome v = verify.finish(out.holes, out.path.state_count);
   out.verify_report = std::move(v.report);
   out.path = {};  // compared: a batch keeps every outcome
   verify_diagnostics = std::move(v.diagnostics);
@@ -138,17 +143,19 @@ PostOutcome post_file(const PostRequest& req) {
     sink = file.get();
   }
   PostOutcome out;
-  std::string own_copy;  // --verify: the program as written
-  std::string& program = req.program != nullptr ? *req.program : own_copy;
-  std::vector<ThreadPlan> plans;
-  TeeSink tee(*sink, program);
+  std::unique_ptr<ProgramStream> verify;
+  if (req.verify)
+    verify = std::make_unique<ProgramStream>(
+        req.output.empty() || req.output == "-" ? "<program>" : req.output, display_name(req.input),
+        *req.machine, req.verify_tolerance);
+  TeeSink tee(*sink, req.program, verify.get());
   if (req.verify || req.program != nullptr) sink = &tee;
   if (req.program_sink != nullptr && !req.verify && req.program == nullptr && !writing)
     sink = req.program_sink;
-  post_to(req, input.get(), *sink, diags, plans, out);
+  post_to(req, input.get(), *sink, diags, verify.get(), out);
   std::string verify_diagnostics;
-  const bool verify_failed = req.verify && !diags.has_errors() &&
-                             !verify_posted(req, program, plans, diags, out, verify_diagnostics);
+  const bool verify_failed =
+      req.verify && !diags.has_errors() && !verify_posted(*verify, diags, out, verify_diagnostics);
   if (writing) {
     finish_output(req, file, diags.has_errors() || verify_failed, diags, out);
   } else {

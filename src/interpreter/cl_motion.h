@@ -58,6 +58,7 @@ struct ClMotion {
 struct ClPath {
   std::vector<ClMotion> motions;
   std::vector<CutStateAt> states;  // each motion's, in order; a new entry at each change
+  size_t state_count = 0;          // states made (PostOptions::on_motion keeps the last only)
 };
 
 }  // namespace clpost

@@ -61,6 +61,11 @@ const std::string& Interpreter::partno() const {
   return state_->partno;
 }
 
+ClPath Interpreter::take_path() {
+  hand_over_motion(*state_);
+  return std::move(state_->cl_path);
+}
+
 void Interpreter::finish() {
   finish_program(*state_);
 }

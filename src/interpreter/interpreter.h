@@ -34,7 +34,8 @@ class Interpreter {
   std::vector<OutputUsed> take_outputs() { return std::move(state_->outputs); }
   const std::string& partno() const;
   const CycleTime& cycle_time() const { return state_->clock; }
-  ClPath take_path() { return std::move(state_->cl_path); }
+  // With PostOptions::on_motion, the last motion is handed over first.
+  ClPath take_path();
 
  private:
   std::unique_ptr<PostState> state_;

@@ -92,13 +92,25 @@ CutState cut_state(const PostState& s) {
 
 }  // namespace
 
+void hand_over_motion(PostState& s) {
+  ClPath& path = s.cl_path;
+  if (!s.opts.on_motion || path.motions.empty()) return;
+  s.opts.on_motion(path.motions.back(), path.states[path.motions.back().state]);
+  path.motions.clear();
+}
+
 namespace {
-// The state index of a motion recorded at CL line `line`: a new state when it changed.
+// The state index of a motion recorded at CL line `line`: a new state when it changed. The
+// motion before is finished: handed over (PostOptions::on_motion) before its state goes.
 uint32_t state_at(PostState& s, uint32_t line) {
   ClPath& path = s.cl_path;
+  hand_over_motion(s);
   const CutState c = cut_state(s);
-  if (path.states.empty() || !(path.states.back().state == c))
+  if (path.states.empty() || !(path.states.back().state == c)) {
+    if (s.opts.on_motion) path.states.clear();
     path.states.push_back({c, line, s.tool_line, s.feed_line, s.spindle_line});
+    ++path.state_count;
+  }
   return static_cast<uint32_t>(path.states.size() - 1);
 }
 }  // namespace

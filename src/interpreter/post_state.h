@@ -28,6 +28,9 @@ struct PostOptions {
   // Where a program waits for its header (program_header), on disk: the directory of its output
   // file (OutputFile::directory_beside), empty for the system's temporary directory.
   std::string spool_dir{};
+  // With keep_motions: each motion, once finished, with its state, handed over and not kept
+  // (ClPath then holds the last motion and state only): verify while the program is written.
+  std::function<void(const ClMotion&, const CutStateAt&)> on_motion{};
 };
 
 struct PostStats {

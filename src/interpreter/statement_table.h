@@ -124,6 +124,8 @@ void move_to(PostState& s, const Statement& st, Point3 p);
 // is (a GOTO), so it stays put when `to` is there; false for a hole's retract, which follows the
 // hole's own moves.
 void record_motion(PostState& s, const Statement& st, Vec2 to, bool rapid, bool from_pos = true);
+// The last motion recorded, finished, to PostOptions::on_motion (when set), no longer kept.
+void hand_over_motion(PostState& s);
 // Verify's record of where a cycle of CL line `line` (a hole, a thread, an undercut) leaves the
 // tool (ClMotion::exit), when PostOptions::keep_motions asks.
 void record_exit(PostState& s, uint32_t line, Vec2 at, std::optional<double> hole_bottom = {},

@@ -374,25 +374,21 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
 
 namespace {
 
-// The end of a run: a cycle left open is an error; the path's units and readback.
-void finish_run(State& s, const Codes& codes) {
-  if (s.pending.set && s.pending.takes_blocks) {
-    s.diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
-                  std::string(codes.control->unclosed));
-    s.ok = false;
-  }
-  s.out.path.units = s.out.units;
-  s.out.path.readback = codes.modal.readback;
-}
-
-// The run with block delete on (SimOptions::block_delete_too): its own state, simulation and
-// diagnostics, every block but the optional ones.
+// The run with block delete on (SimOptions::block_delete_too): its own options (its moves to
+// on_block_delete_move), state, simulation and diagnostics; every block but the optional ones.
 struct BlockDeleteRun {
   BlockDeleteRun(const Machine& m, const std::string& file, const SimOptions& o)
-      : diags(file), state(m, diags, sim, o) {
+      : options(on_options(o)), diags(file), state(m, diags, sim, options) {
     state.diameter = m.diameter_output;
     sim.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
   }
+  static SimOptions on_options(const SimOptions& o) {
+    SimOptions on;
+    on.keep_moves = o.keep_moves;
+    on.on_move = o.on_block_delete_move;
+    return on;
+  }
+  SimOptions options;
   Diagnostics diags;
   Simulation sim;
   State state;
@@ -410,80 +406,122 @@ void keep_block_delete_errors(const Diagnostics& on, Diagnostics& diags) {
   }
 }
 
-// Reads one line into `block`: false at the end or on a read error (reported, `ok` false).
-enum class Read : uint8_t { kLine, kSkipped, kEnd, kFailed };
-Read read_line(reader::LineSource& src, State& s, reader::LineSource::Line& l) {
-  using Status = reader::LineSource::Status;
-  constexpr size_t kMaxLine = 64 * 1024;
-  src.mark();
-  const Status st = src.next_line(kMaxLine, l);
-  if (st == Status::kEnd) return Read::kEnd;
-  if (st == Status::kBinary) {
-    s.diags.error({}, {},
-                  fmt::format("not an NC text file (binary data at byte {})", src.binary_offset()));
-    return Read::kFailed;
-  }
-  if (st == Status::kReadError) {
-    s.diags.error({}, {}, src.read_error());
-    return Read::kFailed;
-  }
-  if (st == Status::kTooLong) {
-    s.diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
-    src.skip_line();
+// The end of a run: a cycle left open is an error; the path's units.
+void finish_run(State& s, const Codes& codes) {
+  if (s.pending.set && s.pending.takes_blocks) {
+    s.diags.error(SourceLoc{s.pending.line, s.pending.col}, s.pending.line_text,
+                  std::string(codes.control->unclosed));
     s.ok = false;
-    return Read::kSkipped;
   }
-  return Read::kLine;
+  s.out.path.units = s.out.units;
 }
 
 }  // namespace
 
-bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
-                 const SimOptions& options) {
-  out = Simulation{};
-  out.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
-  State s{m, diags, out, options};
-  s.diameter = m.diameter_output;
-  std::optional<BlockDeleteRun> on;
-  if (options.block_delete_too) on.emplace(m, diags.file(), options);
-  const NcSyntax syntax = nc_syntax(m);
-  const Codes codes = codes_of(m);
+struct ControlSim::Impl {
+  Impl(const Machine& m, Diagnostics& d, Simulation& out, const SimOptions& o)
+      : options(o), s(m, d, out, options), syntax(nc_syntax(m)), codes(codes_of(m)) {
+    if (o.block_delete_too) on.emplace(m, d.file(), o);
+  }
+  SimOptions options;
+  State s;
+  NcSyntax syntax;
+  Codes codes;
   NcBlock block;
   NcLexError lex_error;
-  while (true) {
-    reader::LineSource::Line l;
-    const Read r = read_line(src, s, l);
-    if (r == Read::kEnd) break;
-    if (r == Read::kFailed) return false;
-    if (r == Read::kSkipped) continue;
-    ++out.blocks;
-    s.line = l.number;
-    s.line_text = src.text(l);
-    if (!lex_nc_line(s.line_text, l.number, syntax, block, lex_error)) {
-      diags.error(SourceLoc{l.number, lex_error.col}, s.line_text, lex_error.message);
-      s.ok = false;
-    } else {
-      run_block(s, block, codes);
-      out.deleted_blocks += block.block_delete ? 1 : 0;
-      if (on && !block.block_delete) {
-        on->state.line = s.line;
-        on->state.line_text = s.line_text;
-        run_block(on->state, block, codes);
-      }
-    }
-    if (diags.error_count() > 100) {
-      diags.error(SourceLoc{l.number, 1}, {}, "too many errors; verify stopped here");
-      return false;
+  std::optional<BlockDeleteRun> on;
+};
+
+ControlSim::ControlSim(const Machine& m, Diagnostics& diags, Simulation& out,
+                       const SimOptions& options) {
+  out = Simulation{};
+  out.units = m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+  impl_ = std::make_unique<Impl>(m, diags, out, options);
+  impl_->s.diameter = m.diameter_output;
+  out.path.readback = impl_->codes.modal.readback;
+  if (impl_->on) impl_->on->sim.path.readback = impl_->codes.modal.readback;
+}
+
+ControlSim::~ControlSim() = default;
+
+const LengthUnit& ControlSim::block_delete_units() const {
+  return impl_->on ? impl_->on->sim.units : impl_->s.out.units;
+}
+
+const StateReadback& ControlSim::readback() const {
+  return impl_->codes.modal.readback;
+}
+
+bool ControlSim::line(uint32_t number, std::string_view text) {
+  State& s = impl_->s;
+  ++s.out.blocks;
+  s.line = number;
+  s.line_text = text;
+  if (!lex_nc_line(s.line_text, number, impl_->syntax, impl_->block, impl_->lex_error)) {
+    s.diags.error(SourceLoc{number, impl_->lex_error.col}, s.line_text, impl_->lex_error.message);
+    s.ok = false;
+  } else {
+    run_block(s, impl_->block, impl_->codes);
+    s.out.deleted_blocks += impl_->block.block_delete ? 1 : 0;
+    if (impl_->on && !impl_->block.block_delete) {
+      State& on = impl_->on->state;
+      on.line = number;
+      on.line_text = s.line_text;
+      run_block(on, impl_->block, impl_->codes);
     }
   }
-  finish_run(s, codes);
-  if (on && out.deleted_blocks > 0) {
-    finish_run(on->state, codes);
-    keep_block_delete_errors(on->diags, diags);
-    s.ok = s.ok && on->state.ok;
-    out.with_block_delete.push_back(std::move(on->sim));
+  if (s.diags.error_count() > 100) {
+    s.diags.error(SourceLoc{number, 1}, {}, "too many errors; verify stopped here");
+    return false;
+  }
+  return true;
+}
+
+void ControlSim::unreadable() {
+  impl_->s.ok = false;
+}
+
+bool ControlSim::finish() {
+  State& s = impl_->s;
+  finish_run(s, impl_->codes);
+  if (impl_->on && s.out.deleted_blocks > 0) {
+    BlockDeleteRun& on = *impl_->on;
+    finish_run(on.state, impl_->codes);
+    keep_block_delete_errors(on.diags, s.diags);
+    s.ok = s.ok && on.state.ok;
+    s.out.with_block_delete.push_back(std::move(on.sim));
   }
   return s.ok;
+}
+
+bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
+                 const SimOptions& options) {
+  using Status = reader::LineSource::Status;
+  constexpr size_t kMaxLine = 64 * 1024;
+  ControlSim sim(m, diags, out, options);
+  while (true) {
+    src.mark();
+    reader::LineSource::Line l;
+    const Status st = src.next_line(kMaxLine, l);
+    if (st == Status::kEnd) break;
+    if (st == Status::kBinary) {
+      diags.error({}, {},
+                  fmt::format("not an NC text file (binary data at byte {})", src.binary_offset()));
+      return false;
+    }
+    if (st == Status::kReadError) {
+      diags.error({}, {}, src.read_error());
+      return false;
+    }
+    if (st == Status::kTooLong) {
+      diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
+      src.skip_line();
+      sim.unreadable();
+      continue;
+    }
+    if (!sim.line(l.number, src.text(l))) return false;
+  }
+  return sim.finish();
 }
 
 }  // namespace clpost

@@ -4,6 +4,7 @@
 // law (controls/*/*_law.h). The result is the tool's moves (for `clpost plot`) and the synchronized
 // cuts (for `clpost verify`).
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,6 +73,31 @@ struct SimOptions {
   // with it off: Simulation::with_block_delete. Its errors the other run has not are reported
   // too, marked "(block delete on)".
   bool block_delete_too = false;
+  // With block_delete_too: the moves of the run with block delete on, as on_move has the others.
+  std::function<void(const Move&, const CutState&)> on_block_delete_move;
+};
+
+// The simulation a line at a time, as the program is written (clpost --verify). `out` and
+// `options` must outlive it.
+class ControlSim {
+ public:
+  ControlSim(const Machine& m, Diagnostics& diags, Simulation& out, const SimOptions& options);
+  ~ControlSim();
+  // One line of the program, 1-based, without its line end. False: too many errors, stop.
+  bool line(uint32_t number, std::string_view text);
+  // A line that cannot be read (reported by the caller).
+  void unreadable();
+  // The end of the program: true when it was read without errors.
+  bool finish();
+  // What the program's words let verify compare (the machine's codes and templates).
+  const StateReadback& readback() const;
+  // The units of the run with block delete on (SimOptions::block_delete_too), as read so far;
+  // without it, those of the run.
+  const LengthUnit& block_delete_units() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control

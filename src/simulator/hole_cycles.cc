@@ -186,9 +186,26 @@ void hole_comment(State& s, const NcBlock& b) {
   }
 }
 
+namespace {
+// Every hole template's cycle line, taken apart once per program (State::hole_lines).
+struct HoleLines {
+  std::optional<HoleLine> lines[std::size(kHoleTemplates)];
+};
+
+const HoleLines& hole_lines(State& s) {
+  if (!s.hole_lines) {
+    auto h = std::make_shared<HoleLines>();
+    for (size_t i = 0; i < std::size(kHoleTemplates); ++i)
+      h->lines[i] = hole_line(s.m, *kHoleTemplates[i].first, kHoleTemplates[i].second);
+    s.hole_lines = h;
+  }
+  return *static_cast<const HoleLines*>(s.hole_lines.get());
+}
+}  // namespace
+
 bool hole_cycle_block(State& s, const NcBlock& b) {
-  for (const auto& [spec, kind] : kHoleTemplates) {
-    const std::optional<HoleLine> h = hole_line(s.m, *spec, kind);
+  const HoleLines& lines = hole_lines(s);
+  for (const std::optional<HoleLine>& h : lines.lines) {
     if (!h || !matches(*h, b)) continue;
     std::map<std::string, double> v;
     if (!read_fields(s, *h, b, v)) return true;

@@ -1,6 +1,7 @@
 #pragma once
 // The control simulation's state while it runs a program (control_sim.cc) and the controls'
 // cycle read-backs that share it (src/controls/*/*_readback.cc, through control_readback.h).
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -122,6 +123,10 @@ struct State {
   G92Modal g92;
   bool hole_open = false;  // out.holes.back() is followed move by move (a "hole at" comment)
   CutState cut;            // feed mode, spindle and tool as the program last stated them
+  // The machine's hole templates taken apart, once (hole_cycles.cc; null until the first block).
+  std::shared_ptr<const void> hole_lines;
+  // The codes of the machine's own positions (positions.cc), found at the first block.
+  std::optional<std::vector<Code>> position_codes;
 
   // A word's value as the control reads it: divided by the format's scale (machine formats).
   double value(const NcWord& w, std::string_view format) const;

@@ -2,7 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <type_traits>
 
 #include "laws/cut_pass.h"
 #include "laws/written_value.h"
@@ -21,43 +26,43 @@ bool same_kind(const ClMotion& c, const Move& mv) {
                        mv.kind == MoveKind::kArcCcw;
 }
 
+// The program's moves in a window of the stream: moves[i] is move number `base + i`.
+struct MoveWindow {
+  std::deque<PathStream::ProgramMove> moves;
+  size_t base = 0;
+  size_t size() const { return base + moves.size(); }  // one past the last move received
+  const Move& operator[](size_t i) const { return moves[i - base].move; }
+  const PathStream::ProgramMove& at(size_t i) const { return moves[i - base]; }
+};
+
 // The first move from `from` that ends at `c` (of its kind when `kind`), or moves.size().
-size_t find_move(const std::vector<Move>& moves, size_t from, const ClMotion& c, double tol,
-                 bool kind) {
+size_t find_move(const MoveWindow& moves, size_t from, const ClMotion& c, double tol, bool kind) {
   for (size_t j = from; j < moves.size(); ++j)
     if (near(moves[j].to, c.to, tol) && (!kind || same_kind(c, moves[j]))) return j;
   return moves.size();
 }
 
-// Every move in order, the entries from an unknown position among them.
-std::vector<Move> all_moves(const Toolpath& path) {
-  std::vector<Move> moves;
-  moves.reserve(path.moves.size() + path.entries.size());
-  size_t e = 0;
-  for (size_t i = 0; i <= path.moves.size(); ++i) {
-    for (; e < path.entries.size() && path.entries[e].before == i; ++e)
-      moves.push_back(path.entries[e].move);
-    if (i < path.moves.size()) moves.push_back(path.moves[i]);
-  }
-  return moves;
-}
+}  // namespace
 
 // What the comparison needs and what it found.
-struct PathCheck {
-  PathCheck(const ClPath& c, const Toolpath& p, const Machine& machine, const VerifyOptions& o,
-            Diagnostics& d, double tolerance)
-      : cl(c),
-        path(p),
-        m(machine),
+struct PathStream::Check {
+  Check(const Machine& machine, const VerifyOptions& o, const StateReadback& r, const LengthUnit& u,
+        double tolerance)
+      : m(machine),
         options(o),
-        diags(d),
+        readback(r),
+        units(u),
+        diags(o.plan_name),
         tol(tolerance),
         xs(diameter_factor(machine)) {}
-  const ClPath& cl;
-  const Toolpath& path;
   const Machine& m;
-  const VerifyOptions& options;
-  Diagnostics& diags;
+  VerifyOptions options;
+  StateReadback readback;
+  const LengthUnit& units;  // the program's, as read so far
+  Diagnostics diags;        // the problems, handed to the program's at the end
+  MoveWindow moves;
+  size_t next = 0;  // the move the next CL motion is looked for from
+  size_t motions = 0;
   double tol;
   double xs;  // X as the program writes it (2: diameters)
   size_t problems = 0;
@@ -66,6 +71,11 @@ struct PathCheck {
   // Each kind of state difference (tool, feed, spindle) as last reported, CL and program: a
   // difference is reported once, where it begins.
   std::pair<std::string, std::string> reported[3];
+  // The last states compared (check_state) and whether tool, feed and spindle differ in them.
+  bool compared = false;
+  LengthUnit compared_units = LengthUnit::kMm;
+  CutState cl_state, program_state;
+  std::array<bool, 3> differs{};
 
   std::string at(const ClMotion& c) const {
     return fmt::format("{}:{}", options.plan_name, c.line);
@@ -77,6 +87,10 @@ struct PathCheck {
   }
 };
 
+namespace {
+
+using Check = PathStream::Check;
+
 std::string arc_name(const Machine& m, MoveKind k) {
   if (k == MoveKind::kArcCw) return fmt::format("a clockwise arc ({})", m.code("arc_cw"));
   if (k == MoveKind::kArcCcw) return fmt::format("a counter-clockwise arc ({})", m.code("arc_ccw"));
@@ -84,7 +98,7 @@ std::string arc_name(const Machine& m, MoveKind k) {
 }
 
 // The arc (or straight feed) of CL motion `c` against the program's move `mv`.
-void check_arc(PathCheck& k, const ClMotion& c, const Move& mv) {
+void check_arc(Check& k, const ClMotion& c, const Move& mv) {
   if (c.rapid) return;
   const MoveKind want = c.arc == ArcSense::kCw    ? MoveKind::kArcCw
                         : c.arc == ArcSense::kCcw ? MoveKind::kArcCcw
@@ -149,17 +163,27 @@ bool same_spindle(const Machine& m, const StateReadback& r, const CutState& a, c
          same_as_written(m, "S", a.max_rpm, b.max_rpm, false);
 }
 
-// Feed, spindle and tool of CL motion `c` against the program's state at `mv`.
-void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
-  if (c.state >= k.cl.states.size() || mv.state >= k.path.states.size()) return;
-  const CutState& a = k.cl.states[c.state].state;
-  const CutState& b = k.path.states[mv.state].state;
-  const StateReadback& r = k.path.readback;
-  const LengthUnit u = k.path.units;
-  const bool differs[3] = {!same_tool(r, a, b), !same_feed(k.m, r, a, b, u == LengthUnit::kInch),
-                           !same_spindle(k.m, r, a, b)};
+// Feed, spindle and tool of CL motion `c` against the program's state at move `j`.
+void check_state(Check& k, const PathStream::ClStep& c, size_t j) {
+  const PathStream::ProgramMove& mv = k.moves.at(j);
+  if (!c.known || !mv.known) return;
+  const CutState& a = c.state.state;
+  const CutState& b = mv.state;
+  const StateReadback& r = k.readback;
+  const LengthUnit u = k.units;
+  // The states change seldom: the comparison of the last pair is kept.
+  if (!k.compared || k.compared_units != u || !(k.cl_state == a) || !(k.program_state == b)) {
+    k.differs = {!same_tool(r, a, b), !same_feed(k.m, r, a, b, u == LengthUnit::kInch),
+                 !same_spindle(k.m, r, a, b)};
+    k.compared = true;
+    k.compared_units = u;
+    k.cl_state = a;
+    k.program_state = b;
+  }
+  const std::array<bool, 3>& differs = k.differs;
   static constexpr const char* kWhat[3] = {"tool", "feed", "spindle"};
-  const bool compared[3] = {true, !c.rapid, !c.rapid};  // feed and spindle: where it cuts
+  const bool compared[3] = {true, !c.motion.rapid,
+                            !c.motion.rapid};  // feed and spindle: where it cuts
   for (int i = 0; i < 3; ++i) {
     if (!compared[i]) continue;
     if (!differs[i]) {
@@ -171,19 +195,18 @@ void check_state(PathCheck& k, const ClMotion& c, const Move& mv) {
         : i == 1 ? std::pair{feed_text(a, u), feed_text(b, u)}
                  : std::pair{spindle_text(a, u), spindle_text(b, u)};
     if (k.reported[i] == texts) continue;
-    const CutStateAt& at = k.cl.states[c.state];
+    const CutStateAt& at = c.state;
     const uint32_t set = i == 0 ? at.tool_line : i == 1 ? at.feed_line : at.spindle_line;
-    k.problem(
-        &mv, fmt::format("{} at {}: CL {} ({} at CL line {}), program {}", kWhat[i], k.at(c),
-                         texts.first, set ? "set" : "in force", set ? set : at.line, texts.second));
+    k.problem(&mv.move, fmt::format("{} at {}: CL {} ({} at CL line {}), program {}", kWhat[i],
+                                    k.at(c.motion), texts.first, set ? "set" : "in force",
+                                    set ? set : at.line, texts.second));
     k.reported[i] = std::move(texts);
   }
 }
 
 // The end point of CL motion `c` from move `next` on: the matching move's index, or
 // moves.size() (reported).
-size_t check_end_point(PathCheck& k, const std::vector<Move>& moves, size_t next,
-                       const ClMotion& c) {
+size_t check_end_point(Check& k, const MoveWindow& moves, size_t next, const ClMotion& c) {
   if (c.thread_cuts > 0) {
     // After the thread's synchronized cuts (a run of synchronized moves each): a cycle returns
     // to its exit point after every pass.
@@ -238,40 +261,140 @@ std::string not_compared(const StateReadback& r) {
   return out;
 }
 
+// CL motion `c` against the program's moves from k.next on.
+void check_motion(Check& k, const PathStream::ClStep& step) {
+  const ClMotion& c = step.motion;
+  const MoveWindow& moves = k.moves;
+  ++k.motions;
+  // A motion to where the tool already is moves nothing, and a program need not write it (a
+  // full circle does move): it is the program's next move only when that one ends there.
+  if (c.stays && c.arc == ArcSense::kNone) {
+    if (k.next < moves.size() && near(moves[k.next].to, c.to, k.tol) && same_kind(c, moves[k.next]))
+      check_state(k, step, k.next++);
+    return;
+  }
+  const size_t j = check_end_point(k, moves, k.next, c);
+  if (j >= moves.size()) return;
+  k.next = j + 1;
+  if (!c.exit && same_kind(c, moves[j])) check_arc(k, c, moves[j]);
+  check_state(k, step, j);
+}
+
 }  // namespace
 
-PathReport verify_path(const ClPath& cl, const Toolpath& path, const Machine& m,
-                       const VerifyOptions& options, Diagnostics& nc_diags) {
-  PathReport r;
-  if (cl.motions.empty()) return r;
-  const double shown = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
-  PathCheck k(cl, path, m, options, nc_diags, shown + 1e-9);
-  const std::vector<Move> moves = all_moves(path);
-  size_t next = 0;
-  for (const ClMotion& c : cl.motions) {
-    // A motion to where the tool already is moves nothing, and a program need not write it (a
-    // full circle does move): it is the program's next move only when that one ends there.
-    if (c.stays && c.arc == ArcSense::kNone) {
-      if (next < moves.size() && near(moves[next].to, c.to, k.tol) && same_kind(c, moves[next]))
-        check_state(k, c, moves[next++]);
-      continue;
-    }
-    const size_t j = check_end_point(k, moves, next, c);
-    if (j >= moves.size()) continue;
-    next = j + 1;
-    if (!c.exit && same_kind(c, moves[j])) check_arc(k, c, moves[j]);
-    check_state(k, c, moves[j]);
+PathStream::PathStream(const Machine& m, const VerifyOptions& options,
+                       const StateReadback& readback, const LengthUnit& units, size_t window)
+    : window_(window) {
+  shown_ = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
+  k_ = std::make_unique<Check>(m, options, readback, units, shown_ + 1e-9);
+}
+
+PathStream::~PathStream() {
+  if (spill_ != nullptr) std::fclose(spill_);
+}
+
+static_assert(std::is_trivially_copyable_v<PathStream::ClStep>, "spilled as bytes");
+
+// A CL motion in order: in memory while the window has room and nothing waits on disk, else
+// on disk (a program that is written after the whole post, behind its header, comes after
+// every CL motion).
+void PathStream::queue(const ClStep& step) {
+  if (window_ == SIZE_MAX ||
+      (cl_.size() < window_ && spill_read_ == spill_written_ && spill_buffer_.empty())) {
+    cl_.push_back(step);
+    return;
   }
+  spill_buffer_.push_back(step);
+  if (spill_buffer_.size() < kSpillBatch) return;
+  if (spill_ == nullptr) spill_ = std::tmpfile();
+  if (spill_ == nullptr) return;  // no temporary file: they wait in memory
+  const bool ok =
+      std::fseek(spill_, static_cast<long>(spill_written_ * sizeof(ClStep)), SEEK_SET) == 0 &&
+      std::fwrite(spill_buffer_.data(), sizeof(ClStep), spill_buffer_.size(), spill_) ==
+          spill_buffer_.size();
+  if (!ok) return;  // they wait in memory
+  spill_written_ += spill_buffer_.size();
+  spill_buffer_.clear();
+}
+
+// The CL motions waiting on disk, then in the buffer, back in order.
+void PathStream::refill() {
+  if (spill_read_ < spill_written_) {
+    std::vector<ClStep> batch(std::min(kSpillBatch, spill_written_ - spill_read_));
+    if (std::fseek(spill_, static_cast<long>(spill_read_ * sizeof(ClStep)), SEEK_SET) == 0 &&
+        std::fread(batch.data(), sizeof(ClStep), batch.size(), spill_) == batch.size()) {
+      spill_read_ += batch.size();
+      cl_.insert(cl_.end(), batch.begin(), batch.end());
+      return;
+    }
+    spill_read_ = spill_written_;  // unreadable: those motions are lost, not compared
+  }
+  cl_.insert(cl_.end(), spill_buffer_.begin(), spill_buffer_.end());
+  spill_buffer_.clear();
+}
+
+void PathStream::cl_motion(const ClMotion& c, const CutStateAt* state) {
+  queue({c, state ? *state : CutStateAt{}, state != nullptr});
+  advance(false);
+}
+
+void PathStream::program_move(const Move& mv, const CutState* state) {
+  k_->moves.moves.push_back({mv, state ? *state : CutState{}, state != nullptr});
+  advance(false);
+}
+
+// The CL motions waiting whose window of program moves has come (all of them at the end), and
+// the moves no motion can reach any more let go: the one before the next is kept (a problem
+// may be reported at it).
+void PathStream::advance(bool at_end) {
+  MoveWindow& w = k_->moves;
+  while (!cl_.empty() && (at_end || w.size() - std::min(w.size(), k_->next) >= window_)) {
+    check_motion(*k_, cl_.front());
+    cl_.pop_front();
+    if (cl_.empty()) refill();
+  }
+  while (w.base + 1 < k_->next && !w.moves.empty()) {
+    w.moves.pop_front();
+    ++w.base;
+  }
+}
+
+PathReport PathStream::finish(size_t cl_states, Diagnostics& nc_diags) {
+  advance(true);
+  Check& k = *k_;
+  // The problems in order, after the ones found before (the threads', the holes').
+  for (const Diagnostic& d : k.diags.kept()) nc_diags.add(d.severity, d.loc, {}, d.message);
+  for (size_t i = 0; i < k.diags.dropped(); ++i) nc_diags.error({}, {}, {});  // counted only
+  PathReport r;
+  if (k.motions == 0) return r;
   r.problems = k.problems;
   r.text = k.problems == 0
                ? fmt::format(
                      "motions: {} CL end points, every one reached in order, within {:g}; {} "
                      "arc{} by {} centre; feed, spindle and tool as the CL ({} states){}\n",
-                     cl.motions.size(), shown, k.arcs, k.arcs == 1 ? "" : "s",
-                     k.arcs == 1 ? "its" : "their", cl.states.size(), not_compared(path.readback))
+                     k.motions, shown_, k.arcs, k.arcs == 1 ? "" : "s",
+                     k.arcs == 1 ? "its" : "their", cl_states, not_compared(k.readback))
                : fmt::format("FAILED: {} difference{} over {} CL motions; the first: {}\n",
-                             k.problems, k.problems == 1 ? "" : "s", cl.motions.size(), k.first);
+                             k.problems, k.problems == 1 ? "" : "s", k.motions, k.first);
   return r;
+}
+
+PathReport verify_path(const ClPath& cl, const Toolpath& path, const Machine& m,
+                       const VerifyOptions& options, Diagnostics& nc_diags) {
+  if (cl.motions.empty()) return {};
+  PathStream ps(m, options, path.readback, path.units, SIZE_MAX);
+  const auto state_of = [&](uint32_t i) {
+    return i < path.states.size() ? &path.states[i].state : nullptr;
+  };
+  size_t e = 0;  // every move in order, the entries from an unknown position among them
+  for (size_t i = 0; i <= path.moves.size(); ++i) {
+    for (; e < path.entries.size() && path.entries[e].before == i; ++e)
+      ps.program_move(path.entries[e].move, state_of(path.entries[e].move.state));
+    if (i < path.moves.size()) ps.program_move(path.moves[i], state_of(path.moves[i].state));
+  }
+  for (const ClMotion& c : cl.motions)
+    ps.cl_motion(c, c.state < cl.states.size() ? &cl.states[c.state] : nullptr);
+  return ps.finish(cl.states.size(), nc_diags);
 }
 
 }  // namespace clpost

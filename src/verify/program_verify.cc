@@ -12,6 +12,23 @@ namespace clpost {
 
 namespace {
 
+// The errors of the comparison with block delete on (`on`) that the run with block delete off
+// has not: into `diags`, marked; the count of those.
+size_t keep_block_delete(const Diagnostics& on, Diagnostics& diags) {
+  size_t added = 0;
+  const std::vector<Diagnostic> off = diags.kept();
+  for (const Diagnostic& e : on.kept()) {
+    if (e.severity != Severity::kError) continue;
+    const bool known = std::any_of(off.begin(), off.end(), [&](const Diagnostic& o) {
+      return o.loc.line == e.loc.line && o.message == e.message;
+    });
+    if (known) continue;
+    diags.error(e.loc, e.line_text, e.message + " (block delete on)");
+    ++added;
+  }
+  return added;
+}
+
 // The program with block delete on against the CL without its OPSKIP ranges: every statement
 // outside them is done exactly either way (docs/cl-meaning.md). Its differences that the run
 // with block delete off has not go into `diags`, marked; the count of those.
@@ -23,19 +40,53 @@ size_t verify_block_delete(const ClPath& cl, const Simulation& on, const Machine
     if (!mo.optional) kept.motions.push_back(mo);
   Diagnostics d(diags.file());
   const PathReport pr = verify_path(kept, on.path, m, vo, d);
-  if (pr.problems == 0) return 0;
-  size_t added = 0;
-  const std::vector<Diagnostic> off = diags.kept();
-  for (const Diagnostic& e : d.kept()) {
-    if (e.severity != Severity::kError) continue;
-    const bool known = std::any_of(off.begin(), off.end(), [&](const Diagnostic& o) {
-      return o.loc.line == e.loc.line && o.message == e.message;
-    });
-    if (known) continue;
-    diags.error(e.loc, e.line_text, e.message + " (block delete on)");
-    ++added;
+  return pr.problems == 0 ? 0 : keep_block_delete(d, diags);
+}
+
+// The report's line for differences found only with block delete on.
+void report_block_delete(size_t on, VerifyOutcome& out) {
+  if (on == 0) return;
+  out.ok = false;
+  out.report +=
+      fmt::format("block delete on: {} difference{} (see the errors)\n", on, on == 1 ? "" : "s");
+}
+
+// The program, read: its thread cuts against the plans by `threads(report)` (true: as
+// planned); with `holes` (the CL's), its holes, then its path by `path()` (its problems last).
+template <typename Threads, typename Path>
+void compare(const Simulation& sim, const std::vector<Hole>* holes, const Machine& m,
+             const VerifyOptions& vo, Diagnostics& diags, VerifyOutcome& out, Threads&& threads,
+             Path&& path) {
+  out.ok = threads(out.report);
+  if (holes != nullptr) {
+    const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
+    const PathReport pr = path();
+    out.ok = out.ok && hr.problems == 0 && pr.problems == 0;
+    out.report += hr.text + pr.text;
   }
-  return added;
+}
+
+void cannot_read(const std::string& program_name, VerifyOutcome& out) {
+  out.report =
+      fmt::format("verify {}: the program cannot be read (see the errors)\n", program_name);
+}
+
+// The diagnostics into `out`: counted, rendered, the first error for one-line summaries.
+void diagnose(const Diagnostics& diags, const std::string& program_name, VerifyOutcome& out) {
+  out.errors = diags.error_count();
+  out.diagnostics = diags.render_all();
+  for (const Diagnostic& d : diags.kept())
+    if (d.severity == Severity::kError) {
+      out.first_error = fmt::format("{}:{}: {}", program_name, d.loc.line, d.message);
+      break;
+    }
+}
+
+VerifyOptions verify_options(const std::string& plan_name, double tolerance) {
+  VerifyOptions vo;
+  vo.tolerance = tolerance;
+  vo.plan_name = plan_name;
+  return vo;
 }
 
 }  // namespace
@@ -50,35 +101,110 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
   so.keep_moves = cl != nullptr && !cl->path.motions.empty();
   so.block_delete_too = so.keep_moves;
   if (simulate_nc(src, m, diags, sim, so)) {
-    VerifyOptions vo;
-    vo.tolerance = tolerance;
-    vo.plan_name = plan_name;
-    VerifyReport report;
-    out.ok = verify_cuts(plans, sim, m, vo, diags, report);
-    out.report = verify_report_text(report, plans, program_name, m, vo);
+    const VerifyOptions vo = verify_options(plan_name, tolerance);
+    const auto threads = [&](std::string& text) {
+      VerifyReport report;
+      const bool ok = verify_cuts(plans, sim, m, vo, diags, report);
+      text = verify_report_text(report, plans, program_name, m, vo);
+      return ok;
+    };
+    compare(sim, cl ? &cl->holes : nullptr, m, vo, diags, out, threads,
+            [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
     if (cl != nullptr) {
-      const HoleReport hr = verify_holes(cl->holes, sim.holes, m, vo, diags);
-      const PathReport pr = verify_path(cl->path, sim.path, m, vo, diags);
       size_t on = 0;
       for (const Simulation& s : sim.with_block_delete)
         on += verify_block_delete(cl->path, s, m, vo, diags);
-      out.ok = out.ok && hr.problems == 0 && pr.problems == 0 && on == 0;
-      out.report += hr.text + pr.text;
-      if (on > 0)
-        out.report += fmt::format("block delete on: {} difference{} (see the errors)\n", on,
-                                  on == 1 ? "" : "s");
+      report_block_delete(on, out);
     }
   } else {
-    out.report =
-        fmt::format("verify {}: the program cannot be read (see the errors)\n", program_name);
+    cannot_read(program_name, out);
   }
-  out.errors = diags.error_count();
-  out.diagnostics = diags.render_all();
-  for (const Diagnostic& d : diags.kept())
-    if (d.severity == Severity::kError) {
-      out.first_error = fmt::format("{}:{}: {}", program_name, d.loc.line, d.message);
-      break;
+  diagnose(diags, program_name, out);
+  return out;
+}
+
+ProgramStream::ProgramStream(const std::string& program_name, const std::string& plan_name,
+                             const Machine& m, double tolerance)
+    : name_(program_name),
+      m_(m),
+      vo_(verify_options(plan_name, tolerance)),
+      diags_(program_name),
+      sim_(m, diags_, out_, options()),
+      path_(m, vo_, sim_.readback(), out_.units, kWindow),
+      path_on_(m, vo_, sim_.readback(), sim_.block_delete_units(), kWindow),
+      threads_(m, vo_) {}
+
+ProgramStream::~ProgramStream() = default;
+
+const SimOptions& ProgramStream::options() {
+  so_.keep_moves = false;
+  so_.on_move = [this](const Move& mv, const CutState& state) { path_.program_move(mv, &state); };
+  so_.block_delete_too = true;
+  so_.on_block_delete_move = [this](const Move& mv, const CutState& state) {
+    path_on_.program_move(mv, &state);
+  };
+  return so_;
+}
+
+void ProgramStream::program_text(std::string_view text) {
+  read_lines(text);
+  threads_.poll(out_.cuts);
+}
+
+void ProgramStream::read_lines(std::string_view text) {
+  // Lines end at "\n", "\r" or "\r\n", as reader::LineSource reads them.
+  while (!text.empty()) {
+    if (after_cr_ && text.front() == '\n') text.remove_prefix(1);
+    after_cr_ = false;
+    const size_t end = text.find_first_of("\r\n");
+    if (end == std::string_view::npos) {
+      partial_.append(text);
+      return;
     }
+    after_cr_ = text[end] == '\r';
+    if (partial_.empty()) {
+      line(text.substr(0, end));
+    } else {
+      partial_.append(text.substr(0, end));
+      line(partial_);
+      partial_.clear();
+    }
+    text.remove_prefix(end + 1);
+  }
+}
+
+void ProgramStream::line(std::string_view text) {
+  ++number_;
+  if (!stopped_) stopped_ = !sim_.line(number_, text);
+}
+
+void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
+  ++motions_;
+  path_.cl_motion(c, &state);
+  if (!c.optional) path_on_.cl_motion(c, &state);
+}
+
+void ProgramStream::plan(const ThreadPlan& p) {
+  threads_.plan(p, out_.cuts);
+}
+
+VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes, size_t cl_states) {
+  if (!partial_.empty()) line(partial_);
+  VerifyOutcome out;
+  if (!stopped_ && sim_.finish()) {
+    compare(
+        out_, &holes, m_, vo_, diags_, out,
+        [&](std::string& text) { return threads_.finish(out_.cuts, name_, diags_, text); },
+        [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
+    if (motions_ > 0 && out_.deleted_blocks > 0) {
+      Diagnostics on(name_);
+      if (path_on_.finish(cl_states, on).problems > 0)
+        report_block_delete(keep_block_delete(on, diags_), out);
+    }
+  } else {
+    cannot_read(name_, out);
+  }
+  diagnose(diags_, name_, out);
   return out;
 }
 

@@ -4,11 +4,13 @@
 // its thread cuts against the plans (verify.h), its holes (hole_verify.h) and its path, arcs,
 // tool, feed and spindle (path_verify.h) against the CL's.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
 #include "reader/line_source.h"
+#include "simulator/control_sim.h"
 #include "verify/path_verify.h"
 
 namespace clpost {
@@ -27,5 +29,49 @@ struct VerifyOutcome {
 VerifyOutcome verify_program(reader::LineSource& src, const std::string& program_name,
                              const std::vector<ThreadPlan>& plans, const ClExpected* cl,
                              const std::string& plan_name, const Machine& m, double tolerance);
+
+// `clpost --verify`: the program verified as it is written while its CL file is posted, as
+// verify_program would: each chunk written goes to program_text(), each CL motion to
+// cl_motion() (PostOptions::on_motion). The program is read a line at a time and the path
+// compared in a window of moves (PathStream) and the threads in a window of threads
+// (ThreadStream), so memory does not grow with the file; the holes are compared at the end.
+class ProgramStream {
+ public:
+  ProgramStream(const std::string& program_name, const std::string& plan_name, const Machine& m,
+                double tolerance);
+  ~ProgramStream();
+  void program_text(std::string_view text);
+  void cl_motion(const ClMotion& c, const CutStateAt& state);
+  // A thread's plan, as it is planned.
+  void plan(const ThreadPlan& p);
+  // Both ended: the outcome. `cl_states`: the states the CL made (ClPath::state_count).
+  VerifyOutcome finish(const std::vector<Hole>& holes, size_t cl_states);
+
+ private:
+  // Moves the path is compared ahead in: far more than a program's moves can run ahead of the
+  // CL's or behind them (the writer's buffer).
+  static constexpr size_t kWindow = 1 << 14;
+  const SimOptions& options();
+  void read_lines(std::string_view text);
+  void line(std::string_view text);
+
+  std::string name_;
+  const Machine& m_;
+  VerifyOptions vo_;
+  Diagnostics diags_;
+  Simulation out_;
+  SimOptions so_;
+  ControlSim sim_;
+  PathStream path_;
+  // The program with block delete on against the CL without its OPSKIP ranges (only reported
+  // when the program has optional blocks).
+  PathStream path_on_;
+  ThreadStream threads_;
+  std::string partial_;  // the line being written
+  uint32_t number_ = 0;
+  bool after_cr_ = false;
+  bool stopped_ = false;  // too many errors: the rest is not read
+  size_t motions_ = 0;
+};
 
 }  // namespace clpost

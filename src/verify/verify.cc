@@ -49,8 +49,10 @@ Frame frame_of(const ThreadPlan& plan) {
 // coupled or single-pass thread that begins where the one before it ended, with no move
 // between, is cut as part of that one. The program's cut is split where such a thread of the
 // plan begins, so each is compared with its own.
+// `origin` (when given): for each cut returned, the index in `cuts` of the cut it comes from.
 std::vector<NcCut> split_at_path_starts(const std::vector<NcCut>& cuts,
-                                        const std::vector<ExpectedCut>& expected, double tol) {
+                                        const std::vector<ExpectedCut>& expected, double tol,
+                                        std::vector<size_t>* origin = nullptr) {
   std::vector<Vec2> starts;  // where the plan's coupled and single-pass threads begin
   for (const ExpectedCut& e : expected)
     if (e.path) starts.push_back(e.from);
@@ -62,6 +64,9 @@ std::vector<NcCut> split_at_path_starts(const std::vector<NcCut>& cuts,
   std::vector<NcCut> out;
   out.reserve(cuts.size());
   for (const NcCut& c : cuts) {
+    // The pieces since the last resize come from the cut before this one.
+    if (origin != nullptr && !out.empty())
+      origin->resize(out.size(), static_cast<size_t>(&c - cuts.data()) - 1);
     size_t begin = 0;  // the chain index the piece being built starts at
     for (size_t k = 0; c.call < 0 && !starts.empty() && k + 1 < c.chain.size(); ++k) {
       if (!starts_at(c.chain[k])) continue;
@@ -85,6 +90,7 @@ std::vector<NcCut> split_at_path_starts(const std::vector<NcCut>& cuts,
     rest.to = rest.chain.front();
     out.push_back(std::move(rest));
   }
+  if (origin != nullptr) origin->resize(out.size(), cuts.size() - 1);
   return out;
 }
 
@@ -346,6 +352,8 @@ struct Walk {
   // The thread an unmatched program cut is reported with: the last thread seen, else the next.
   size_t last_thread = 0;
   const NcCut* last_cut = nullptr;
+  // Threads were compared before these (ThreadStream): the pair before the first was a cut.
+  bool continued = false;
 };
 
 // The program cut at index `b` of the alignment; null for none (-1).
@@ -394,7 +402,7 @@ void missing_cut(Walk& w, size_t k, const ExpectedCut& e) {
 // next; without a plan, on its own.
 void extra_cut(Walk& w, size_t k, const NcCut& c) {
   size_t t = w.last_thread;
-  if (k == 0 || w.pairs[k - 1].a < 0)
+  if (k == 0 ? !w.continued : w.pairs[k - 1].a < 0)
     for (size_t q = k + 1; q < w.pairs.size(); ++q)
       if (w.pairs[q].a >= 0) {
         if (w.last_cut == nullptr) t = w.expected[static_cast<size_t>(w.pairs[q].a)].thread;
@@ -449,29 +457,77 @@ ThreadVerdict verdict_of(ThreadAccumulator& a) {
   return std::move(v);
 }
 
+// The alignment of `plans` (all of them, or ThreadStream's window) with the program's cuts.
+struct Window {
+  std::vector<ExpectedCut> expected;
+  std::vector<size_t> origin;  // for each cut, the index in the program's cuts it comes from
+  std::vector<NcCut> cuts;
+  std::vector<size_t> order;  // the cuts in the plan's order
+  std::vector<AlignedPair> pairs;
+};
+
+// `align`: the pairs too (else only the cuts, split and in the plan's order).
+void align_window(const std::vector<ThreadPlan>& plans, const std::vector<NcCut>& program,
+                  const Comparer& cmp, double tol, Window& w, bool align = true) {
+  w.expected = expected_cuts(plans);
+  w.cuts = split_at_path_starts(program, w.expected, tol, &w.origin);
+  w.order = cutting_order(w.cuts);
+  if (!align) return;
+  w.pairs = align_sequences(w.expected.size(), w.order.size(), [&](size_t i, size_t j) {
+    return cmp.compare(w.expected[i], w.cuts[w.order[j]], false).cost;
+  });
+}
+
+// Walks pairs [0, end) of the window; the verdicts of its first `threads` threads.
+std::vector<ThreadVerdict> walk_window(Walk& w, size_t end, size_t threads) {
+  w.threads.resize(threads);
+  for (size_t t = 0; t < threads; ++t) w.threads[t].verdict.plan = t;
+  for (const ExpectedCut& e : w.expected)
+    if (e.thread < threads) ++w.threads[e.thread].verdict.planned;
+  for (size_t k = 0; k < end; ++k) walk_pair(w, k);
+  std::vector<ThreadVerdict> out;
+  for (ThreadAccumulator& a : w.threads) out.push_back(verdict_of(a));
+  return out;
+}
+
+std::string report_header(const std::string& program_name, const Machine& m,
+                          const VerifyOptions& options, size_t threads, size_t planned,
+                          size_t cut) {
+  return fmt::format("verify {} on {} against {}: {} threads, {} passes planned, {} cut\n",
+                     program_name, m.name, options.plan_name, threads, planned, cut);
+}
+
+std::string thread_lines(const ThreadVerdict& v, const ThreadPlan& p,
+                         const VerifyOptions& options) {
+  std::string out =
+      fmt::format("  {}:{:<5} {:>3} passes  {:<6} {}\n", options.plan_name, p.loc.line, v.planned,
+                  v.problems.empty() ? "ok" : "DIFFERS", v.how);
+  for (const std::string& n : v.notes) out += fmt::format("      note: {}\n", n);
+  for (const std::string& pr : v.problems) out += fmt::format("      {}\n", pr);
+  return out;
+}
+
+std::string report_verdict(size_t problems, double tolerance, bool mm) {
+  const char* unit = mm ? "mm" : "in";
+  if (problems == 0)
+    return fmt::format("ok: every pass is cut as planned, within {:g} {}\n", tolerance, unit);
+  return fmt::format("FAILED: {} difference{} beyond {:g} {}\n", problems, problems == 1 ? "" : "s",
+                     tolerance, unit);
+}
+
 }  // namespace
 
 bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, const Machine& m,
                  const VerifyOptions& options, Diagnostics& nc_diags, VerifyReport& report) {
   report = VerifyReport{};
   report.tolerance = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
-  const std::vector<ExpectedCut> expected = expected_cuts(plans);
-  const std::vector<NcCut> cuts = split_at_path_starts(sim.cuts, expected, report.tolerance);
-  const std::vector<size_t> order = cutting_order(cuts);
-  report.planned_passes = expected.size();
-  report.program_cuts = order.size();
-
   const Comparer cmp(plans, m, report.tolerance);
-  const std::vector<AlignedPair> pairs = align_sequences(
-      expected.size(), order.size(),
-      [&](size_t i, size_t j) { return cmp.compare(expected[i], cuts[order[j]], false).cost; });
-
-  Walk w{plans, expected, cuts, order, pairs, cmp, options, nc_diags};
-  w.threads.resize(plans.size());
-  for (size_t t = 0; t < plans.size(); ++t) w.threads[t].verdict.plan = t;
-  for (const ExpectedCut& e : expected) ++w.threads[e.thread].verdict.planned;
-  for (size_t k = 0; k < pairs.size(); ++k) walk_pair(w, k);
-  for (ThreadAccumulator& a : w.threads) report.threads.push_back(verdict_of(a));
+  Window win;
+  align_window(plans, sim.cuts, cmp, report.tolerance, win);
+  report.planned_passes = win.expected.size();
+  report.program_cuts = win.order.size();
+  Walk w{plans, win.expected, win.cuts, win.order, win.pairs, cmp, options, nc_diags};
+  report.threads = walk_window(w, win.pairs.size(), plans.size());
   report.problems = w.problems;
   return report.problems == 0;
 }
@@ -479,25 +535,110 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
 std::string verify_report_text(const VerifyReport& report, const std::vector<ThreadPlan>& plans,
                                const std::string& program_name, const Machine& m,
                                const VerifyOptions& options) {
-  std::string out = fmt::format(
-      "verify {} on {} against {}: {} threads, {} passes planned, {} cut\n", program_name, m.name,
-      options.plan_name, plans.size(), report.planned_passes, report.program_cuts);
-  for (const ThreadVerdict& v : report.threads) {
-    const ThreadPlan& p = plans[v.plan];
-    out += fmt::format("  {}:{:<5} {:>3} passes  {:<6} {}\n", options.plan_name, p.loc.line,
-                       v.planned, v.problems.empty() ? "ok" : "DIFFERS", v.how);
-    for (const std::string& n : v.notes) out += fmt::format("      note: {}\n", n);
-    for (const std::string& pr : v.problems) out += fmt::format("      {}\n", pr);
+  std::string out = report_header(program_name, m, options, plans.size(), report.planned_passes,
+                                  report.program_cuts);
+  for (const ThreadVerdict& v : report.threads) out += thread_lines(v, plans[v.plan], options);
+  return out + report_verdict(report.problems, report.tolerance,
+                              plans.empty() || plans.front().units == LengthUnit::kMm);
+}
+
+ThreadStream::ThreadStream(const Machine& m, const VerifyOptions& options)
+    : m_(m),
+      options_(options),
+      tolerance_(options.tolerance > 0 ? options.tolerance : cut_tolerance(m)) {}
+
+ThreadStream::~ThreadStream() = default;
+
+void ThreadStream::plan(const ThreadPlan& p, std::vector<NcCut>& cuts) {
+  if (!mm_) mm_ = p.units == LengthUnit::kMm;
+  plans_.push_back(p);
+  if (plans_.size() >= attempt_at_) poll(cuts);
+}
+
+void ThreadStream::poll(std::vector<NcCut>& cuts) {
+  while (plans_.size() >= kWindow && cuts.size() >= retry_at_ && flush(cuts)) {
   }
-  const char* unit = plans.empty() || plans.front().units == LengthUnit::kMm ? "mm" : "in";
-  if (report.problems == 0) {
-    out +=
-        fmt::format("ok: every pass is cut as planned, within {:g} {}\n", report.tolerance, unit);
-  } else {
-    out += fmt::format("FAILED: {} difference{} beyond {:g} {}\n", report.problems,
-                       report.problems == 1 ? "" : "s", report.tolerance, unit);
+}
+
+namespace {
+
+// How many leading passes of the window the program cuts as planned, one by one in order: the
+// plan's i-th pass is the same cut in the same place as the program's i-th cut.
+size_t exact_prefix(const Window& w, const Comparer& cmp) {
+  size_t n = 0;
+  for (; n < std::min(w.expected.size(), w.order.size()); ++n)
+    if (w.order[n] != n || cmp.compare(w.expected[n], w.cuts[n], false).cost != 0) break;
+  return n;
+}
+
+// The last pair where a thread of the window begins that a flush may end before: `ahead` exact
+// pairs after it, `margin` threads after it in the window, not inside one program cut or one
+// cycle call, not at the last program cut (the simulation may still add to it); 0: none.
+size_t flush_point(const Window& w, size_t exact, size_t ahead, size_t margin, size_t threads,
+                   size_t program_cuts) {
+  size_t end = 0;
+  for (size_t i = 1; i + ahead <= exact; ++i) {
+    const size_t t = w.expected[i].thread;
+    if (t == w.expected[i - 1].thread || t + margin > threads) continue;
+    if (w.origin[i] == w.origin[i - 1] || w.origin[i] + 1 >= program_cuts) continue;
+    if (w.cuts[i].call >= 0 && w.cuts[i].call == w.cuts[i - 1].call) continue;
+    end = i;
   }
-  return out;
+  return end;
+}
+
+}  // namespace
+
+bool ThreadStream::flush(std::vector<NcCut>& cuts) {
+  // The leading threads, and enough of the program's cuts for their passes.
+  const std::vector<ThreadPlan> head(
+      plans_.begin(), plans_.begin() + static_cast<long>(std::min(plans_.size(), 2 * kWindow)));
+  const Comparer cmp(head, m_, tolerance_);
+  Window win;
+  const size_t passes = expected_cuts(head).size();
+  const std::vector<NcCut> front(
+      cuts.begin(), cuts.begin() + static_cast<long>(std::min(cuts.size(), passes + 1)));
+  align_window(head, front, cmp, tolerance_, win, false);
+  const size_t end =
+      flush_point(win, exact_prefix(win, cmp), kAhead, kMargin, head.size(), cuts.size());
+  if (end == 0) {  // not now: when twice as many threads wait, or more cuts are read
+    attempt_at_ = plans_.size() * 2;
+    retry_at_ = cuts.size() + kRetryCuts;
+    return false;
+  }
+  attempt_at_ = kWindow;
+  retry_at_ = 0;
+  for (size_t i = 0; i < end; ++i)
+    win.pairs.push_back({static_cast<long>(i), static_cast<long>(i)});
+  const size_t threads = win.expected[end].thread;
+  Diagnostics none("");  // an exact prefix has no problems
+  Walk w{head, win.expected, win.cuts, win.order, win.pairs, cmp, options_, none};
+  for (const ThreadVerdict& v : walk_window(w, end, threads))
+    lines_ += thread_lines(v, head[v.plan], options_);
+  threads_ += threads;
+  planned_ += end;
+  cut_ += end;
+  last_cut_ = win.cuts[end - 1];
+  plans_.erase(plans_.begin(), plans_.begin() + static_cast<long>(threads));
+  cuts.erase(cuts.begin(), cuts.begin() + static_cast<long>(win.origin[end]));
+  return true;
+}
+
+bool ThreadStream::finish(const std::vector<NcCut>& cuts, const std::string& program_name,
+                          Diagnostics& nc_diags, std::string& text) {
+  const Comparer cmp(plans_, m_, tolerance_);
+  Window win;
+  align_window(plans_, cuts, cmp, tolerance_, win);
+  Walk w{plans_, win.expected, win.cuts, win.order, win.pairs, cmp, options_, nc_diags};
+  w.continued = last_cut_.has_value();
+  w.last_cut = last_cut_ ? &*last_cut_ : nullptr;
+  const std::vector<ThreadVerdict> verdicts = walk_window(w, win.pairs.size(), plans_.size());
+  text = report_header(program_name, m_, options_, threads_ + plans_.size(),
+                       planned_ + win.expected.size(), cut_ + win.order.size()) +
+         lines_;
+  for (const ThreadVerdict& v : verdicts) text += thread_lines(v, plans_[v.plan], options_);
+  text += report_verdict(w.problems, tolerance_, mm_.value_or(true));
+  return w.problems == 0;
 }
 
 }  // namespace clpost

@@ -3,6 +3,7 @@
 // synchronized cuts (simulator/control_sim.h: every cycle expanded with its control's law) are
 // lined up with the plan's passes (cut_alignment.h) and compared pass by pass: start, depth,
 // shift, where each cut starts and ends, the pull-out, the lead.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,5 +49,44 @@ bool verify_cuts(const std::vector<ThreadPlan>& plans, const Simulation& sim, co
 std::string verify_report_text(const VerifyReport& report, const std::vector<ThreadPlan>& plans,
                                const std::string& program_name, const Machine& m,
                                const VerifyOptions& options);
+
+// `clpost --verify`: the threads compared as their plans and the program's cuts come, so that
+// memory does not grow with the file. Once kWindow threads wait, the leading threads (of the
+// first 2 kWindow) that the
+// program cuts exactly as planned (kAhead exact pairs after them, kMargin threads left) are
+// finished: their report lines written, their plans and cuts let go. The rest is compared at
+// the end as verify_cuts compares, every difference reported as verify_cuts reports it (a cut
+// the plan does not have right after finished threads is reported with the next thread).
+class ThreadStream {
+ public:
+  ThreadStream(const Machine& m, const VerifyOptions& options);
+  ~ThreadStream();
+  // A plan, in order; `cuts`: the program's cuts read so far (those finished are taken out).
+  void plan(const ThreadPlan& p, std::vector<NcCut>& cuts);
+  // More of the program's cuts read (those finished are taken out).
+  void poll(std::vector<NcCut>& cuts);
+  // The end: the threads left compared (problems into `nc_diags`) and the report as
+  // verify_report_text writes it into `text`. True when the program cuts the plan.
+  bool finish(const std::vector<NcCut>& cuts, const std::string& program_name,
+              Diagnostics& nc_diags, std::string& text);
+
+ private:
+  static constexpr size_t kWindow = 64;
+  static constexpr size_t kAhead = 16;
+  static constexpr size_t kMargin = 8;
+  static constexpr size_t kRetryCuts = 256;  // cuts read before a flush is tried again
+  bool flush(std::vector<NcCut>& cuts);
+
+  const Machine& m_;
+  VerifyOptions options_;
+  double tolerance_;
+  std::vector<ThreadPlan> plans_;               // the threads waiting
+  size_t attempt_at_ = kWindow;                 // the next flush is tried when this many wait
+  size_t retry_at_ = 0;                         // or when this many cuts are read
+  size_t threads_ = 0, planned_ = 0, cut_ = 0;  // finished threads, their passes and cuts
+  std::string lines_;                           // their report lines
+  std::optional<bool> mm_;                      // the first plan's units
+  std::optional<NcCut> last_cut_;               // the last cut finished
+};
 
 }  // namespace clpost
