@@ -153,7 +153,8 @@ TEST(CycleTime, HeaderOnFanucInItsCommentStyle) {
   PostedText r = post_text(kTwoTools, shipped("fanuc-0i-t"), "shaft.cl");
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
   // Upper case, the parentheses of "(R0.8)" dropped (a Fanuc comment cannot hold them) and the
-  // '%' (the control's end-of-tape character, not allowed in its comments), not numbered (the control's blocks need no N), after the start's N10 and before the body's N20.
+  // '%' (the control's end-of-tape character, not allowed in its comments), not numbered (the
+  // control's blocks need no N), after the start's N10 and before the body's N20.
   const std::string expected =
       "%\nO0001\nN10 G18 G21 G40 G97\n"
       "(PROGRAM SHAFT 7, MACHINE FANUC-0I-T)\n"
