@@ -74,7 +74,9 @@ std::optional<Check> spindle(const Event& m, const Event& r) {
   return std::nullopt;
 }
 
-// Feeds to half the last digit of F (4 decimals in the program's unit), at least 1e-4 mm.
+// Feeds to half the last digit rs274 prints (4 decimals in the program's unit), at least 1e-4 mm.
+// In inch the program's F has 6 decimals (posts/linuxcnc.yaml) and rs274 rounds that again to 4:
+// half a digit of each (F2.30185 for 2.3018504 in/min, printed 2.3018).
 std::optional<Check> feed(const Event& m, const Event& r) {
   if (m.kind != Event::Kind::kMotion ||
       (m.motion != MotionKind::kFeed && m.motion != MotionKind::kArc))
@@ -84,7 +86,8 @@ std::optional<Check> feed(const Event& m, const Event& r) {
   if (a.feed_mode != b.feed_mode)
     return differs("feed mode", mode[static_cast<int>(a.feed_mode)] + 1,
                    mode[static_cast<int>(b.feed_mode)] + 1);
-  const double tol = std::max(kPointTolerance, r.inch ? 0.5e-4 * kMmPerInch : 0.5e-4);
+  const double tol =
+      std::max(kPointTolerance, r.inch ? (0.5e-4 + 0.5e-6) * kMmPerInch : 0.5e-4) + 1e-9;
   if (!b.feed_given || !near(a.feed, b.feed, tol))
     return differs("feed", num(a.feed) + mode[static_cast<int>(a.feed_mode)],
                    num(b.feed) + mode[static_cast<int>(b.feed_mode)] + (r.inch ? " (G20)" : ""));
