@@ -117,6 +117,41 @@ TEST(ClMeaningMachines, OpskipProgramsVerifyWithBlockDeleteOffAndOn) {
   fs::remove_all(dir);
 }
 
+// A program with an optional block where its CL has no OPSKIP range: the CL says to do every
+// block either way, so verify refuses it, at that block, whether the program streams to
+// --verify behind its header, without one, or is read whole by `clpost verify --cl`. (clpost
+// writes '/' only for OPSKIP; here a program_end template asks for one.)
+TEST(ClMeaningMachines, VerifyRefusesAnOptionalBlockTheClDoesNotHave) {
+  const std::string dir = temp_dir();
+  const std::string cl = std::string(kHead) + "GOTO/20,0,5\nGOTO/10,0,-5\nFINI\n";
+  write_file(dir + "/t.cl", cl);
+  const std::string sets =
+      " --set block_numbers.enabled=false --set 'templates.program_end=[\"/M1\",\"M30\",\"%\"]'";
+  for (const std::string header : {"", " --set 'templates.program_header=[]'"}) {
+    const std::string nc = dir + "/t.nc";
+    const std::string post = quote(clpost_bin()) + " -m fanuc-0i-t" + sets + header;
+    const RunResult v = run(post + " --verify -o " + quote(nc) + " " + quote(dir + "/t.cl"));
+    EXPECT_EQ(v.exit_code, 1) << header;
+    EXPECT_FALSE(file_exists(nc)) << header;
+    ASSERT_EQ(run(post + " -o " + quote(nc) + " " + quote(dir + "/t.cl")).exit_code, 0);
+    const std::string program = read_file(nc);
+    const size_t at = program.find("/M1\n");
+    ASSERT_NE(at, std::string::npos) << program;
+    const std::string line =
+        std::to_string(1 + std::count(program.begin(), program.begin() + at, '\n'));
+    const std::string error = nc + ":" + line +
+                              ":1: error: an optional block ('/'), where the CL has no OPSKIP "
+                              "range\n  /M1\n  ^\n";
+    EXPECT_NE(v.err.find(error), std::string::npos) << header << "\n" << v.err;
+    const RunResult w = run(quote(clpost_bin()) + " verify -m fanuc-0i-t" + sets + header + " " +
+                            quote(nc) + " --cl " + quote(dir + "/t.cl"));
+    EXPECT_EQ(w.exit_code, 1) << header;
+    EXPECT_EQ(w.err, error) << header;
+    fs::remove(nc);
+  }
+  fs::remove_all(dir);
+}
+
 // verify runs a program with optional blocks with block delete off and on. The program of case E
 // as it was before its fix (the block after the range did not state X again) is right with block
 // delete off, and wrong with it on: N60 cuts to X40. Z-10., not the CL's X20. Z-10. The error is

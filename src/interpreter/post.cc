@@ -45,12 +45,6 @@ std::string program_name(const std::string& partno, const std::string& file) {
   return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
 }
 
-// Whether the machine writes a program_header (an empty list writes none).
-bool has_header(const Machine& m) {
-  auto h = m.templates.find(std::string(tmpl::kProgramHeader.name));
-  return h != m.templates.end() && !h->second.empty();
-}
-
 // Opens the spool in `dir`: empty, or why it cannot be.
 std::string open_spool(SpoolFile& spool, const std::string& dir) {
   std::string error;
@@ -66,7 +60,7 @@ PostRun::PostRun(const Machine& m, Sink& out, Diagnostics& diags, const PostOpti
       machine_(m),
       out_(out),
       diags_(diags),
-      header_(has_header(m)),
+      header_(writes_program_header(m)),
       spool_error_(header_ ? open_spool(body_, opts.spool_dir) : std::string()),
       // A header needs the whole program's times: the program waits on disk for it.
       prog_(machine_, header_ ? static_cast<Sink&>(body_) : out),

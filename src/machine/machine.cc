@@ -27,4 +27,9 @@ const std::string& Machine::code(const std::string& key) const {
   return it == codes.end() ? kEmpty : it->second;
 }
 
+bool writes_program_header(const Machine& m) {
+  auto h = m.templates.find(std::string(tmpl::kProgramHeader.name));
+  return h != m.templates.end() && !h->second.empty();
+}
+
 }  // namespace clpost

@@ -174,4 +174,8 @@ inline double diameter_factor(const Machine& m) {
   return diameter_factor(m.diameter_output);
 }
 
+// Whether `m` writes a program_header (an empty list writes none). Its program is then written
+// only once the whole CL file is posted (interpreter/post.h).
+bool writes_program_header(const Machine& m);
+
 }  // namespace clpost

@@ -430,6 +430,9 @@ struct ControlSim::Impl {
   NcBlock block;
   NcLexError lex_error;
   std::optional<BlockDeleteRun> on;
+  bool on_runs = true;          // false: no_optional_blocks()
+  uint32_t first_optional = 0;  // the line of the first optional block
+  std::string first_optional_text;
 };
 
 ControlSim::ControlSim(const Machine& m, Diagnostics& diags, Simulation& out,
@@ -443,6 +446,10 @@ ControlSim::ControlSim(const Machine& m, Diagnostics& diags, Simulation& out,
 }
 
 ControlSim::~ControlSim() = default;
+
+void ControlSim::no_optional_blocks() {
+  impl_->on_runs = false;
+}
 
 const LengthUnit& ControlSim::block_delete_units() const {
   return impl_->on ? impl_->on->sim.units : impl_->s.out.units;
@@ -462,8 +469,9 @@ bool ControlSim::line(uint32_t number, std::string_view text) {
     s.ok = false;
   } else {
     run_block(s, impl_->block, impl_->codes);
-    s.out.deleted_blocks += impl_->block.block_delete ? 1 : 0;
-    if (impl_->on && !impl_->block.block_delete) {
+    if (impl_->block.block_delete && s.out.deleted_blocks++ == 0)
+      s.out.first_optional = {number, std::string(text)};
+    if (impl_->on && impl_->on_runs && !impl_->block.block_delete) {
       State& on = impl_->on->state;
       on.line = number;
       on.line_text = s.line_text;
@@ -484,7 +492,7 @@ void ControlSim::unreadable() {
 bool ControlSim::finish() {
   State& s = impl_->s;
   finish_run(s, impl_->codes);
-  if (impl_->on && s.out.deleted_blocks > 0) {
+  if (impl_->on && impl_->on_runs && s.out.deleted_blocks > 0) {
     BlockDeleteRun& on = *impl_->on;
     finish_run(on.state, impl_->codes);
     keep_block_delete_errors(on.diags, s.diags);

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "machine/machine.h"
@@ -59,6 +60,7 @@ struct Simulation {
   int calls = 0;            // cycle calls expanded
   std::vector<SimHole> holes;
   size_t deleted_blocks = 0;  // blocks marked optional ('/'), which block delete skips
+  std::pair<uint32_t, std::string> first_optional;  // the first one's line and text
   // With SimOptions::block_delete_too and optional blocks: the run with block delete on (one).
   std::vector<Simulation> with_block_delete;
 };
@@ -94,6 +96,10 @@ class ControlSim {
   // The units of the run with block delete on (SimOptions::block_delete_too), as read so far;
   // without it, those of the run.
   const LengthUnit& block_delete_units() const;
+  // Before the first line: the caller knows the program has no optional block to come (its CL
+  // has no OPSKIP range), so the run with block delete on is not made. Should one come all the
+  // same, the caller reports it (verify: optional_without_opskip).
+  void no_optional_blocks();
 
  private:
   struct Impl;

@@ -43,6 +43,15 @@ size_t verify_block_delete(const ClPath& cl, const Simulation& on, const Machine
   return pr.problems == 0 ? 0 : keep_block_delete(d, diags);
 }
 
+// A program with optional blocks ('/') where its CL has no OPSKIP range: the CL says to do
+// every block, whether block delete is on or off. An error at the first one.
+void optional_without_opskip(const Simulation& sim, Diagnostics& diags, VerifyOutcome& out) {
+  if (sim.deleted_blocks == 0) return;
+  diags.error(SourceLoc{sim.first_optional.first, 1}, sim.first_optional.second,
+              "an optional block ('/'), where the CL has no OPSKIP range");
+  out.ok = false;
+}
+
 // The report's line for differences found only with block delete on.
 void report_block_delete(size_t on, VerifyOutcome& out) {
   if (on == 0) return;
@@ -110,6 +119,9 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
     };
     compare(sim, cl ? &cl->holes : nullptr, m, vo, diags, out, threads,
             [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
+    if (cl != nullptr && std::none_of(cl->path.motions.begin(), cl->path.motions.end(),
+                                      [](const ClMotion& c) { return c.optional; }))
+      optional_without_opskip(sim, diags, out);
     if (cl != nullptr) {
       size_t on = 0;
       for (const Simulation& s : sim.with_block_delete)
@@ -174,12 +186,15 @@ void ProgramStream::read_lines(std::string_view text) {
 }
 
 void ProgramStream::line(std::string_view text) {
-  ++number_;
+  // Behind a header the whole CL is posted before the program's first line: without an OPSKIP
+  // range in it, the run with block delete on is not needed.
+  if (++number_ == 1 && writes_program_header(m_) && !optional_motions_) sim_.no_optional_blocks();
   if (!stopped_) stopped_ = !sim_.line(number_, text);
 }
 
 void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
   ++motions_;
+  optional_motions_ = optional_motions_ || c.optional;
   path_.cl_motion(c, &state);
   if (!c.optional) path_on_.cl_motion(c, &state);
 }
@@ -196,7 +211,8 @@ VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes, size_t cl_st
         out_, &holes, m_, vo_, diags_, out,
         [&](std::string& text) { return threads_.finish(out_.cuts, name_, diags_, text); },
         [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
-    if (motions_ > 0 && out_.deleted_blocks > 0) {
+    if (motions_ > 0 && !optional_motions_) optional_without_opskip(out_, diags_, out);
+    if (motions_ > 0 && !out_.with_block_delete.empty()) {
       Diagnostics on(name_);
       if (path_on_.finish(cl_states, on).problems > 0)
         report_block_delete(keep_block_delete(on, diags_), out);

@@ -72,6 +72,7 @@ class ProgramStream {
   bool after_cr_ = false;
   bool stopped_ = false;  // too many errors: the rest is not read
   size_t motions_ = 0;
+  bool optional_motions_ = false;  // a CL motion in an OPSKIP range
 };
 
 }  // namespace clpost
