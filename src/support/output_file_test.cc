@@ -12,24 +12,12 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "support/temp_dir_test_util.h"
 
 namespace clpost {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct TempDir {
-  TempDir() {
-    std::string templ = (fs::temp_directory_path() / "clpost-output-XXXXXX").string();
-    path = ::mkdtemp(templ.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-  size_t entries() const {
-    return static_cast<size_t>(
-        std::distance(fs::directory_iterator(path), fs::directory_iterator()));
-  }
-  std::string path;
-};
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -39,7 +27,7 @@ std::string slurp(const std::string& path) {
 }
 
 TEST(OutputFile, RegularFileAppearsOnlyAtCommit) {
-  TempDir d;
+  TempDir d("clpost-output");
   const std::string path = d.path + "/part.nc";
   OutputFile out;
   std::string err;
@@ -60,7 +48,7 @@ TEST(OutputFile, RegularFileAppearsOnlyAtCommit) {
 TEST(OutputFile, SmallWritesAcrossTheBufferKeepEveryByteInOrder) {
   // Blocks are copied into the 64 KiB buffer inline and flushed when one does not fit: about
   // 300 KB of them cross the buffer's end several times, mid-block.
-  TempDir d;
+  TempDir d("clpost-output");
   const std::string path = d.path + "/many.nc";
   OutputFile out;
   std::string err;
@@ -79,7 +67,7 @@ TEST(OutputFile, SmallWritesAcrossTheBufferKeepEveryByteInOrder) {
 }
 
 TEST(OutputFile, AbortLeavesTheOldFileAndNoTemporary) {
-  TempDir d;
+  TempDir d("clpost-output");
   const std::string path = d.path + "/part.nc";
   std::ofstream(path) << "good program\n";
   {
@@ -100,7 +88,7 @@ TEST(OutputFile, AbortLeavesTheOldFileAndNoTemporary) {
 }
 
 TEST(OutputFile, MissingDirectoryIsAnErrorAtOpen) {
-  TempDir d;
+  TempDir d("clpost-output");
   const std::string path = d.path + "/no/such/dir/part.nc";
   OutputFile out;
   std::string err;
@@ -141,7 +129,7 @@ TEST(OutputFile, DevFullIsAWriteErrorSmallOrLarge) {
 }
 
 TEST(OutputFile, PipeIsStreamedNotRenamedOver) {
-  TempDir d;
+  TempDir d("clpost-output");
   const std::string fifo = d.path + "/fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const int rd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
@@ -174,7 +162,7 @@ TEST(OutputFile, PipeIsStreamedNotRenamedOver) {
 }
 
 TEST(OutputFile, SymlinkToAFileReplacesTheFileAndKeepsTheLink) {
-  TempDir d;
+  TempDir d("clpost-output");
   fs::create_directory(d.path + "/real");
   std::ofstream(d.path + "/real/part.nc") << "old\n";
   fs::create_symlink("real/part.nc", d.path + "/link.nc");
@@ -192,7 +180,7 @@ TEST(OutputFile, SymlinkToAFileReplacesTheFileAndKeepsTheLink) {
 // A batch publishes its programs together: finish() writes a program out without publishing
 // it; publish_all() makes all of them appear, each with its own result.
 TEST(OutputFile, FinishedFilesAppearOnlyWhenPublished) {
-  TempDir d;
+  TempDir d("clpost-output");
   std::vector<std::unique_ptr<OutputFile>> outs;
   std::vector<OutputFile*> files;
   std::string err;
@@ -220,7 +208,7 @@ TEST(OutputFile, FinishedFilesAppearOnlyWhenPublished) {
 }
 
 TEST(OutputFile, FinishedButNeverPublishedLeavesNothing) {
-  TempDir d;
+  TempDir d("clpost-output");
   {
     OutputFile out;
     std::string err;

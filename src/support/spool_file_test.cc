@@ -5,29 +5,17 @@
 
 #include <filesystem>
 #include <string>
+#include "support/temp_dir_test_util.h"
 
 namespace clpost {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  TempDir() {
-    std::string templ = (fs::temp_directory_path() / "clpost-spool-XXXXXX").string();
-    path = ::mkdtemp(templ.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-  size_t entries() const {
-    return static_cast<size_t>(
-        std::distance(fs::directory_iterator(path), fs::directory_iterator()));
-  }
-  std::string path;
-};
-
 // A body larger than the buffer, small writes and one larger than the buffer; the insert after
 // its first two lines; the file never has a name in the directory.
 TEST(SpoolFile, InsertsAfterTheFirstLinesAndLeavesNoFile) {
-  TempDir dir;
+  TempDir dir("clpost-spool");
   std::string expected_body = "%\nO0001\n";
   SpoolFile spool;
   std::string error;
