@@ -216,7 +216,10 @@ void time_hole(PostState& s, const Hole& h) {
 }
 
 std::string time_text(double seconds) {
-  const double tenths = std::round(seconds * 10);
+  constexpr double kLongest = 1e6 * 3600;  // a million hours: past it the text says "over"
+  if (std::isnan(seconds)) return "not known";
+  if (seconds >= kLongest) return "over 1000000:00:00";
+  const double tenths = std::round(std::max(0.0, seconds) * 10);
   const long long whole = static_cast<long long>(tenths) / 10;
   const int frac = static_cast<int>(static_cast<long long>(tenths) % 10);
   const long long h = whole / 3600, m = whole / 60 % 60, sec = whole % 60;

@@ -68,7 +68,8 @@ struct CycleTime {
   }
 };
 
-// "0:42.5" (minutes:seconds to 0.1 s), "1:02:03.0" past an hour.
+// "0:42.5" (minutes:seconds to 0.1 s), "1:02:03.0" past an hour; "over 1000000:00:00" for a
+// longer time (a CL with an absurd feed or distance), "not known" for one that is not a number.
 std::string time_text(double seconds);
 // The tool list and times as text lines ("T1 D1 ...", then "total ..."), for clpost check and
 // the NC header; each line without a line ending, in `units`.

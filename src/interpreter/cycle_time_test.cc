@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <numbers>
 
@@ -185,6 +187,10 @@ TEST(CycleTime, TimeText) {
   EXPECT_EQ(time_text(0), "0:00.0");
   EXPECT_EQ(time_text(59.96), "1:00.0");
   EXPECT_EQ(time_text(3723.04), "1:02:03.0");
+  // What a fuzzed CL reached through the header: an infinite time (was a cast out of range).
+  EXPECT_EQ(time_text(3.6e9 - 0.1), "999999:59:59.9");
+  EXPECT_EQ(time_text(std::numeric_limits<double>::infinity()), "over 1000000:00:00");
+  EXPECT_EQ(time_text(std::numeric_limits<double>::quiet_NaN()), "not known");
 }
 
 }  // namespace
