@@ -128,6 +128,33 @@ TEST(Holes, AnEditedPeckWordFails) {
 // Centre drill: R2 -> Z-3 (depth 3 below the face Z0), dwell 0.5 s. Peck drill, R plane Z2,
 // pecks of 5 counted from it: -3, -8, -13, -18 and the bottom -22 (22 deep). Tap: RIGID_TAP to
 // Z-16 at 1.5 per revolution.
+// A face hole of a live tool (docs/millturn.md): verify checks its X and C against the CL.
+// The bolt circle on linuxcnc-lathe-c verifies; its second hole's C moved by 1 degree (C91, the
+// hole 0.5236 mm = 30 x pi/180 along its circle) fails naming the hole.
+TEST(Holes, AFaceHoleMovedOneDegreeInCFails) {
+  const std::string cl = "tests/data/millturn-face-holes.apt", dir = temp_dir();
+  const std::string ngc = dir + "/holes.ngc", moved = dir + "/moved.ngc";
+  RunResult post = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " --verify -m linuxcnc-lathe-c -o " + quote(ngc) + " " + cl);
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  EXPECT_NE(post.err.find("holes (4 on the face at their X and C): 4 in the CL, 4 in the program"),
+            std::string::npos)
+      << post.err;
+  std::string text = read_file(ngc);
+  const size_t at = text.find("G0 C90.\n");
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, 8, "G0 C91.\n");
+  write_file(moved, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m linuxcnc-lathe-c " + quote(moved) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1) << r.err << r.out;
+  EXPECT_EQ(first_error(r), moved + ":19:1: error: hole at " + cl +
+                                ":11: at C91.0000, CL C90.0000 (0.5236 mm along the circle of "
+                                "radius 30.0000)")
+      << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
   if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
   const std::string dir = temp_dir();

@@ -112,7 +112,8 @@ bool milling_motion_refused(PostState& s, const Statement& st) {
     error(
         s, st, st.loc,
         fmt::format("milling motion with live tool {} (loaded at line {}) is not supported yet: "
-                    "clpost writes no XZC, Y or hole motion for a milling tool (docs/millturn.md)",
+                    "clpost writes no XZC or Y motion for a milling tool, only the holes of a hole "
+                    "cycle (docs/millturn.md)",
                     s.tool.number, s.tool_line));
   }
   return true;
