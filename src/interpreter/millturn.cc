@@ -105,6 +105,13 @@ void release_c(PostState& s) {
   s.c = CAxisState{};
 }
 
+bool live_xz_move(const PostState& s, Point3 p) {
+  if (!s.tool.mills() || s.hole_axis_radial) return false;
+  if (std::fabs(axis_value(p, third_axis(s))) > 1e-4) return false;
+  if (!s.c.angle && std::fabs(cl2(s, p).x) > 1e-4) return false;
+  return s.rapid_next || s.feed_mode != FeedMode::kPerRev;
+}
+
 bool milling_motion_refused(PostState& s, const Statement& st) {
   if (!s.tool.mills()) return false;
   if (!s.mill_motion_reported) {

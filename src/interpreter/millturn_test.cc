@@ -250,6 +250,26 @@ TEST(MillTurn, FaceHolesAtXWithCOnLinuxcncLatheC) {
             "G98 G94 G81 X60. Y0 Z-8. R2. F100.\nG80\nG18\nM5 $1\nM2\n%\n");
 }
 
+// The approach of a live tool at the C index is an XZ move (Y 0, C indexed): written as a
+// lathe's rapid; before any ROTABL, or off the X axis, it stays the milling-motion error.
+TEST(MillTurn, ALiveToolsXzMoveAtTheCIndexIsWritten) {
+  std::string cl = kFaceHoles;
+  cl.replace(cl.find("FROM/30,0,5"), 11, "RAPID\nGOTO/30,0,5");
+  Posted p = post(cl, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C0.\nG0 X60. Z5.\n(hole at CL line 8: drilling at X60. C0. to Z-8.)\n"
+                      "G17\nG98 G94 G81 X60. Y0 Z-8. R2. F100.\n"),
+            std::string::npos)
+      << p.nc;
+  std::string off_axis = cl;
+  off_axis.replace(off_axis.find("GOTO/30,0,5"), 11, "GOTO/30,2,5");
+  Posted q = post(off_axis, load("linuxcnc-lathe-c"));
+  EXPECT_NE(q.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line 1) is "
+                         "not supported yet"),
+            std::string::npos)
+      << q.diags;
+}
+
 // Haas G81 on the face at X (a diameter) with C clamped at its index (reference/millturn.md
 // section 2, Fusion's haas vmt-750.cps).
 TEST(MillTurn, FaceHolesOnHaasSt20y) {

@@ -230,8 +230,10 @@ void goto_stmt(PostState& s, const Statement& st) {
     if (!s.tool.mills())
       note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
-  // A live tool's hole cycle GOTOs are face holes (hole_goto.cc); its other motion is refused.
-  if (!(s.in_cycle && s.tool.mills()) && milling_motion_refused(s, st)) return;
+  // A live tool's hole cycle GOTOs are face holes (hole_goto.cc), its XZ moves at the C index
+  // are a lathe's moves; its other motion is refused.
+  const bool live_ok = s.tool.mills() && (s.in_cycle || live_xz_move(s, p));
+  if (!live_ok && milling_motion_refused(s, st)) return;
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
     if (s.hole_cycle) hole_goto(s, st, p);
     return;
