@@ -114,8 +114,7 @@ HoleReport verify_holes(const std::vector<Hole>& cl, const std::vector<SimHole>&
       "holes {}: {} in the CL, {} in the program\n{}{}\n",
       off_centre == 0 ? std::string("on the centre line")
                       : fmt::format("({} on the face at their X and C)", off_centre),
-      cl.size(), in_program,
-      r.text,
+      cl.size(), in_program, r.text,
       r.problems == 0 ? fmt::format("ok: every hole is drilled as planned, within {:g}", shown)
                       : fmt::format("FAILED: {} of the holes not drilled as planned", r.problems));
   return r;
