@@ -128,6 +128,66 @@ TEST(Holes, AnEditedPeckWordFails) {
 // Centre drill: R2 -> Z-3 (depth 3 below the face Z0), dwell 0.5 s. Peck drill, R plane Z2,
 // pecks of 5 counted from it: -3, -8, -13, -18 and the bottom -22 (22 deep). Tap: RIGID_TAP to
 // Z-16 at 1.5 per revolution.
+// A face hole of a live tool (docs/millturn.md): verify checks its X and C against the CL.
+// The bolt circle on linuxcnc-lathe-c verifies; its second hole's C moved by 1 degree (C91, the
+// hole 0.5236 mm = 30 x pi/180 along its circle) fails naming the hole.
+TEST(Holes, AFaceHoleMovedOneDegreeInCFails) {
+  const std::string cl = "tests/data/millturn-face-holes.apt", dir = temp_dir();
+  const std::string ngc = dir + "/holes.ngc", moved = dir + "/moved.ngc";
+  RunResult post = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " --verify -m linuxcnc-lathe-c -o " + quote(ngc) + " " + cl);
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  EXPECT_NE(post.err.find("holes (4 on the face at their X and C): 4 in the CL, 4 in the program"),
+            std::string::npos)
+      << post.err;
+  std::string text = read_file(ngc);
+  const size_t at = text.find("G0 C90.\n");
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, 8, "G0 C91.\n");
+  write_file(moved, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m linuxcnc-lathe-c " + quote(moved) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1) << r.err << r.out;
+  EXPECT_EQ(first_error(r), moved + ":19:1: error: hole at " + cl +
+                                ":11: at C91.0000, CL C90.0000 (0.5236 mm along the circle of "
+                                "radius 30.0000)")
+      << r.err;
+  fs::remove_all(dir);
+}
+
+// The same bolt circle with a first peck of 5 and pecks of 2 (the template has one peck word):
+// written as moves at X60 (a diameter) after each C; verify follows the moves off the centre
+// line and finds the second hole at C91 (NC line 28, its first feed).
+TEST(Holes, AFaceHoleWrittenAsMovesIsCheckedAtItsC) {
+  std::string cl = read_file(source_dir() + "/tests/data/millturn-face-holes.apt");
+  const std::string drill = "CYCLE/DRILL,8,MMPM,100,CLEAR,2";
+  ASSERT_NE(cl.find(drill), std::string::npos);
+  cl.replace(cl.find(drill), drill.size(),
+             "CYCLE/DEEP2,FEDTO,8.6,1STPECK,5.,SUBPECK,2.,MMPM,100.,RAPTO,2.");
+  const std::string dir = temp_dir(), apt = dir + "/deep.apt", ngc = dir + "/deep.ngc";
+  write_file(apt, cl);
+  RunResult post = run(quote(clpost_bin()) + " --verify -m linuxcnc-lathe-c -o " + quote(ngc) +
+                       " " + quote(apt));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  EXPECT_NE(post.err.find("  " + apt + ":11  peck drilling to Z-8.6000  ok  moves, NC line 28"),
+            std::string::npos)
+      << post.err;
+  std::string text = read_file(ngc);
+  ASSERT_NE(text.find("G0 C90.\n(hole at CL line 11: peck drilling at X60. C90. to Z-8.6)\n"),
+            std::string::npos)
+      << text;
+  text.replace(text.find("G0 C90.\n"), 8, "G0 C91.\n");
+  write_file(ngc, text);
+  RunResult r = run(quote(clpost_bin()) + " verify -m linuxcnc-lathe-c " + quote(ngc) + " --cl " +
+                    quote(apt));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(first_error(r), ngc + ":28:1: error: hole at " + apt +
+                                ":11: at C91.0000, CL C90.0000 (0.5236 mm along the circle of "
+                                "radius 30.0000)")
+      << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
   if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
   const std::string dir = temp_dir();

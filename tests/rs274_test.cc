@@ -120,6 +120,76 @@ TEST(Rs274, MillTurnLiveToolOnSpindleOneAndC) {
   fs::remove_all(dir);
 }
 
+// The six numbers of a canonical STRAIGHT_FEED(x, y, z, a, b, c) line of rs274.
+std::vector<double> canon_numbers(const std::string& call) {
+  std::vector<double> out;
+  std::istringstream in(call.substr(call.find('(') + 1));
+  for (double v; in >> v;) {
+    out.push_back(v);
+    in.ignore(1);  // the comma
+  }
+  return out;
+}
+
+// A face bolt circle of a live tool on linuxcnc-lathe-c (docs/millturn.md): 4 holes at radius
+// 30 (the GOTO's X), C 0, 90, 180, 270 (ROTABL). rs274 drills each at its X and C: mapped back
+// to the part's face (X as a radius, C the angle: x cos C, x sin C), each bottom is the CL
+// hole's point at the ROTABL in force, within 0.01 mm, 8 deep. G81 X60 in G7 is a diameter:
+// rs274 reports the radius 30.
+TEST(Rs274, MillTurnFaceBoltCircle) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), ngc = dir + "/holes.ngc";
+  const std::string cl = source_dir() + "/tests/data/millturn-face-holes.apt";
+  RunResult post =
+      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  struct FacePoint {
+    double x, y, z;
+  };
+  const double deg = std::acos(-1.0) / 180;
+  std::vector<FacePoint> got;
+  std::istringstream out(r.out);
+  for (std::string line; std::getline(out, line);) {
+    const size_t at = line.find("STRAIGHT_FEED(");
+    if (at == std::string::npos) continue;
+    const std::vector<double> v = canon_numbers(line.substr(at));
+    ASSERT_EQ(v.size(), 6u) << line;
+    got.push_back({v[0] * std::cos(v[5] * deg), v[0] * std::sin(v[5] * deg), v[2]});
+  }
+  // The CL's holes: each GOTO in the cycle at the ROTABL in force, drilled 8 deep.
+  std::vector<FacePoint> want;
+  Diagnostics d(cl);
+  std::FILE* f = std::fopen(cl.c_str(), "rb");
+  ClReader reader(f, d);
+  Statement st;
+  double c = 0;
+  bool in_cycle = false;
+  while (reader.next(st)) {
+    if (st.major == "ROTABL") c = st.args[0].number;
+    if (st.major == "CYCLE") in_cycle = !st.args[0].is("OFF");
+    if (st.major == "GOTO" && in_cycle)
+      want.push_back({st.args[0].number * std::cos(c * deg), st.args[0].number * std::sin(c * deg),
+                      st.args[2].number - 8});
+  }
+  std::fclose(f);
+  ASSERT_EQ(want.size(), 4u);
+  ASSERT_EQ(got.size(), want.size()) << r.out;
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_NEAR(got[i].x, want[i].x, 0.01) << "hole " << i + 1;
+    EXPECT_NEAR(got[i].y, want[i].y, 0.01) << "hole " << i + 1;
+    EXPECT_NEAR(got[i].z, want[i].z, 0.01) << "hole " << i + 1;
+  }
+  // The third hole, by hand: radius 30 at C180 is the part's (-30, 0).
+  EXPECT_NEAR(got[2].x, -30, 0.01);
+  EXPECT_NEAR(got[2].y, 0, 0.01);
+  fs::remove_all(dir);
+}
+
 TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   // From rs274 -g on "G7 G18 G21 G90 / G0 X20 Z5 / G2 X34 Z-22 I2 K0": radii, Z first on arcs.
   std::vector<XZ> m = rs274_motion_ends(

@@ -1,4 +1,5 @@
-// Holes on the spindle axis: a control's canned cycle through its `hole_*` template, or moves.
+// Holes along the spindle axis (at X = h.x, 0 on the centre line): a control's canned cycle through
+// its `hole_*` template, or moves.
 //
 // What each template's cycle does is the integrator's claim in the post file (posts/*.yaml name
 // the control's manual); clpost checks only what a template cannot say: a cycle has one peck
@@ -33,7 +34,7 @@ consteval size_t field(std::string_view f, FieldKind kind = FieldKind::kText) {
 TemplateWrite write_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t) {
   const Machine& m = prog.machine();
   TemplateValues v(t);
-  v.set_text(field("x"), prog.num("X", 0));
+  v.set_text(field("x"), prog.num("X", h.x * diameter_factor(prog.machine())));
   v.set_text(field("z"), prog.num("Z", h.bottom));
   v.set_text(field("top"), prog.num("Z", h.top));
   v.set_text(field("r"), prog.num("Z", h.r));
@@ -100,19 +101,20 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
 TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
   const double clr = prog.machine().peck_clearance;
   const double back_off = chip_backoff(h, clr);
-  if (prog.position() && std::fabs(prog.position()->r) > 1e-12) prog.rapid({0, prog.position()->z});
-  prog.rapid({0, h.r});
+  if (prog.position() && std::fabs(prog.position()->r - h.x) > 1e-12)
+    prog.rapid({h.x, prog.position()->z});
+  prog.rapid({h.x, h.r});
   prog.set_feed(h.feed, h.feed_mode);
   const std::vector<double> ends = hole_feed_ends(h);
   for (size_t i = 0; i < ends.size(); ++i) {
-    prog.linear({0, ends[i]});
+    prog.linear({h.x, ends[i]});
     if (i + 1 == ends.size()) break;
     // Out to the R plane (peck) or back a little (chip breaking), then back in to just short
     // of the depth reached, never above the R plane.
-    if (h.kind == HoleKind::kDeep) prog.rapid({0, h.r});
+    if (h.kind == HoleKind::kDeep) prog.rapid({h.x, h.r});
     const double back =
         std::max(0.0, std::fabs(ends[i] - h.r) - (h.kind == HoleKind::kDeep ? clr : back_off));
-    prog.rapid({0, h.r + h.dir * back});
+    prog.rapid({h.x, h.r + h.dir * back});
   }
   TemplateWrite dwell;
   if (h.dwell > 0)
@@ -121,12 +123,12 @@ TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
   if (h.kind == HoleKind::kTap) {
     const SpindleDir back = h.spindle == SpindleDir::kCw ? SpindleDir::kCcw : SpindleDir::kCw;
     if (TemplateWrite r = prog.spindle_rpm(h.rpm, back); !r) return r;
-    prog.linear({0, h.r});
+    prog.linear({h.x, h.r});
     if (TemplateWrite r = prog.spindle_rpm(h.rpm, h.spindle); !r) return r;
   } else if (h.kind == HoleKind::kBore || h.kind == HoleKind::kReam) {
-    prog.linear({0, h.r});
+    prog.linear({h.x, h.r});
   }
-  prog.rapid({0, h.retract});
+  prog.rapid({h.x, h.retract});
   return dwell;
 }
 
@@ -148,12 +150,12 @@ class HoleCycleOutput : public CycleOutput<Hole> {
     return f;
   }
   bool emit(const Hole& h, NcProgram& prog, const EmitContext& ctx) override {
-    if (!prog.position() || std::fabs(prog.position()->r) > 1e-12 ||
+    if (!prog.position() || std::fabs(prog.position()->r - h.x) > 1e-12 ||
         std::fabs(prog.position()->z - h.start) > 1e-12)
-      prog.rapid({0, h.start});
+      prog.rapid({h.x, h.start});
     if (!template_written(write_cycle(prog, h, t_), prog.machine(), ctx)) return false;
-    prog.cycle_ended_at({0, h.start});
-    if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid({0, h.retract});
+    prog.cycle_ended_at({h.x, h.start});
+    if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid({h.x, h.retract});
     return true;
   }
 
@@ -176,8 +178,12 @@ class HoleMovesOutput : public CycleOutput<Hole> {
 bool write_hole(NcProgram& prog, const Hole& h, const EmitContext& ctx) {
   const Machine& m = prog.machine();
   const TemplateSpec& t = hole_template(m, h);
+  const std::string at =
+      h.c ? fmt::format(" at X{} {}{}", prog.num("X", h.x * diameter_factor(prog.machine())),
+                        m.c_address, prog.num("C", *h.c))
+          : std::string();
   prog.comment(
-      fmt::format("{}: {} to Z{}", h.name, hole_kind_name(h.kind), prog.num("Z", h.bottom)));
+      fmt::format("{}: {}{} to Z{}", h.name, hole_kind_name(h.kind), at, prog.num("Z", h.bottom)));
   HoleCycleOutput cycle(t);
   HoleMovesOutput moves;
   std::vector<CycleOutput<Hole>*> order;

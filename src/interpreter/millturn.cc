@@ -105,6 +105,13 @@ void release_c(PostState& s) {
   s.c = CAxisState{};
 }
 
+bool live_xz_move(const PostState& s, Point3 p) {
+  if (!s.tool.mills() || s.hole_axis_radial) return false;
+  if (std::fabs(axis_value(p, third_axis(s))) > 1e-4) return false;
+  if (!s.c.angle && std::fabs(cl2(s, p).x) > 1e-4) return false;
+  return s.rapid_next || s.feed_mode != FeedMode::kPerRev;
+}
+
 bool milling_motion_refused(PostState& s, const Statement& st) {
   if (!s.tool.mills()) return false;
   if (!s.mill_motion_reported) {
@@ -112,7 +119,8 @@ bool milling_motion_refused(PostState& s, const Statement& st) {
     error(
         s, st, st.loc,
         fmt::format("milling motion with live tool {} (loaded at line {}) is not supported yet: "
-                    "clpost writes no XZC, Y or hole motion for a milling tool (docs/millturn.md)",
+                    "clpost writes no XZC or Y motion for a milling tool, only the holes of a hole "
+                    "cycle (docs/millturn.md)",
                     s.tool.number, s.tool_line));
   }
   return true;

@@ -22,6 +22,9 @@ bool millturn_tool_change(PostState& s, const Statement& st, int tool,
 void millturn_after_tool_change(PostState& s, const Statement& st);
 // Before the main spindle turns: C is unclamped and disengaged.
 void release_c(PostState& s);
+// A GOTO of a milling tool to `p` that is an XZ move at the C index, written as a lathe's move:
+// Y 0, the tool axis along Z, C indexed (or X 0), a rapid or a feed per minute.
+bool live_xz_move(const PostState& s, Point3 p);
 // A motion with a milling tool: true (reported once per tool) — not written yet.
 bool milling_motion_refused(PostState& s, const Statement& st);
 // The C words that take C from `from` (unknown: none) to `angle` (incremental: by `angle`),

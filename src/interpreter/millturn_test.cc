@@ -151,8 +151,8 @@ TEST(MillTurn, LiveToolLimitsAndMillingMotionAreLocatedErrors) {
       << p.diags;
   // One error for the tool's motions, at the first.
   EXPECT_NE(p.diags.find("t.cl:4:1: error: milling motion with live tool 3 (loaded at line 1) is "
-                         "not supported yet: clpost writes no XZC, Y or hole motion for a milling "
-                         "tool (docs/millturn.md)"),
+                         "not supported yet: clpost writes no XZC or Y motion for a milling tool, "
+                         "only the holes of a hole cycle (docs/millturn.md)"),
             std::string::npos)
       << p.diags;
   EXPECT_NE(p.diags.find("t.cl:6:11: error: ROTABL/…,BAXIS: a lathe's rotary axis is C; machine "
@@ -229,6 +229,104 @@ TEST(MillTurn, SyncIsAWarningNamingTheMissingChannel) {
             std::string::npos)
       << p.diags;
   EXPECT_NE(p.nc.find("(SYNC/2,1,2,1)"), std::string::npos) << p.nc;
+}
+
+// A face hole of a live tool (docs/millturn.md): two holes of a bolt circle at radius 30 (the
+// GOTO's X), C 0 and 90 (ROTABL). On linuxcnc-lathe-c G81 takes X as a diameter in G7, so X60
+// (rs274 proves it: tests/rs274_test.cc); C is written by ROTABL before each hole.
+constexpr const char* kFaceHoles =
+    "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nFROM/30,0,5\nFEDRAT/100,MMPM\n"
+    "CYCLE/DRILL,8,MMPM,100,CLEAR,2\nGOTO/30,0,0\nROTABL/90,CAXIS\nGOTO/30,0,0\nCYCLE/OFF\n"
+    "SPINDL/OFF\nFINI\n";
+
+TEST(MillTurn, FaceHolesAtXWithCOnLinuxcncLatheC) {
+  Posted p = post(kFaceHoles, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nG7 G18 G21 G90 G40 G80\nT3 M6 G43 H3\nM3 $1 S2000\nG0 C0.\n"
+            "(hole at CL line 7: drilling at X60. C0. to Z-8.)\nG0 X60. Z5.\nG17\n"
+            "G98 G94 G81 X60. Y0 Z-8. R2. F100.\nG80\nG18\nG0 C90.\n"
+            "(hole at CL line 9: drilling at X60. C90. to Z-8.)\nG17\n"
+            "G98 G94 G81 X60. Y0 Z-8. R2. F100.\nG80\nG18\nM5 $1\nM2\n%\n");
+}
+
+// The approach of a live tool at the C index is an XZ move (Y 0, C indexed): written as a
+// lathe's rapid; before any ROTABL, or off the X axis, it stays the milling-motion error.
+TEST(MillTurn, ALiveToolsXzMoveAtTheCIndexIsWritten) {
+  std::string cl = kFaceHoles;
+  cl.replace(cl.find("FROM/30,0,5"), 11, "RAPID\nGOTO/30,0,5");
+  Posted p = post(cl, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C0.\nG0 X60. Z5.\n(hole at CL line 8: drilling at X60. C0. to Z-8.)\n"
+                      "G17\nG98 G94 G81 X60. Y0 Z-8. R2. F100.\n"),
+            std::string::npos)
+      << p.nc;
+  std::string off_axis = cl;
+  off_axis.replace(off_axis.find("GOTO/30,0,5"), 11, "GOTO/30,2,5");
+  Posted q = post(off_axis, load("linuxcnc-lathe-c"));
+  EXPECT_NE(q.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line 1) is "
+                         "not supported yet"),
+            std::string::npos)
+      << q.diags;
+}
+
+// Haas G81 on the face at X (a diameter) with C clamped at its index (reference/millturn.md
+// section 2, Fusion's haas vmt-750.cps).
+TEST(MillTurn, FaceHolesOnHaasSt20y) {
+  Posted p = post(kFaceHoles, load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("M15\nG0 C90.\nM14\n(HOLE AT CL LINE 9: DRILLING AT X60. C90. TO Z-8.)\n"
+                      "G98 G81 X60. Z-8. R2. F100.\nG80\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// What is not written is a located error naming what is missing, never a hole on the centre
+// line: Fanuc's face G83 with C (no public source), a radial hole, a hole off the X axis, a
+// feed per revolution of the stopped main spindle, C never indexed.
+TEST(MillTurn, FaceHolesThatCannotBeWrittenAreLocatedErrors) {
+  Posted f = post(kFaceHoles, load("fanuc-0i-tf-live"));
+  EXPECT_EQ(f.errors, 2u) << f.diags;
+  EXPECT_NE(f.diags.find("t.cl:7:1: error: CYCLE/DRILL hole at CL line 7 with live tool 3: "
+                         "machine 'fanuc-0i-tf-live' does not say how its control drills off the "
+                         "centre line (millturn.face_holes: false): no source gives its face "
+                         "drilling cycle at X with C (docs/millturn.md)\n"),
+            std::string::npos)
+      << f.diags;
+  EXPECT_EQ(f.nc.find("G83"), std::string::npos) << f.nc;
+  const auto one = [](std::string goto_line, std::string feed = "FEDRAT/100,MMPM") {
+    std::string cl = kFaceHoles;
+    cl.replace(cl.find("FEDRAT/100,MMPM"), 15, feed);
+    cl.replace(cl.find("GOTO/30,0,0"), 11, goto_line);
+    return post(cl, load("linuxcnc-lathe-c"));
+  };
+  const std::string head = "t.cl:7:1: error: CYCLE/DRILL hole at CL line 7 with live tool 3: ";
+  Posted radial = one("GOTO/30,0,0,1,0,0");
+  EXPECT_NE(radial.diags.find(head + "the tool axis is not along Z: a radial hole (G19, "
+                                     "G241-G243, Fanuc G87) is not written yet (docs/millturn.md)"),
+            std::string::npos)
+      << radial.diags;
+  Posted off_axis = one("GOTO/30,4,0");
+  EXPECT_NE(off_axis.diags.find(head + "the hole is 4 off the X axis (Y4): a face hole is written "
+                                       "at X with C at its index (ROTABL/ before it), and C "
+                                       "computed from X and Y is not written yet"),
+            std::string::npos)
+      << off_axis.diags;
+  std::string per_rev_cl = kFaceHoles;
+  per_rev_cl.replace(per_rev_cl.find("CYCLE/DRILL,8,MMPM,100"), 22, "CYCLE/DRILL,8,MMPR,0.1");
+  Posted per_rev = post(per_rev_cl, load("linuxcnc-lathe-c"));
+  EXPECT_NE(per_rev.diags.find(head + "a feed per revolution would be per revolution of the "
+                                      "stopped main spindle: give the feed per minute (MMPM, "
+                                      "IPM)"),
+            std::string::npos)
+      << per_rev.diags;
+  std::string no_c = kFaceHoles;
+  no_c.erase(no_c.find("ROTABL/0,CAXIS\n"), 15);
+  Posted unindexed = post(no_c, load("linuxcnc-lathe-c"));
+  EXPECT_NE(unindexed.diags.find("t.cl:6:1: error: CYCLE/DRILL hole at CL line 6 with live tool "
+                                 "3: C is not indexed: a face hole needs ROTABL/…,CAXIS before it"),
+            std::string::npos)
+      << unindexed.diags;
 }
 
 }  // namespace

@@ -219,13 +219,21 @@ void goto_stmt(PostState& s, const Statement& st) {
     p.z = s.pos ? s.pos->z : 0;
   }
   if (n == 6) {
-    for (size_t i = 3; i < 6; ++i) {
-      double v;
-      if (!number_arg(s, st, i, "a tool axis component", v)) return;
-    }
-    note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
+    Point3 t;
+    if (!number_arg(s, st, 3, "a tool axis component", t.x) ||
+        !number_arg(s, st, 4, "a tool axis component", t.y) ||
+        !number_arg(s, st, 5, "a tool axis component", t.z))
+      return;
+    const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+    s.hole_axis_radial =
+        !(len > 0) || std::fabs(std::fabs(axis_value(t, s.m.cl_axial)) / len - 1) > 1e-6;
+    if (!s.tool.mills())
+      note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }
-  if (milling_motion_refused(s, st)) return;
+  // A live tool's hole cycle GOTOs are face holes (hole_goto.cc), its XZ moves at the C index
+  // are a lathe's moves; its other motion is refused.
+  const bool live_ok = s.tool.mills() && (s.in_cycle || live_xz_move(s, p));
+  if (!live_ok && milling_motion_refused(s, st)) return;
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
     if (s.hole_cycle) hole_goto(s, st, p);
     return;

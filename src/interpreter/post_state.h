@@ -129,6 +129,7 @@ struct PostState {
   CAxisState c;
   std::optional<ToolKindWord> cl_mode;
   bool mill_motion_reported = false;
+  bool hole_axis_radial = false;    // the last GOTO's tool axis (i,j,k) is not along the spindle's
   bool spindle_stopped = false;     // the control's tool change stopped the CL's turning spindle
   Coolant coolant = Coolant::kOff;  // as the CL last set it
   // OPSKIP/ON … OFF: the spindle and coolant before the range, which the blocks after it must

@@ -1,7 +1,8 @@
 #pragma once
-// A hole on the spindle axis as the controls' drilling cycles define it: where each feed into the
-// hole ends (the pecks measured from the R plane, as a G83 does). The emitters write holes by it
-// (emitters/hole_output.h) and the simulator expands a hole cycle's words with it.
+// A hole along the spindle axis (on its centre line, or off it at a C index with a live tool) as
+// the controls' drilling cycles define it: where each feed into the hole ends (the pecks measured
+// from the R plane, as a G83 does). The emitters write holes by it (emitters/hole_output.h) and the
+// simulator expands a hole cycle's words with it.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -23,6 +24,9 @@ struct Hole {
   HoleKind kind = HoleKind::kDrill;
   std::string name;                 // "hole at CL line 12", for comments and diagnostics
   uint32_t cl_line = 0;             // the hole's GOTO
+  double x = 0;                     // X of the hole (a radius): 0 on the centre line, else a
+                                    // face hole of a live tool (docs/millturn.md)
+  std::optional<double> c;          // the C axis's index (degrees) for a face hole off centre
   double start = 0;                 // Z of the tool before the hole (the cycle's initial level)
   double top = 0;                   // Z of the hole's top (the CL hole point)
   double r = 0;                     // Z of the R plane (top plus the clearance)

@@ -134,6 +134,7 @@ struct Machine : ControlSettings {
   bool live_tools = false;      // driven (milling) tools: a milling tool is an error without them
   bool c_axis = false;          // the main spindle positions as a C axis (ROTABL/…,CAXIS)
   bool y_axis = false;          // a Y axis on the turret
+  bool face_holes = false;      // hole cycles off the centre line on the face at the C index
   double live_max_rpm = 0;      // the live spindle's speed limit (0: none)
   std::string c_address = "C";  // the C axis word
   // How the control takes an absolute C word: kRollover, an angle 0 <= C < 360 that it reaches

@@ -358,6 +358,8 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   sim::hole_comment(s, b);
   if (b.words.empty() && b.calls.empty()) return;
   sim::read_modal_words(s, b, c.modal);
+  if (s.m.c_axis)
+    if (const NcWord* w = b.find(s.m.c_address)) s.c = s.value(*w, "C");
   if (settings_block(s, b, c) || cycle_block(s, b, c)) return;
   const Code* motion_code = motion_of(s, b, c);
   if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);

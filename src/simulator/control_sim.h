@@ -44,6 +44,8 @@ struct SimHole {
   uint32_t line = 0;     // NC line of the cycle block or of the first feed into the hole
   std::string line_text;
   std::string source;             // "G83", "CYCLE83", "moves"
+  double x = 0;                   // X of the hole, a radius (0: on the centre line)
+  std::optional<double> c;        // the C axis's position then (degrees), when C was written
   double r = 0;                   // where the first feed into the hole starts
   double dir = -1;                // the way the feeds go in
   std::vector<double> feed_ends;  // Z where each feed into the hole ends, each deeper

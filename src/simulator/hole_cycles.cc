@@ -1,9 +1,10 @@
-// Holes on the spindle axis as the control drills them. A block is a hole cycle when it is the
-// line of one of the machine's hole_* templates that holds {z}: the template's cycle code (the
-// last code before its first field word, or its call's name) is in the block, and the block has
-// exactly the template's addresses (Fanuc's G83 drills without Q and pecks with it). Its words are
-// read back by field and the hole expanded with hole_feed_ends, the definition the emitter
-// writes moves by (emitters/hole_output.h): the machine file is the only source, as for threads.
+// Holes along the spindle axis (at their X and C) as the control drills them. A block is a hole
+// cycle when it is the line of one of the machine's hole_* templates that holds {z}: the template's
+// cycle code (the last code before its first field word, or its call's name) is in the block, and
+// the block has exactly the template's addresses (Fanuc's G83 drills without Q and pecks with it).
+// Its words are read back by field and the hole expanded with hole_feed_ends, the definition the
+// emitter writes moves by (emitters/hole_output.h): the machine file is the only source, as for
+// threads.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -227,6 +228,8 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
     sh.out = hole.r;
     if (hole.lead > 0) sh.lead = hole.lead;
     const double x = v.count("x") ? v.at("x") : s.pos.x;
+    sh.x = x;
+    sh.c = s.c;
     s.move(MoveKind::kRapid, {x, hole.r});
     for (double z : sh.feed_ends) s.move(MoveKind::kFeed, {x, z});
     s.move(MoveKind::kRapid, {x, hole.retract});
@@ -238,12 +241,19 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
 
 void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to) {
   SimHole& h = s.out.holes.back();
-  if (std::fabs(to.x) > 1e-6 || (kind != MoveKind::kRapid && kind != MoveKind::kFeed)) {
+  // On the centre line; off it only on a machine that drills face holes there
+  // (millturn.face_holes), and after the first feed at the hole's X.
+  const bool at_hole = h.feed_ends.empty() ? std::fabs(to.x) <= 1e-6 || s.m.face_holes
+                                           : std::fabs(to.x - h.x) <= 1e-6;
+  if (!at_hole || (kind != MoveKind::kRapid && kind != MoveKind::kFeed)) {
     s.hole_open = false;
     return;
   }
-  if (kind == MoveKind::kFeed && std::fabs(to.z - from.z) > 1e-9) {
+  if (kind == MoveKind::kFeed && std::fabs(to.z - from.z) > 1e-9 &&
+      std::fabs(to.x - from.x) <= 1e-6) {
     if (h.feed_ends.empty()) {
+      h.x = to.x;
+      h.c = s.c;
       h.dir = to.z < from.z ? -1 : 1;
       h.r = from.z;
       h.line = s.line;

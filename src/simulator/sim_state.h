@@ -121,8 +121,9 @@ struct State {
   bool pullout_open = false;            // the previous move ended a synchronized cut
   PendingCycle pending;                 // a multi-block cycle being read (its control's read-back)
   G92Modal g92;
-  bool hole_open = false;  // out.holes.back() is followed move by move (a "hole at" comment)
-  CutState cut;            // feed mode, spindle and tool as the program last stated them
+  std::optional<double> c;  // the C axis (millturn.c_axis) as last written, degrees
+  bool hole_open = false;   // out.holes.back() is followed move by move (a "hole at" comment)
+  CutState cut;             // feed mode, spindle and tool as the program last stated them
   // The machine's hole templates taken apart, once (hole_cycles.cc; null until the first block).
   std::shared_ptr<const void> hole_lines;
   // The codes of the machine's own positions (positions.cc), found at the first block.

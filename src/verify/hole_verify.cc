@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "laws/cut_pass.h"
 
@@ -15,10 +16,28 @@ std::string z_text(double z) {
   return fmt::format("Z{:.4f}", z);
 }
 
+// Where hole `p` is drilled against CL hole `h`: its X (a radius), and off the centre line its
+// C (docs/millturn.md), the angle as the arc it moves the hole at its radius; "" when the same.
+std::string position_difference(const Hole& h, const SimHole& p, double tol) {
+  if (std::fabs(p.x - h.x) > tol)
+    return fmt::format("at radius {:.4f}, CL radius {:.4f}", p.x, h.x);
+  if (std::fabs(h.x) <= tol) return {};
+  if (!h.c || !p.c)
+    return h.c ? fmt::format("C is not written, CL C{:.4f}", *h.c)
+               : fmt::format("at C{:.4f} off the centre line, where the CL has no C", *p.c);
+  const double turn = std::remainder(*p.c - *h.c, 360.0);
+  if (std::fabs(turn) * std::numbers::pi / 180 * std::fabs(h.x) > tol)
+    return fmt::format("at C{:.4f}, CL C{:.4f} ({:.4f} mm along the circle of radius {:.4f})", *p.c,
+                       *h.c, std::fabs(turn) * std::numbers::pi / 180 * std::fabs(h.x),
+                       std::fabs(h.x));
+  return {};
+}
+
 // The first difference between CL hole `h` and the program's `p`, or "".
 std::string hole_difference(const Hole& h, const SimHole& p, double tol) {
   const std::vector<double> want = hole_feed_ends(h);
   if (p.feed_ends.empty()) return "the program does not feed into it";
+  if (std::string at = position_difference(h, p, tol); !at.empty()) return at;
   if (std::fabs(p.feed_ends.back() - h.bottom) > tol)
     return fmt::format("bottom {}, CL {}", z_text(p.feed_ends.back()), z_text(h.bottom));
   if (std::fabs(p.r - h.r) > tol)
@@ -90,9 +109,12 @@ HoleReport verify_holes(const std::vector<Hole>& cl, const std::vector<SimHole>&
                 ? fmt::format("a hole for {}:{}, where the CL has none", from, nc[i].cl_line)
                 : std::string("a hole the CL does not have"));
   }
+  const auto off_centre = std::count_if(cl.begin(), cl.end(), [](const Hole& h) { return h.c; });
   r.text = fmt::format(
-      "holes on the centre line: {} in the CL, {} in the program\n{}{}\n", cl.size(), in_program,
-      r.text,
+      "holes {}: {} in the CL, {} in the program\n{}{}\n",
+      off_centre == 0 ? std::string("on the centre line")
+                      : fmt::format("({} on the face at their X and C)", off_centre),
+      cl.size(), in_program, r.text,
       r.problems == 0 ? fmt::format("ok: every hole is drilled as planned, within {:g}", shown)
                       : fmt::format("FAILED: {} of the holes not drilled as planned", r.problems));
   return r;
