@@ -1,5 +1,6 @@
 #include "machine/machine_schema.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -23,6 +24,13 @@ std::string read_text(const std::string& path) {
 // docs/machines.md's tables are the schema's: regenerate them with
 //   build/clpost schema --markdown
 // and paste the output over the block between the markers.
+// Every key has a row in the docs' tables: a key of a section the tables do not list would not.
+TEST(MachineSchema, EveryKeyIsInTheDocsTables) {
+  const std::string md = schema_markdown();
+  for (const KeySpec& k : machine_keys())
+    EXPECT_NE(md.find(fmt::format("| `{}` |", k.path)), std::string::npos) << k.path;
+}
+
 TEST(MachineSchema, DocsTablesAreTheSchemas) {
   const std::string docs = read_text(std::string(CLPOST_SOURCE_DIR) + "/docs/machines.md");
   const size_t begin = docs.find(kSchemaDocBegin);

@@ -30,6 +30,9 @@ constexpr Section kSections[] = {
      "`CYCLE/DRILL|DEEP|BRKCHP|TAP|BORE|REAM` with the hole's GOTO on the centre line: written "
      "with the `hole_*` templates when the machine has them and the cycle says what the CL says, "
      "else as G0/G1/G4 moves with the reason in a comment."},
+    {"Mill-turn", "Mill-turn (`millturn.*`)",
+     "Live tools, the C axis and the Y axis (docs/millturn.md): what the machine has, and how "
+     "its control drills with a live tool."},
 };
 
 std::string range(double lo, double hi) {
