@@ -37,7 +37,10 @@ Code parse_code(std::string_view text) {
 bool has_code(const NcBlock& b, const Code& c) {
   if (c.empty()) return false;
   for (const NcWord& w : b.words) {
-    if (w.address != c.address) continue;
+    // Most words differ in their first letter: that test first, without a call to memcmp.
+    if (w.address.size() != c.address.size() || w.address[0] != c.address[0] ||
+        w.address != c.address)
+      continue;
     if (!c.number && !w.has_value()) return true;
     if (c.number && w.has_value() && std::fabs(w.value - *c.number) < 1e-9) return true;
   }

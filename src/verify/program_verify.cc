@@ -163,12 +163,24 @@ void ProgramStream::program_text(std::string_view text) {
   threads_.poll(out_.cuts);
 }
 
+namespace {
+
+// Where the first line of `text` ends ("\n" or "\r"), or npos: a plain loop, since
+// find_first_of calls memchr on its set for every character.
+size_t line_end(std::string_view text) {
+  for (size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n' || text[i] == '\r') return i;
+  return std::string_view::npos;
+}
+
+}  // namespace
+
 void ProgramStream::read_lines(std::string_view text) {
   // Lines end at "\n", "\r" or "\r\n", as reader::LineSource reads them.
   while (!text.empty()) {
     if (after_cr_ && text.front() == '\n') text.remove_prefix(1);
     after_cr_ = false;
-    const size_t end = text.find_first_of("\r\n");
+    const size_t end = line_end(text);
     if (end == std::string_view::npos) {
       partial_.append(text);
       return;
