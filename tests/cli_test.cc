@@ -138,7 +138,7 @@ TEST(Cli, SetOverridesTheMachine) {
   EXPECT_EQ(r.out.rfind("%\nO0001\nG18 G21 G40 G90\n"
                         "(program PIN-01 turned pin, 25 mm stock, machine generic-lathe)\n"
                         "(T3 offset 3, first at CL line 5, 0:15.5)\n"
-                        "(cycle time 0:15.5, 1 tool changes)\n"
+                        "(cycle time 0:15.5, 1 tool change)\n"
                         "(PIN-01 turned pin, 25 mm stock)\nT0303\n",
                         0),
             0u)

@@ -256,7 +256,8 @@ std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, 
     if (!tt.text.empty()) line += ", " + tt.text;
     out.push_back(std::move(line));
   }
-  out.push_back(fmt::format("cycle time {}, {} tool changes{}", time_text(t.total()), changes,
+  out.push_back(fmt::format("cycle time {}, {} tool change{}{}", time_text(t.total()), changes,
+                            changes == 1 ? "" : "s",
                             t.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : ""));
   return out;
 }

@@ -72,7 +72,7 @@ TEST(CycleTime, EveryKindOfMoveByHand) {
   EXPECT_EQ(cycle_time_lines(t, LengthUnit::kMm, true),
             (std::vector<std::string>{"T1 offset 1: 0:32.8, X0.000 to X40.000, Z-20.000 to "
                                       "Z10.000 mm",
-                                      "cycle time 0:32.8, 1 tool changes"}));
+                                      "cycle time 0:32.8, 1 tool change"}));
 }
 
 TEST(CycleTime, PerToolAndUntimedRapids) {
@@ -129,7 +129,7 @@ TEST(CycleTime, ProgramHeader) {
             "%\nO0001\nG18 G21 G40 G90\n"
             "(HDR program t, machine generic-lathe)\n"
             "(HDR T1 offset 1, first at CL line 2, 0:11.0)\n"
-            "(HDR cycle time 0:11.0, 1 tool changes)\n"
+            "(HDR cycle time 0:11.0, 1 tool change)\n"
             "T0101\nG1 X20. Z-10. G94 F100.\n(done)\nM30\n%\n");
 }
 

@@ -62,9 +62,10 @@ std::string tools_section(const SheetData& d) {
   o += "</tbody>\n</table>\n";
   o += fmt::format(
       "<p class=\"total\">Total cycle time <strong id=\"cycle-time\">{}</strong>, {} tool "
-      "changes{}. Times are estimates from the machine file's rapid rates and tool change "
+      "change{}{}. Times are estimates from the machine file's rapid rates and tool change "
       "time.</p>\n",
       esc(time_text(d.cycle_time.total())), tool_changes(d.cycle_time),
+      tool_changes(d.cycle_time) == 1 ? "" : "s",
       d.cycle_time.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : "");
   return o + "</section>\n";
 }

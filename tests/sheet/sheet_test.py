@@ -123,7 +123,7 @@ def records(table):
 CHECK_TOOL = re.compile(
     r"^  T(\d+) offset (-?\d+): ([0-9:.]+)(?:, (X\S+ to X\S+, Z\S+ to Z\S+) (?:mm|in))?"
     r"(?:, nose radius ([^,]+))?(?:, (.*))?$")
-CHECK_TOTAL = re.compile(r"^  cycle time ([0-9:.]+), (\d+) tool changes")
+CHECK_TOTAL = re.compile(r"^  cycle time ([0-9:.]+), (\d+) tool changes?")
 
 
 def check_lines(cl):

@@ -3,7 +3,7 @@ O0001
 N10 G18 G21 G40 G90
 (program PIN-01 turned pin, 25 mm stock, machine generic-lathe)
 (T3 offset 3, first at CL line 5, 0:15.5)
-(cycle time 0:15.5, 1 tool changes)
+(cycle time 0:15.5, 1 tool change)
 N20 (PIN-01 turned pin, 25 mm stock)
 N30 T0303
 N40 (ROUGH AND FINISH OD)

@@ -3,7 +3,7 @@ O0001
 N10 G18 G21 G40 G90
 (program shaft-nx, machine generic-lathe)
 (T1 offset 1, OD_80_L, first at CL line 8, 0:23.3)
-(cycle time 0:23.3, 1 tool changes)
+(cycle time 0:23.3, 1 tool change)
 N20 (operation FACING_OD TOOL OD_80_L)
 N30 T0101
 N40 G97 S1200 M3

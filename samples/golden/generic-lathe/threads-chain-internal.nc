@@ -3,7 +3,7 @@ O0001
 N10 G18 G21 G40 G90
 (program THREADS-CHAIN-INTERNAL, machine generic-lathe)
 (T9 offset 9, first at CL line 6, 0:09.7)
-(cycle time 0:09.7, 1 tool changes)
+(cycle time 0:09.7, 1 tool change)
 N20 (THREADS-CHAIN-INTERNAL)
 N30 T0909
 N40 G97 S500 M3

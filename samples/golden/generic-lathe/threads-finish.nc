@@ -3,7 +3,7 @@ O0001
 N10 G18 G21 G40 G90
 (program THREADS-FINISH, machine generic-lathe)
 (T7 offset 7, first at CL line 5, 0:40.2)
-(cycle time 0:40.2, 1 tool changes)
+(cycle time 0:40.2, 1 tool change)
 N20 (THREADS-FINISH)
 N30 T0707
 N40 G97 S600 M3

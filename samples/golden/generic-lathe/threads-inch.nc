@@ -3,7 +3,7 @@ O0001
 N10 G18 G20 G40 G90
 (program THREADS-INCH, machine generic-lathe)
 (T5 offset 5, first at CL line 5, 0:13.1)
-(cycle time 0:13.1, 1 tool changes)
+(cycle time 0:13.1, 1 tool change)
 N20 (THREADS-INCH)
 N30 T0505
 N40 G97 S700 M3

@@ -3,7 +3,7 @@ O0001
 N10 G18 G21 G40 G90
 (program THREADS-TAPER-FACE, machine generic-lathe)
 (T5 offset 5, first at CL line 5, 0:14.7)
-(cycle time 0:14.7, 1 tool changes)
+(cycle time 0:14.7, 1 tool change)
 N20 (THREADS-TAPER-FACE)
 N30 T0505
 N40 G97 S500 M3

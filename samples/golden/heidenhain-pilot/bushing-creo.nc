@@ -3,7 +3,7 @@
 MACHINING
 [program BUSHING-7, machine heidenhain-pilot]
 [T2 offset 2, first at CL line 7, 0:13.0]
-[cycle time 0:13.0, 1 tool changes]
+[cycle time 0:13.0, 1 tool change]
 [BUSHING-7]
 N 10 T2
 N 20 G26 S2500

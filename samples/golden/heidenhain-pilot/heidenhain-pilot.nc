@@ -3,7 +3,7 @@
 MACHINING
 [program HEIDENHAIN-G31, machine heidenhain-pilot]
 [T9 offset 9, first at CL line 5, 0:25.3]
-[cycle time 0:25.3, 1 tool changes]
+[cycle time 0:25.3, 1 tool change]
 [HEIDENHAIN-G31]
 N 10 T9
 N 20 G97 S1000 M3

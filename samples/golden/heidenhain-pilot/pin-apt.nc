@@ -3,7 +3,7 @@
 MACHINING
 [program PIN-01 turned pin, 25 mm stock, machine heidenhain-pilot]
 [T3 offset 3, first at CL line 5, 0:15.5]
-[cycle time 0:15.5, 1 tool changes]
+[cycle time 0:15.5, 1 tool change]
 [PIN-01 turned pin, 25 mm stock]
 N 10 T3
 [ROUGH AND FINISH OD]

@@ -3,7 +3,7 @@
 MACHINING
 [program shaft-nx, machine heidenhain-pilot]
 [T1 offset 1, OD_80_L, first at CL line 8, 0:23.3]
-[cycle time 0:23.3, 1 tool changes]
+[cycle time 0:23.3, 1 tool change]
 [operation FACING_OD TOOL OD_80_L]
 N 10 T1
 N 20 G97 S1200 M3

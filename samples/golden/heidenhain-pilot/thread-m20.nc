@@ -3,7 +3,7 @@
 MACHINING
 [program M20X2.5, machine heidenhain-pilot]
 [T7 offset 7, first at CL line 4, 0:14.0]
-[cycle time 0:14.0, 1 tool changes]
+[cycle time 0:14.0, 1 tool change]
 [M20X2.5]
 N 10 T7
 N 20 G97 S600 M3

@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-CHAIN-INTERNAL, machine heidenhain-pilot]
 [T9 offset 9, first at CL line 6, 0:09.7]
-[cycle time 0:09.7, 1 tool changes]
+[cycle time 0:09.7, 1 tool change]
 [THREADS-CHAIN-INTERNAL]
 N 10 T9
 N 20 G97 S500 M3

@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-CHAIN-MULTISTART, machine heidenhain-pilot]
 [T5 offset 5, first at CL line 6, 0:13.6]
-[cycle time 0:13.6, 1 tool changes]
+[cycle time 0:13.6, 1 tool change]
 [THREADS-CHAIN-MULTISTART]
 N 10 T5
 N 20 G97 S400 M3

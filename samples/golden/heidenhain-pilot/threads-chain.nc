@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-CHAIN, machine heidenhain-pilot]
 [T6 offset 6, first at CL line 7, 0:52.1]
-[cycle time 0:52.1, 1 tool changes]
+[cycle time 0:52.1, 1 tool change]
 [THREADS-CHAIN]
 N 10 T6
 N 20 G97 S300 M3

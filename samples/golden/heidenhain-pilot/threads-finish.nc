@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-FINISH, machine heidenhain-pilot]
 [T7 offset 7, first at CL line 5, 0:40.2]
-[cycle time 0:40.2, 1 tool changes]
+[cycle time 0:40.2, 1 tool change]
 [THREADS-FINISH]
 N 10 T7
 N 20 G97 S600 M3

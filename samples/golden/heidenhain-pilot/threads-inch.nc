@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-INCH, machine heidenhain-pilot]
 [T5 offset 5, first at CL line 5, 0:13.1]
-[cycle time 0:13.1, 1 tool changes]
+[cycle time 0:13.1, 1 tool change]
 [THREADS-INCH]
 N 10 T5
 N 20 G97 S700 M3

@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-INTERNAL, machine heidenhain-pilot]
 [T9 offset 9, first at CL line 5, 0:18.2]
-[cycle time 0:18.2, 1 tool changes]
+[cycle time 0:18.2, 1 tool change]
 [THREADS-INTERNAL]
 N 10 T9
 N 20 G97 S500 M3

@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-MULTISTART, machine heidenhain-pilot]
 [T5 offset 5, first at CL line 5, 0:29.7]
-[cycle time 0:29.7, 1 tool changes]
+[cycle time 0:29.7, 1 tool change]
 [THREADS-MULTISTART]
 N 10 T5
 N 20 G97 S400 M3

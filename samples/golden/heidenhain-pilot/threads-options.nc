@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-OPTIONS, machine heidenhain-pilot]
 [T5 offset 5, first at CL line 5, 0:48.2]
-[cycle time 0:48.2, 1 tool changes]
+[cycle time 0:48.2, 1 tool change]
 [THREADS-OPTIONS]
 N 10 T5
 N 20 G97 S800 M3

@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-PULLOUTS, machine heidenhain-pilot]
 [T5 offset 5, first at CL line 4, 0:31.1]
-[cycle time 0:31.1, 1 tool changes]
+[cycle time 0:31.1, 1 tool change]
 [THREADS-PULLOUTS]
 N 10 T5
 N 20 G97 S800 M3

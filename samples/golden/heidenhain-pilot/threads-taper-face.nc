@@ -3,7 +3,7 @@
 MACHINING
 [program THREADS-TAPER-FACE, machine heidenhain-pilot]
 [T5 offset 5, first at CL line 5, 0:14.7]
-[cycle time 0:14.7, 1 tool changes]
+[cycle time 0:14.7, 1 tool change]
 [THREADS-TAPER-FACE]
 N 10 T5
 N 20 G97 S500 M3
