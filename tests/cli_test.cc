@@ -49,7 +49,7 @@ TEST(Cli, TheHeaderSpoolLeavesNoFileBehind) {
   write_file(dir + "/good.cl", "PARTNO GOOD\nUNITS/MM\nLOADTL/1\nRAPID\nGOTO/10,0,2\nFINI\n");
   RunResult r = run(bin() + " -o " + quote(dir + "/good.nc") + " " + quote(dir + "/good.cl"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(read_file(dir + "/good.nc").find("(program GOOD, machine generic-lathe)\n"),
+  EXPECT_NE(read_file(dir + "/good.nc").find("(machine generic-lathe, program GOOD)\n"),
             std::string::npos);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
   // The same program on standard output (its spool in the system's temporary directory).
@@ -136,7 +136,7 @@ TEST(Cli, SetOverridesTheMachine) {
                     quote(source_dir() + "/samples/pin-apt.apt"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("%\nO0001\nG18 G21 G40 G90\n"
-                        "(program PIN-01 turned pin, 25 mm stock, machine generic-lathe)\n"
+                        "(machine generic-lathe, program PIN-01 turned pin, 25 mm stock)\n"
                         "(T3 offset 3, first at CL line 5, 0:15.5)\n"
                         "(cycle time 0:15.5, 1 tool change)\n"
                         "(PIN-01 turned pin, 25 mm stock)\nT0303\n",
@@ -196,7 +196,7 @@ TEST(Cli, MissingFiniIsAWarningAndTheProgramIsClosed) {
   EXPECT_EQ(r.err,
             dir + "/nofini.cl:3: warning: the file ends without FINI: the program end was added\n");
   EXPECT_EQ(r.out,
-            "%\nO0001\nG18 G21 G40 G90\n(program nofini, machine generic-lathe)\n"
+            "%\nO0001\nG18 G21 G40 G90\n(machine generic-lathe, program nofini)\n"
             "(cycle time 0:00.0, 0 tool changes)\nG0 X20. Z2.\nM30\n%\n");
   fs::remove_all(dir);
 }

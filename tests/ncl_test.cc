@@ -136,7 +136,7 @@ TEST(NclFiles, PostLikeTheirAsTwins) {
   EXPECT_EQ(as.exit_code, 0) << as.err;
   EXPECT_EQ(cl.out, as.out);
   EXPECT_EQ(cl.out,
-            "%\nO0001\nN10 G18 G21 G40 G90\n(program Volumill_1a, machine generic-lathe)\n"
+            "%\nO0001\nN10 G18 G21 G40 G90\n(machine generic-lathe, program Volumill_1a)\n"
             "(cycle time 0:00.0, 0 tool changes)\nN20 M30\n%\n");
   // upside_down is a five-axis milling program with no feed: on a lathe (its Y ignored) both
   // stop on the same 23 feed moves, and neither writes a program.

@@ -59,7 +59,7 @@ TEST(PathThread, RepeatedGotoInsideCoupleWritesNoMotionlessBlock) {
             "  GOTO/10,0,-20\n"
             "  ^\n");
   EXPECT_EQ(p.program,
-            "%\nO0001\nN10 G18 G21 G40 G90\n(program t, machine generic-lathe)\n"
+            "%\nO0001\nN10 G18 G21 G40 G90\n(machine generic-lathe, program t)\n"
             "(cycle time 0:00.7, 0 tool changes)\nN20 G97 S800 M3\nN30 G0 X20. Z2.\n"
             "N40 G33 Z-20. F3.\nN50 X23. Z-21.5 F3.\nN60 G0 X30. Z5.\nN70 M30\n%\n");
 }

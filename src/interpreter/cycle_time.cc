@@ -264,7 +264,9 @@ std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, 
 
 std::vector<std::string> header_lines(const CycleTime& t, std::string_view program,
                                       std::string_view machine, LengthUnit units, bool diameter) {
-  std::vector<std::string> out{fmt::format("program {}, machine {}", program, machine)};
+  // The program's name last: a PARTNO may hold commas of its own ("PIN-01 turned pin, 25 mm
+  // stock").
+  std::vector<std::string> out{fmt::format("machine {}, program {}", machine, program)};
   std::vector<ToolTime> tools;  // each tool once (number and offset), its times summed
   for (const ToolTime& tt : t.tools) {
     if (tt.tool < 0) continue;

@@ -127,7 +127,7 @@ TEST(CycleTime, ProgramHeader) {
   // 15 mm at 100 mm/min: 9 s, and the tool change 2 s.
   EXPECT_EQ(r.program,
             "%\nO0001\nG18 G21 G40 G90\n"
-            "(HDR program t, machine generic-lathe)\n"
+            "(HDR machine generic-lathe, program t)\n"
             "(HDR T1 offset 1, first at CL line 2, 0:11.0)\n"
             "(HDR cycle time 0:11.0, 1 tool change)\n"
             "T0101\nG1 X20. Z-10. G94 F100.\n(done)\nM30\n%\n");
@@ -159,7 +159,7 @@ TEST(CycleTime, HeaderOnFanucInItsCommentStyle) {
   // control's blocks need no N), after the start's N10 and before the body's N20.
   const std::string expected =
       "%\nO0001\nN10 G18 G21 G40 G97\n"
-      "(PROGRAM SHAFT 7, MACHINE FANUC-0I-T)\n"
+      "(MACHINE FANUC-0I-T, PROGRAM SHAFT 7)\n"
       "(T1 OFFSET 1, OD TURN R0.8 50, FIRST AT CL LINE 4, 0:16.6)\n"
       "(T2 OFFSET 2, GROOVE 3MM, FIRST AT CL LINE 8, 0:08.0)\n"
       "(CYCLE TIME 0:24.6, 3 TOOL CHANGES)\n"
@@ -175,7 +175,7 @@ TEST(CycleTime, HeaderOnSinumerikInItsCommentStyle) {
   // `;` comments keep their case, their parentheses and '%'; unnumbered like every `;` line.
   const std::string expected =
       "N10 G18 G71 G40 G90 DIAMON\n"
-      "; program SHAFT 7, machine sinumerik-840d\n"
+      "; machine sinumerik-840d, program SHAFT 7\n"
       "; T1 offset 1, OD TURN (R0.8) 50%, first at CL line 4, 0:16.6\n"
       "; T2 offset 2, GROOVE 3MM, first at CL line 8, 0:08.0\n"
       "; cycle time 0:24.6, 3 tool changes\n"

@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G20 G40 G90
-(program BUSHING-7, machine generic-lathe)
+(machine generic-lathe, program BUSHING-7)
 (T2 offset 2, first at CL line 7, 0:13.0)
 (cycle time 0:13.0, 1 tool change)
 N20 (BUSHING-7)

@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program PIN-01 turned pin, 25 mm stock, machine generic-lathe)
+(machine generic-lathe, program PIN-01 turned pin, 25 mm stock)
 (T3 offset 3, first at CL line 5, 0:15.5)
 (cycle time 0:15.5, 1 tool change)
 N20 (PIN-01 turned pin, 25 mm stock)

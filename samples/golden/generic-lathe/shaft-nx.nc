@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program shaft-nx, machine generic-lathe)
+(machine generic-lathe, program shaft-nx)
 (T1 offset 1, OD_80_L, first at CL line 8, 0:23.3)
 (cycle time 0:23.3, 1 tool change)
 N20 (operation FACING_OD TOOL OD_80_L)

@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program M20X2.5, machine generic-lathe)
+(machine generic-lathe, program M20X2.5)
 (T7 offset 7, first at CL line 4, 0:14.0)
 (cycle time 0:14.0, 1 tool change)
 N20 (M20X2.5)

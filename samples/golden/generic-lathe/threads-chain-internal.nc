@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-CHAIN-INTERNAL, machine generic-lathe)
+(machine generic-lathe, program THREADS-CHAIN-INTERNAL)
 (T9 offset 9, first at CL line 6, 0:09.7)
 (cycle time 0:09.7, 1 tool change)
 N20 (THREADS-CHAIN-INTERNAL)

@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-CHAIN-MULTISTART, machine generic-lathe)
+(machine generic-lathe, program THREADS-CHAIN-MULTISTART)
 (T5 offset 5, first at CL line 6, 0:13.6)
 (cycle time 0:13.6, 1 tool change)
 N20 (THREADS-CHAIN-MULTISTART)

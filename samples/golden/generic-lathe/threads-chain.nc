@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-CHAIN, machine generic-lathe)
+(machine generic-lathe, program THREADS-CHAIN)
 (T6 offset 6, first at CL line 7, 0:52.1)
 (cycle time 0:52.1, 1 tool change)
 N20 (THREADS-CHAIN)

@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-FINISH, machine generic-lathe)
+(machine generic-lathe, program THREADS-FINISH)
 (T7 offset 7, first at CL line 5, 0:40.2)
 (cycle time 0:40.2, 1 tool change)
 N20 (THREADS-FINISH)

@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G20 G40 G90
-(program THREADS-INCH, machine generic-lathe)
+(machine generic-lathe, program THREADS-INCH)
 (T5 offset 5, first at CL line 5, 0:13.1)
 (cycle time 0:13.1, 1 tool change)
 N20 (THREADS-INCH)

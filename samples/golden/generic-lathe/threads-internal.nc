@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-INTERNAL, machine generic-lathe)
+(machine generic-lathe, program THREADS-INTERNAL)
 (T9 offset 9, first at CL line 5, 0:18.2)
 (cycle time 0:18.2, 1 tool change)
 N20 (THREADS-INTERNAL)

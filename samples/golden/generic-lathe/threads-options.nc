@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-OPTIONS, machine generic-lathe)
+(machine generic-lathe, program THREADS-OPTIONS)
 (T5 offset 5, first at CL line 5, 0:48.2)
 (cycle time 0:48.2, 1 tool change)
 N20 (THREADS-OPTIONS)

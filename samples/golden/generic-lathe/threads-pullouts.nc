@@ -1,7 +1,7 @@
 %
 O0001
 N10 G18 G21 G40 G90
-(program THREADS-PULLOUTS, machine generic-lathe)
+(machine generic-lathe, program THREADS-PULLOUTS)
 (T5 offset 5, first at CL line 4, 0:31.1)
 (cycle time 0:31.1, 1 tool change)
 N20 (THREADS-PULLOUTS)

@@ -1,7 +1,7 @@
 %1.nc
 [INCH]
 MACHINING
-[program BUSHING-7, machine heidenhain-pilot]
+[machine heidenhain-pilot, program BUSHING-7]
 [T2 offset 2, first at CL line 7, 0:13.0]
 [cycle time 0:13.0, 1 tool change]
 [BUSHING-7]

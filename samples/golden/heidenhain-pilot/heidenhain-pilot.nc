@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program HEIDENHAIN-G31, machine heidenhain-pilot]
+[machine heidenhain-pilot, program HEIDENHAIN-G31]
 [T9 offset 9, first at CL line 5, 0:25.3]
 [cycle time 0:25.3, 1 tool change]
 [HEIDENHAIN-G31]

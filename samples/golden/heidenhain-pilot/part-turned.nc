@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program PART-TURNED, machine heidenhain-pilot]
+[machine heidenhain-pilot, program PART-TURNED]
 [T1 offset 1, first at CL line 6, 0:25.8]
 [T2 offset 2, first at CL line 24, 0:06.2]
 [T3 offset 3, first at CL line 32, 0:16.5]

@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program PIN-01 turned pin, 25 mm stock, machine heidenhain-pilot]
+[machine heidenhain-pilot, program PIN-01 turned pin, 25 mm stock]
 [T3 offset 3, first at CL line 5, 0:15.5]
 [cycle time 0:15.5, 1 tool change]
 [PIN-01 turned pin, 25 mm stock]

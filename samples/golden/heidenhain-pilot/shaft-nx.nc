@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program shaft-nx, machine heidenhain-pilot]
+[machine heidenhain-pilot, program shaft-nx]
 [T1 offset 1, OD_80_L, first at CL line 8, 0:23.3]
 [cycle time 0:23.3, 1 tool change]
 [operation FACING_OD TOOL OD_80_L]

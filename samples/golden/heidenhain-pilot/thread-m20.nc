@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program M20X2.5, machine heidenhain-pilot]
+[machine heidenhain-pilot, program M20X2.5]
 [T7 offset 7, first at CL line 4, 0:14.0]
 [cycle time 0:14.0, 1 tool change]
 [M20X2.5]

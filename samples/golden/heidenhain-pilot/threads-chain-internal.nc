@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-CHAIN-INTERNAL, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-CHAIN-INTERNAL]
 [T9 offset 9, first at CL line 6, 0:09.7]
 [cycle time 0:09.7, 1 tool change]
 [THREADS-CHAIN-INTERNAL]

@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-CHAIN-MULTISTART, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-CHAIN-MULTISTART]
 [T5 offset 5, first at CL line 6, 0:13.6]
 [cycle time 0:13.6, 1 tool change]
 [THREADS-CHAIN-MULTISTART]

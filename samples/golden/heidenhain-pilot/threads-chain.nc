@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-CHAIN, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-CHAIN]
 [T6 offset 6, first at CL line 7, 0:52.1]
 [cycle time 0:52.1, 1 tool change]
 [THREADS-CHAIN]

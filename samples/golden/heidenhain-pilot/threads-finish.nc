@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-FINISH, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-FINISH]
 [T7 offset 7, first at CL line 5, 0:40.2]
 [cycle time 0:40.2, 1 tool change]
 [THREADS-FINISH]

@@ -1,7 +1,7 @@
 %1.nc
 [INCH]
 MACHINING
-[program THREADS-INCH, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-INCH]
 [T5 offset 5, first at CL line 5, 0:13.1]
 [cycle time 0:13.1, 1 tool change]
 [THREADS-INCH]

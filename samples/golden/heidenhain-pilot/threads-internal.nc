@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-INTERNAL, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-INTERNAL]
 [T9 offset 9, first at CL line 5, 0:18.2]
 [cycle time 0:18.2, 1 tool change]
 [THREADS-INTERNAL]

@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-MULTISTART, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-MULTISTART]
 [T5 offset 5, first at CL line 5, 0:29.7]
 [cycle time 0:29.7, 1 tool change]
 [THREADS-MULTISTART]

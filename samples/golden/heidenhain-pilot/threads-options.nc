@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-OPTIONS, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-OPTIONS]
 [T5 offset 5, first at CL line 5, 0:48.2]
 [cycle time 0:48.2, 1 tool change]
 [THREADS-OPTIONS]

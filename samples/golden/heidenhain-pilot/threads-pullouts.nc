@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-PULLOUTS, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-PULLOUTS]
 [T5 offset 5, first at CL line 4, 0:31.1]
 [cycle time 0:31.1, 1 tool change]
 [THREADS-PULLOUTS]

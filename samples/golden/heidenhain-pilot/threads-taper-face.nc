@@ -1,7 +1,7 @@
 %1.nc
 [METRIC]
 MACHINING
-[program THREADS-TAPER-FACE, machine heidenhain-pilot]
+[machine heidenhain-pilot, program THREADS-TAPER-FACE]
 [T5 offset 5, first at CL line 5, 0:14.7]
 [cycle time 0:14.7, 1 tool change]
 [THREADS-TAPER-FACE]
