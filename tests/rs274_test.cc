@@ -190,6 +190,49 @@ TEST(Rs274, MillTurnFaceBoltCircle) {
   fs::remove_all(dir);
 }
 
+// Radial holes of a live tool on linuxcnc-lathe-c (G19 G81, docs/millturn.md): rs274 drills each
+// along X at its Z and C. Mapped back to the part (x = X cos C, y = X sin C), the bottoms are
+// the CL's by hand: radius 40 drilled 10 deep is radius 30; hole 1 at C0 is (30, 0, -10),
+// hole 2 at C90 (0, 30, -20), hole 3 (GOTO/0,40 at index 90: C 90 + 90) (-30, 0, -30). rs274
+// takes the bottom X as a diameter in G7 and R as a radius: the feeds start at X 42.
+TEST(Rs274, MillTurnRadialHoles) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), ngc = dir + "/radial.ngc";
+  const std::string cl = source_dir() + "/tests/data/millturn-radial-holes.apt";
+  RunResult post =
+      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const double deg = std::acos(-1.0) / 180;
+  std::vector<std::vector<double>> got;  // part x, y, z of each feed's end
+  std::vector<double> feed_from;         // X (a radius) where each feed starts
+  double last_x = 0;
+  std::istringstream out(r.out);
+  for (std::string line; std::getline(out, line);) {
+    const bool feed = line.find("STRAIGHT_FEED(") != std::string::npos;
+    const size_t at = line.find(feed ? "STRAIGHT_FEED(" : "STRAIGHT_TRAVERSE(");
+    if (at == std::string::npos) continue;
+    const std::vector<double> v = canon_numbers(line.substr(at));
+    ASSERT_EQ(v.size(), 6u) << line;
+    if (feed) {
+      got.push_back({v[0] * std::cos(v[5] * deg), v[0] * std::sin(v[5] * deg), v[2]});
+      feed_from.push_back(last_x);
+    }
+    last_x = v[0];
+  }
+  const std::vector<std::vector<double>> want = {{30, 0, -10}, {0, 30, -20}, {-30, 0, -30}};
+  ASSERT_EQ(got.size(), want.size()) << r.out;
+  for (size_t i = 0; i < want.size(); ++i) {
+    for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(got[i][k], want[i][k], 0.01) << "hole " << i + 1;
+    EXPECT_NEAR(feed_from[i], 42, 0.01) << "hole " << i + 1 << ": R plane, radius 40 + 2";
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   // From rs274 -g on "G7 G18 G21 G90 / G0 X20 Z5 / G2 X34 Z-22 I2 K0": radii, Z first on arcs.
   std::vector<XZ> m = rs274_motion_ends(

@@ -31,7 +31,37 @@ consteval size_t field(std::string_view f, FieldKind kind = FieldKind::kText) {
   return tmpl::kHoleDrill.field(f, kind);
 }
 
+// The index of radial hole field `f` (tmpl::kRadialHoleFields).
+consteval size_t radial_field(std::string_view f, FieldKind kind = FieldKind::kText) {
+  return tmpl::kHoleRadialDrill.field(f, kind);
+}
+
+// A radial hole's cycle: X along the hole (a diameter where X is one), Z where it is.
+TemplateWrite write_radial_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t) {
+  const Machine& m = prog.machine();
+  const double d = diameter_factor(m);
+  TemplateValues v(t);
+  v.set_text(radial_field("x"), prog.num("X", h.bottom * d));
+  v.set_text(radial_field("z"), prog.num("Z", h.z));
+  v.set_text(radial_field("top"), prog.num("X", h.top * d));
+  v.set_text(radial_field("r"), prog.num("X", h.r * d));
+  v.set_text(radial_field("r_radius"), prog.num("X", h.r));
+  v.set_text(radial_field("r_inc"), prog.num("X", h.r - h.start));
+  v.set_text(radial_field("start"), prog.num("X", h.start * d));
+  v.set_text(radial_field("safety"), prog.num("X", std::fabs(h.r - h.top)));
+  v.set_text(radial_field("depth"), prog.num("X", depth_of(h)));
+  v.set_text(radial_field("peck"),
+             prog.num("hole_peck", h.peck > 0 ? h.peck : std::fabs(h.bottom - h.r)));
+  v.set_text(radial_field("dwell"), prog.num("dwell", h.dwell));
+  v.set_whole(radial_field("dwell_ms", FieldKind::kWhole), std::llround(h.dwell * 1000));
+  v.set_text(radial_field("feed"), prog.num("F", h.feed));
+  v.set_text(radial_field("feed_mode"),
+             m.code(h.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+  return prog.write_template(v);
+}
+
 TemplateWrite write_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t) {
+  if (h.radial) return write_radial_cycle(prog, h, t);
   const Machine& m = prog.machine();
   TemplateValues v(t);
   v.set_text(field("x"), prog.num("X", h.x * diameter_factor(prog.machine())));
@@ -53,9 +83,31 @@ TemplateWrite write_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t)
   return prog.write_template(v);
 }
 
+// The point `along` the hole's axis (Z, or X for a radial hole) on its line.
+LathePoint on_axis(const Hole& h, double along) {
+  return h.radial ? LathePoint{along, h.z} : LathePoint{h.x, along};
+}
+
+const TemplateSpec& radial_hole_template(const Hole& h) {
+  switch (h.kind) {
+    case HoleKind::kDrill:
+    case HoleKind::kTap:  // a live tool's tap is refused before it is a hole (hole_live.cc)
+      return h.dwell > 0 ? tmpl::kHoleRadialDwell : tmpl::kHoleRadialDrill;
+    case HoleKind::kDeep:
+      return tmpl::kHoleRadialPeck;
+    case HoleKind::kChipBreak:
+      return tmpl::kHoleRadialChipBreak;
+    case HoleKind::kBore:
+    case HoleKind::kReam:
+      break;
+  }
+  return tmpl::kHoleRadialBore;
+}
+
 }  // namespace
 
 const TemplateSpec& hole_template(const Machine& m, const Hole& h) {
+  if (h.radial) return radial_hole_template(h);
   switch (h.kind) {
     case HoleKind::kDrill:
       return h.dwell > 0 ? tmpl::kHoleDwell : tmpl::kHoleDrill;
@@ -101,20 +153,24 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
 TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
   const double clr = prog.machine().peck_clearance;
   const double back_off = chip_backoff(h, clr);
-  if (prog.position() && std::fabs(prog.position()->r - h.x) > 1e-12)
+  if (h.radial) {
+    if (prog.position() && std::fabs(prog.position()->z - h.z) > 1e-12)
+      prog.rapid({prog.position()->r, h.z});
+  } else if (prog.position() && std::fabs(prog.position()->r - h.x) > 1e-12) {
     prog.rapid({h.x, prog.position()->z});
-  prog.rapid({h.x, h.r});
+  }
+  prog.rapid(on_axis(h, h.r));
   prog.set_feed(h.feed, h.feed_mode);
   const std::vector<double> ends = hole_feed_ends(h);
   for (size_t i = 0; i < ends.size(); ++i) {
-    prog.linear({h.x, ends[i]});
+    prog.linear(on_axis(h, ends[i]));
     if (i + 1 == ends.size()) break;
     // Out to the R plane (peck) or back a little (chip breaking), then back in to just short
     // of the depth reached, never above the R plane.
-    if (h.kind == HoleKind::kDeep) prog.rapid({h.x, h.r});
+    if (h.kind == HoleKind::kDeep) prog.rapid(on_axis(h, h.r));
     const double back =
         std::max(0.0, std::fabs(ends[i] - h.r) - (h.kind == HoleKind::kDeep ? clr : back_off));
-    prog.rapid({h.x, h.r + h.dir * back});
+    prog.rapid(on_axis(h, h.r + h.dir * back));
   }
   TemplateWrite dwell;
   if (h.dwell > 0)
@@ -123,12 +179,12 @@ TemplateWrite expand_hole(NcProgram& prog, const Hole& h) {
   if (h.kind == HoleKind::kTap) {
     const SpindleDir back = h.spindle == SpindleDir::kCw ? SpindleDir::kCcw : SpindleDir::kCw;
     if (TemplateWrite r = prog.spindle_rpm(h.rpm, back); !r) return r;
-    prog.linear({h.x, h.r});
+    prog.linear(on_axis(h, h.r));
     if (TemplateWrite r = prog.spindle_rpm(h.rpm, h.spindle); !r) return r;
   } else if (h.kind == HoleKind::kBore || h.kind == HoleKind::kReam) {
-    prog.linear({h.x, h.r});
+    prog.linear(on_axis(h, h.r));
   }
-  prog.rapid({h.x, h.retract});
+  prog.rapid(on_axis(h, h.retract));
   return dwell;
 }
 
@@ -150,12 +206,13 @@ class HoleCycleOutput : public CycleOutput<Hole> {
     return f;
   }
   bool emit(const Hole& h, NcProgram& prog, const EmitContext& ctx) override {
-    if (!prog.position() || std::fabs(prog.position()->r - h.x) > 1e-12 ||
-        std::fabs(prog.position()->z - h.start) > 1e-12)
-      prog.rapid({h.x, h.start});
+    const LathePoint start = on_axis(h, h.start);
+    if (!prog.position() || std::fabs(prog.position()->r - start.r) > 1e-12 ||
+        std::fabs(prog.position()->z - start.z) > 1e-12)
+      prog.rapid(start);
     if (!template_written(write_cycle(prog, h, t_), prog.machine(), ctx)) return false;
-    prog.cycle_ended_at({h.x, h.start});
-    if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid({h.x, h.retract});
+    prog.cycle_ended_at(start);
+    if (std::fabs(h.retract - h.start) > 1e-12) prog.rapid(on_axis(h, h.retract));
     return true;
   }
 
@@ -178,12 +235,17 @@ class HoleMovesOutput : public CycleOutput<Hole> {
 bool write_hole(NcProgram& prog, const Hole& h, const EmitContext& ctx) {
   const Machine& m = prog.machine();
   const TemplateSpec& t = hole_template(m, h);
-  const std::string at =
-      h.c ? fmt::format(" at X{} {}{}", prog.num("X", h.x * diameter_factor(prog.machine())),
-                        m.c_address, prog.num("C", *h.c))
-          : std::string();
-  prog.comment(
-      fmt::format("{}: {}{} to Z{}", h.name, hole_kind_name(h.kind), at, prog.num("Z", h.bottom)));
+  const double d = diameter_factor(m);
+  const std::string c =
+      h.c ? fmt::format(" {}{}", m.c_address, prog.num("C", *h.c)) : std::string();
+  if (h.radial)
+    prog.comment(fmt::format("{}: radial {} at Z{}{} to X{}", h.name, hole_kind_name(h.kind),
+                             prog.num("Z", h.z), c, prog.num("X", h.bottom * d)));
+  else
+    prog.comment(
+        fmt::format("{}: {}{} to Z{}", h.name, hole_kind_name(h.kind),
+                    h.c ? fmt::format(" at X{}{}", prog.num("X", h.x * d), c) : std::string(),
+                    prog.num("Z", h.bottom)));
   HoleCycleOutput cycle(t);
   HoleMovesOutput moves;
   std::vector<CycleOutput<Hole>*> order;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "interpreter/hole_live.h"
 #include "interpreter/statement_table.h"
 #include "support/number_text.h"
 
@@ -78,45 +79,6 @@ bool hole_feed(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
   return true;
 }
 
-// Hole `h` of live tool at CL point `p` (docs/millturn.md): a face hole at X (the GOTO's radius)
-// and the C in force; false (reported) when the machine cannot drill it or the CL does not say
-// enough.
-bool live_face_hole(PostState& s, const Statement& st, const HoleCycle& c, Point3 p, Hole& h) {
-  const double y = axis_value(p, third_axis(s));
-  const auto refuse = [&](std::string why) {
-    error(s, st, st.loc,
-          fmt::format("CYCLE/{} {} with live tool {}: {}", c.word, h.name, s.tool.number, why));
-    return false;
-  };
-  if (s.hole_axis_radial)
-    return refuse(
-        "the tool axis is not along Z: a radial hole (G19, G241-G243, Fanuc G87) is not written "
-        "yet (docs/millturn.md)");
-  if (std::fabs(y) > 1e-4)
-    return refuse(fmt::format(
-        "the hole is {} off the X axis (Y{}): a face hole is written at X with C at its index "
-        "(ROTABL/ before it), and C computed from X and Y is not written yet",
-        num_text(std::fabs(y)), num_text(y)));
-  h.x = cl2(s, p).x;
-  if (!s.m.face_holes)
-    return refuse(fmt::format(
-        "machine '{}' does not say how its control drills off the centre line "
-        "(millturn.face_holes: false): no source gives its face drilling cycle at X with C "
-        "(docs/millturn.md)",
-        s.m.name));
-  if (!s.c.angle) return refuse("C is not indexed: a face hole needs ROTABL/…,CAXIS before it");
-  h.c = *s.c.angle;
-  if (c.kind == HoleKind::kTap)
-    return refuse("a tap needs the live tool's synchronised tapping, which is not written yet");
-  const bool per_rev =
-      c.feed ? c.feed_mode == FeedMode::kPerRev : s.feed_given && s.feed_mode == FeedMode::kPerRev;
-  if (per_rev)
-    return refuse(
-        "a feed per revolution would be per revolution of the stopped main spindle: give the "
-        "feed per minute (MMPM, IPM)");
-  return true;
-}
-
 // The hole at CL point `p`; false (reported) when it cannot be drilled on a lathe.
 bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   const HoleCycle& c = *s.hole_cycle;
@@ -125,9 +87,7 @@ bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   h.kind = c.kind;
   h.cl_line = st.loc.line;
   h.name = fmt::format("hole at CL line {}", st.loc.line);
-  if (s.tool.mills()) {
-    if (!live_face_hole(s, st, c, p, h)) return false;
-  } else if (radius > 1e-4) {
+  if (!s.tool.mills() && radius > 1e-4) {
     error(s, st, st.loc,
           fmt::format("CYCLE/{} {} is {} off the spindle's centre line (GOTO/{}): a hole off "
                       "the centre line needs live tooling, which a lathe post does not write",
@@ -142,6 +102,7 @@ bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   }
   h.start = cl2(s, *s.pos).z;
   h.top = v.z;
+  if (s.tool.mills() && !live_hole(s, st, c, p, h, h.top, h.start)) return false;
   h.dir = h.start >= h.top ? -1 : 1;
   h.bottom = h.top + h.dir * c.depth;
   h.r = c.clearance ? h.top - h.dir * *c.clearance : h.start;
@@ -161,12 +122,32 @@ bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   return hole_feed(s, st, c, h);
 }
 
+double& axis_ref(Point3& p, ClAxis a) {
+  return a == ClAxis::kX ? p.x : a == ClAxis::kY ? p.y : p.z;
+}
+
+// Where the tool is after hole `h` at CL point `p`: at its retract plane on the hole's axis, in
+// the CL frame (a hole off the X axis keeps its Y).
+Point3 hole_exit_point(const PostState& s, Point3 p, const Hole& h) {
+  if (!h.radial) {
+    Point3 q = cl_point(s, Vec2{cl2(s, p).x, h.retract});
+    axis_ref(q, third_axis(s)) = axis_value(p, third_axis(s));
+    return q;
+  }
+  const double k = h.retract / h.top;  // along the hole's radial line
+  axis_ref(p, s.radial) *= k;
+  axis_ref(p, third_axis(s)) *= k;
+  return p;
+}
+
 }  // namespace
 
 void hole_goto(PostState& s, const Statement& st, Point3 p) {
   Hole h;
   if (!make_hole(s, st, p, h)) return;
   ensure_started(s);
+  if (s.tool.mills() && (!live_feed_per_minute(s, st, *s.hole_cycle, h) || !live_hole_c(s, st, h)))
+    return;
   restart_stopped_spindle(s, st);
   ++s.stats.motions;
   const SavedLines lines = SavedLines::of(st);
@@ -174,9 +155,10 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
       s.prog, h, EmitContext{.diags = s.diags, .lines = lines, .loc = st.loc, .used = &s.outputs});
   time_hole(s, h);
   if (s.feed_given) s.prog.set_feed(s.feed, s.feed_mode);
-  s.pos = cl_point(s, Vec2{h.x, h.retract});
+  s.pos = hole_exit_point(s, p, h);
   // The hole leaves the tool at its retract plane: a rapid there, as verify sees it.
-  if (r) record_exit(s, st.loc.line, Vec2{h.x, h.retract}, h.bottom);
+  if (r && h.radial) record_exit(s, st.loc.line, Vec2{h.retract, h.z});
+  if (r && !h.radial) record_exit(s, st.loc.line, Vec2{h.x, h.retract}, h.bottom);
   if (r) s.holes.push_back(std::move(h));
   s.rapid_next = false;
 }

@@ -106,7 +106,11 @@ void release_c(PostState& s) {
 }
 
 bool live_xz_move(const PostState& s, Point3 p) {
-  if (!s.tool.mills() || s.hole_axis_radial) return false;
+  if (!s.tool.mills()) return false;
+  // A tool axis off Z is still an XZ move when it is along X at Y 0: the radial drill's approach.
+  if (s.hole_axis_radial && (std::fabs(axis_value(s.tool_axis, third_axis(s))) > 1e-6 ||
+                             std::fabs(axis_value(s.tool_axis, s.m.cl_axial)) > 1e-6))
+    return false;
   if (std::fabs(axis_value(p, third_axis(s))) > 1e-4) return false;
   if (!s.c.angle && std::fabs(cl2(s, p).x) > 1e-4) return false;
   return s.rapid_next || s.feed_mode != FeedMode::kPerRev;
@@ -244,19 +248,33 @@ void rotabl_stmt(PostState& s, const Statement& st) {
                  fmt::format("{}/…,INCR: C's position is not known yet (no ROTABL since the C "
                              "axis was engaged)",
                              st.major));
-  const std::vector<double> steps = c_steps(s.m, s.c.angle, *w.angle, w.incremental, w.sign);
-  if (steps.empty()) return;  // C is there: nothing moves, nothing unclamps
+  // INCR turns the part frame from its index: a hole off the X axis may have moved C on.
+  std::optional<double> from = s.c.angle;
+  if (w.incremental && s.c.index) from = s.c.index;
+  std::vector<double> steps = c_steps(s.m, from, *w.angle, w.incremental, w.sign);
+  if (from != s.c.angle) {
+    const double to = steps.empty() ? *from : steps.back();
+    steps = c_steps(s.m, s.c.angle, to, false, w.sign);
+  }
+  if (write_c_steps(s, st, steps)) s.c.index = s.c.angle;
+}
+
+bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>& steps) {
+  if (steps.empty()) return true;  // C is there: nothing moves, nothing unclamps
   if (s.c.clamped) code_block(s, "c_unclamp");
   for (double c : steps) {
     TemplateFill<tmpl::kCIndex> v;
     v.text<"c">(s.prog.num("C", c)).text<"address">(s.m.c_address);
-    if (TemplateWrite r = s.prog.write_template(v); !r)
-      return error(s, st, st.loc, template_error(s.m, r));
+    if (TemplateWrite r = s.prog.write_template(v); !r) {
+      error(s, st, st.loc, template_error(s.m, r));
+      return false;
+    }
   }
   s.c.angle = steps.back();
   code_block(s, "c_clamp");
   s.c.clamped = !s.m.code("c_clamp").empty();
   s.prog.forget_modal();  // the motion code of c_index may not be the one in force
+  return true;
 }
 
 // SYNC/…: waits between channels of a multi-channel machine (CATIA's Swiss-type programs).

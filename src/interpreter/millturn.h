@@ -32,5 +32,8 @@ bool milling_motion_refused(PostState& s, const Statement& st);
 // them (millturn.c_rotation); empty when C is there already.
 std::vector<double> c_steps(const Machine& m, std::optional<double> from, double angle,
                             bool incremental, std::optional<int> sign);
+// Writes C words `steps` (c_steps), unclamping before and clamping after as the machine does;
+// C is then at the last. False (reported at `st`) when the c_index template cannot be written.
+bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>& steps);
 
 }  // namespace clpost

@@ -282,51 +282,24 @@ TEST(MillTurn, FaceHolesOnHaasSt20y) {
 }
 
 // What is not written is a located error naming what is missing, never a hole on the centre
-// line: Fanuc's face G83 with C (no public source), a radial hole, a hole off the X axis, a
-// feed per revolution of the stopped main spindle, C never indexed.
+// line: C never indexed. (Fanuc's face G83, radial holes, holes off the X axis and a feed per
+// revolution are written now: hole_live_test.cc.)
 TEST(MillTurn, FaceHolesThatCannotBeWrittenAreLocatedErrors) {
-  Posted f = post(kFaceHoles, load("fanuc-0i-tf-live"));
-  EXPECT_EQ(f.errors, 2u) << f.diags;
-  EXPECT_NE(f.diags.find("t.cl:7:1: error: CYCLE/DRILL hole at CL line 7 with live tool 3: "
-                         "machine 'fanuc-0i-tf-live' does not say how its control drills off the "
-                         "centre line (millturn.face_holes: false): no source gives its face "
-                         "drilling cycle at X with C (docs/millturn.md)\n"),
-            std::string::npos)
-      << f.diags;
-  EXPECT_EQ(f.nc.find("G83"), std::string::npos) << f.nc;
-  const auto one = [](std::string goto_line, std::string feed = "FEDRAT/100,MMPM") {
-    std::string cl = kFaceHoles;
-    cl.replace(cl.find("FEDRAT/100,MMPM"), 15, feed);
-    cl.replace(cl.find("GOTO/30,0,0"), 11, goto_line);
-    return post(cl, load("linuxcnc-lathe-c"));
-  };
-  const std::string head = "t.cl:7:1: error: CYCLE/DRILL hole at CL line 7 with live tool 3: ";
-  Posted radial = one("GOTO/30,0,0,1,0,0");
-  EXPECT_NE(radial.diags.find(head + "the tool axis is not along Z: a radial hole (G19, "
-                                     "G241-G243, Fanuc G87) is not written yet (docs/millturn.md)"),
-            std::string::npos)
-      << radial.diags;
-  Posted off_axis = one("GOTO/30,4,0");
-  EXPECT_NE(off_axis.diags.find(head + "the hole is 4 off the X axis (Y4): a face hole is written "
-                                       "at X with C at its index (ROTABL/ before it), and C "
-                                       "computed from X and Y is not written yet"),
-            std::string::npos)
-      << off_axis.diags;
-  std::string per_rev_cl = kFaceHoles;
-  per_rev_cl.replace(per_rev_cl.find("CYCLE/DRILL,8,MMPM,100"), 22, "CYCLE/DRILL,8,MMPR,0.1");
-  Posted per_rev = post(per_rev_cl, load("linuxcnc-lathe-c"));
-  EXPECT_NE(per_rev.diags.find(head + "a feed per revolution would be per revolution of the "
-                                      "stopped main spindle: give the feed per minute (MMPM, "
-                                      "IPM)"),
-            std::string::npos)
-      << per_rev.diags;
   std::string no_c = kFaceHoles;
   no_c.erase(no_c.find("ROTABL/0,CAXIS\n"), 15);
   Posted unindexed = post(no_c, load("linuxcnc-lathe-c"));
   EXPECT_NE(unindexed.diags.find("t.cl:6:1: error: CYCLE/DRILL hole at CL line 6 with live tool "
-                                 "3: C is not indexed: a face hole needs ROTABL/…,CAXIS before it"),
+                                 "3: C is not indexed: a hole of a live tool needs ROTABL/…,CAXIS "
+                                 "before it"),
             std::string::npos)
       << unindexed.diags;
+  Posted tap = post(std::string(kFaceHoles)
+                        .replace(std::string(kFaceHoles).find("CYCLE/DRILL,8"), 13, "CYCLE/TAP,8"),
+                    load("linuxcnc-lathe-c"));
+  EXPECT_NE(tap.diags.find("t.cl:7:1: error: CYCLE/TAP hole at CL line 7 with live tool 3: a tap "
+                           "needs the live tool's synchronised tapping, which is not written yet"),
+            std::string::npos)
+      << tap.diags;
 }
 
 }  // namespace

@@ -227,6 +227,7 @@ void goto_stmt(PostState& s, const Statement& st) {
     const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
     s.hole_axis_radial =
         !(len > 0) || std::fabs(std::fabs(axis_value(t, s.m.cl_axial)) / len - 1) > 1e-6;
+    if (len > 0) s.tool_axis = Point3{t.x / len, t.y / len, t.z / len};
     if (!s.tool.mills())
       note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
   }

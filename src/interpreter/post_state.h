@@ -77,6 +77,9 @@ struct CAxisState {
   bool engaged = false;         // the main spindle is the C axis (codes.c_engage written)
   bool clamped = false;         // codes.c_clamp written since C last moved
   std::optional<double> angle;  // C as last written (unknown after engaging)
+  // The last ROTABL's angle: the part frame is turned by it (a hole off the X axis is at this
+  // index plus its own angle, hole_live.cc), while C may have moved on to a hole.
+  std::optional<double> index;
 };
 
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number
@@ -130,6 +133,7 @@ struct PostState {
   std::optional<ToolKindWord> cl_mode;
   bool mill_motion_reported = false;
   bool hole_axis_radial = false;    // the last GOTO's tool axis (i,j,k) is not along the spindle's
+  Point3 tool_axis{0, 0, 1};        // the last GOTO's tool axis, a unit vector in the CL frame
   bool spindle_stopped = false;     // the control's tool change stopped the CL's turning spindle
   Coolant coolant = Coolant::kOff;  // as the CL last set it
   // OPSKIP/ON … OFF: the spindle and coolant before the range, which the blocks after it must

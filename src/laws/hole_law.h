@@ -1,8 +1,8 @@
 #pragma once
-// A hole along the spindle axis (on its centre line, or off it at a C index with a live tool) as
-// the controls' drilling cycles define it: where each feed into the hole ends (the pecks measured
-// from the R plane, as a G83 does). The emitters write holes by it (emitters/hole_output.h) and the
-// simulator expands a hole cycle's words with it.
+// A hole along the spindle axis (on its centre line, or off it at a C index with a live tool), or
+// radial along X with a live tool, as the controls' drilling cycles define it: where each feed into
+// the hole ends (the pecks measured from the R plane, as a G83 does). The emitters write holes by
+// it (emitters/hole_output.h) and the simulator expands a hole cycle's words with it.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -19,20 +19,25 @@ enum class HoleKind : uint8_t { kDrill, kDeep, kChipBreak, kTap, kBore, kReam };
 // "drilling", "peck drilling", …
 std::string_view hole_kind_name(HoleKind k);
 
-// A hole in the lathe frame, output units. The tool drills from `top` toward `top + dir·depth`.
+// A hole in the lathe frame, output units. The tool drills from `top` toward `top + dir·depth`
+// along its axis: Z for a hole on the centre line or a face hole, X (as a radius) for a radial
+// hole of a live tool (docs/millturn.md). start, top, r, bottom and retract are positions along
+// that axis.
 struct Hole {
   HoleKind kind = HoleKind::kDrill;
   std::string name;                 // "hole at CL line 12", for comments and diagnostics
   uint32_t cl_line = 0;             // the hole's GOTO
-  double x = 0;                     // X of the hole (a radius): 0 on the centre line, else a
-                                    // face hole of a live tool (docs/millturn.md)
-  std::optional<double> c;          // the C axis's index (degrees) for a face hole off centre
-  double start = 0;                 // Z of the tool before the hole (the cycle's initial level)
-  double top = 0;                   // Z of the hole's top (the CL hole point)
-  double r = 0;                     // Z of the R plane (top plus the clearance)
-  double bottom = 0;                // Z of the hole's bottom
-  double retract = 0;               // Z the tool leaves the hole to
-  double dir = -1;                  // -1: drilling toward -Z
+  bool radial = false;              // drilled along X toward the centre line (else along Z)
+  double x = 0;                     // X of a hole along Z (a radius): 0 on the centre line, else
+                                    // a face hole of a live tool (docs/millturn.md)
+  double z = 0;                     // Z of a radial hole
+  std::optional<double> c;          // the C axis (degrees) for a hole of a live tool
+  double start = 0;                 // where the tool is before the hole (the initial level)
+  double top = 0;                   // the hole's top (the CL hole point)
+  double r = 0;                     // the R plane (top plus the clearance)
+  double bottom = 0;                // the hole's bottom
+  double retract = 0;               // where the tool leaves the hole to
+  double dir = -1;                  // -1: drilling toward -Z (radial: toward the centre line)
   double first_peck = 0, peck = 0;  // 0: no pecks; measured from the R plane
   std::optional<double> backoff;    // chip breaking: each peck backs off by it (else the machine's)
   double dwell = 0;                 // seconds at the bottom

@@ -342,13 +342,27 @@ constexpr auto kCodes = join(kEarlierCodes, kControlCodes, kLaterCodes);
 constexpr const TemplateSpec* kCommonTemplates[] = {
     &tmpl::kProgramStart, &tmpl::kProgramEnd,  &tmpl::kToolChange, &tmpl::kSpindleRpm,
     &tmpl::kSpindleCss,   &tmpl::kSpindleStop, &tmpl::kDwell};
-constexpr const TemplateSpec* kLaterTemplates[] = {
-    &tmpl::kHoleDrill,     &tmpl::kHoleDwell,      &tmpl::kHolePeck,
-    &tmpl::kHoleChipBreak, &tmpl::kHoleTap,        &tmpl::kHoleTapRigid,
-    &tmpl::kHoleBore,      &tmpl::kHome,           &tmpl::kToolChangePosition,
-    &tmpl::kAuxfun,        &tmpl::kPrefun,         &tmpl::kSelctl,
-    &tmpl::kProgramHeader, &tmpl::kLiveSpindleRpm, &tmpl::kLiveSpindleStop,
-    &tmpl::kCIndex};
+constexpr const TemplateSpec* kLaterTemplates[] = {&tmpl::kHoleDrill,
+                                                   &tmpl::kHoleDwell,
+                                                   &tmpl::kHolePeck,
+                                                   &tmpl::kHoleChipBreak,
+                                                   &tmpl::kHoleTap,
+                                                   &tmpl::kHoleTapRigid,
+                                                   &tmpl::kHoleBore,
+                                                   &tmpl::kHoleRadialDrill,
+                                                   &tmpl::kHoleRadialDwell,
+                                                   &tmpl::kHoleRadialPeck,
+                                                   &tmpl::kHoleRadialChipBreak,
+                                                   &tmpl::kHoleRadialBore,
+                                                   &tmpl::kHome,
+                                                   &tmpl::kToolChangePosition,
+                                                   &tmpl::kAuxfun,
+                                                   &tmpl::kPrefun,
+                                                   &tmpl::kSelctl,
+                                                   &tmpl::kProgramHeader,
+                                                   &tmpl::kLiveSpindleRpm,
+                                                   &tmpl::kLiveSpindleStop,
+                                                   &tmpl::kCIndex};
 constexpr auto kTemplates = join(kCommonTemplates, tmpl::kControlTemplates, kLaterTemplates);
 
 template <typename T, typename N>

@@ -143,6 +143,25 @@ inline constexpr TemplateField kHoleFields[] = {
     {"lead", kText, "tap lead per revolution, format F"},
     {"rpm", kText, "spindle speed, format S"}};
 
+// A radial hole of a live tool (docs/millturn.md): drilled along X toward the centre line at Z,
+// C written before it (c_index).
+inline constexpr TemplateField kRadialHoleFields[] = {
+    {"x", kText, "hole bottom X (the depth along X), format X, a diameter where X is one"},
+    {"z", kText, "hole Z, format Z"},
+    {"top", kText, "hole top X (the CL hole point), format X"},
+    {"r", kText, "R plane X (top plus the clearance), format X"},
+    {"r_radius", kText,
+     "R plane X as a radius, format X (LinuxCNC's G19 R: rs274 reads it so in G7)"},
+    {"r_inc", kText, "R plane relative to the start X, a radius, format X (Fanuc G87's R)"},
+    {"start", kText, "start X: where the tool is before the cycle and returns to, format X"},
+    {"safety", kText, "R plane distance from the top (the clearance), format X, a radius"},
+    {"depth", kText, "hole depth below the top, format X, a radius"},
+    {"peck", kText, "peck depth, format hole_peck"},
+    {"dwell", kText, "dwell at the bottom in seconds, format dwell"},
+    {"dwell_ms", kWhole, "dwell at the bottom in milliseconds"},
+    {"feed", kText, "feed, format F"},
+    {"feed_mode", kText, "codes.feed_per_rev or feed_per_min, as the feed"}};
+
 inline constexpr TemplateField kLiveSpindleFields[] = {
     {"rpm", kText, "live tool speed, format S"},
     {"direction", kText, "codes.live_spindle_cw or live_spindle_ccw"}};
@@ -232,6 +251,49 @@ inline constexpr TemplateSpec kHoleBore{
     {},
     {},
     "CYCLE/BORE, REAM"};
+
+inline constexpr TemplateSpec kHoleRadialDrill{
+    "hole_radial_drill",
+    kRadialHoleFields,
+    kOptional,
+    "radial drilling of a live tool along X at C (G19 G81, Haas G241, Fanuc G87); without it G0/G1 "
+    "moves",
+    {},
+    {},
+    "CYCLE/DRILL, REAM without DWELL, tool axis through the centre line"};
+inline constexpr TemplateSpec kHoleRadialDwell{
+    "hole_radial_dwell",
+    kRadialHoleFields,
+    kOptional,
+    "radial drilling with a dwell at the bottom (G19 G82, Haas G242, Fanuc G87 P); without it "
+    "G0/G1/G4 moves",
+    {},
+    {},
+    "CYCLE/DRILL,…,DWELL,t, tool axis through the centre line"};
+inline constexpr TemplateSpec kHoleRadialPeck{
+    "hole_radial_peck",
+    kRadialHoleFields,
+    kOptional,
+    "radial peck drilling, full retract (G19 G83, Haas G243, Fanuc G87 Q); without it G0/G1 moves",
+    {},
+    {},
+    "CYCLE/DEEP, DEEP2, tool axis through the centre line"};
+inline constexpr TemplateSpec kHoleRadialChipBreak{
+    "hole_radial_chip_break",
+    kRadialHoleFields,
+    kOptional,
+    "radial chip-breaking peck drilling (G19 G73); without it G0/G1 moves",
+    {},
+    {},
+    "CYCLE/BRKCHP, tool axis through the centre line"};
+inline constexpr TemplateSpec kHoleRadialBore{
+    "hole_radial_bore",
+    kRadialHoleFields,
+    kOptional,
+    "radial boring or reaming, feed in and out (G19 G85); without it G1 moves",
+    {},
+    {},
+    "CYCLE/BORE, REAM, tool axis through the centre line"};
 
 inline constexpr TemplateSpec kLiveSpindleRpm{
     "live_spindle_rpm",

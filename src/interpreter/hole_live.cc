@@ -1,0 +1,116 @@
+// The holes of a live tool (docs/millturn.md). The CL point is in the part frame turned by the
+// C index (the last ROTABL): a hole at (x, y) is at radius hypot(x, y) and at C = index +
+// atan2(y, x). Its tool axis (GOTO i,j,k) says how it is drilled: along Z (a face hole) or along
+// a line through the centre line (a radial hole, drilled along X at the hole's Z). Holes are
+// written in X, Z and C on every machine, also with a Y axis (Fusion's Haas post: several holes
+// use XZC, reference/millturn.md section 2).
+#include "interpreter/hole_live.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "interpreter/millturn.h"
+#include "support/number_text.h"
+
+namespace clpost {
+
+namespace {
+
+constexpr double kOnAxis = 1e-4;  // CL units: a hole within this of the centre line is on it
+
+double degrees(double radians) {
+  return radians * 180 / std::numbers::pi;
+}
+
+// The hole's position in the face plane (CL units): along the CL's radial axis and its third.
+struct FacePoint {
+  double x = 0, y = 0;
+  double radius() const { return std::hypot(x, y); }
+};
+
+FacePoint face_point(const PostState& s, Point3 p) {
+  return {axis_value(p, s.radial), axis_value(p, third_axis(s))};
+}
+
+// A CL length across the face as the lathe frame's radius (cl2's units).
+double as_radius(const PostState& s, double v) {
+  return s.m.cl_x_is_diameter ? v / 2 : v;
+}
+
+}  // namespace
+
+bool live_hole(PostState& s, const Statement& st, const HoleCycle& c, Point3 p, Hole& h,
+               double& top, double& start) {
+  const auto refuse = [&](std::string why) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/{} {} with live tool {}: {}", c.word, h.name, s.tool.number, why));
+    return false;
+  };
+  const FacePoint at = face_point(s, p);
+  const FacePoint axis = face_point(s, s.tool_axis);
+  h.radial = s.hole_axis_radial;
+  if (h.radial && std::fabs(axis_value(s.tool_axis, s.m.cl_axial)) > 1e-6)
+    return refuse(fmt::format(
+        "the tool axis ({}) is neither along Z (a face hole) nor across it (a radial hole)",
+        st.text));
+  if (h.radial && (at.radius() <= kOnAxis || std::fabs(at.x * axis.y - at.y * axis.x) > kOnAxis))
+    return refuse(
+        "the tool axis does not pass through the centre line: a radial hole is drilled toward "
+        "it (an off-centre hole across the part needs Y, which is not written)");
+  if (!s.m.face_holes && !h.radial)
+    return refuse(fmt::format(
+        "machine '{}' does not say how its control drills off the centre line "
+        "(millturn.face_holes: false): no source gives its face drilling cycle at X with C "
+        "(docs/millturn.md)",
+        s.m.name));
+  if (!s.c.index)
+    return refuse("C is not indexed: a hole of a live tool needs ROTABL/…,CAXIS before it");
+  if (c.kind == HoleKind::kTap)
+    return refuse("a tap needs the live tool's synchronised tapping, which is not written yet");
+  const double own = at.radius() > kOnAxis ? degrees(std::atan2(at.y, at.x)) : 0;
+  h.c = *s.c.index + own;
+  const Vec2 v = cl2(s, p);
+  if (!h.radial) {
+    h.x = as_radius(s, at.radius());
+    top = v.z;
+    start = cl2(s, *s.pos).z;
+    return true;
+  }
+  // The tool stands on the machine's X axis while C turns the part under it: its start is its
+  // distance from the centre line.
+  h.z = v.z;
+  top = as_radius(s, at.radius());
+  start = as_radius(s, face_point(s, *s.pos).radius());
+  return true;
+}
+
+bool live_feed_per_minute(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
+  if (h.feed_mode != FeedMode::kPerRev) return true;
+  if (!(s.live.on && !s.live.css && s.live.value > 0)) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/{} {} with live tool {}: a feed per revolution of the live tool "
+                      "needs its speed (SPINDL/n,RPM before it) to be written per minute",
+                      c.word, h.name, s.tool.number));
+    return false;
+  }
+  const double per_rev = h.feed;
+  h.feed = per_rev * s.live.value;
+  h.feed_mode = FeedMode::kPerMinute;
+  // Not "hole at …" first: that starts the hole's own comment, which verify reads.
+  s.prog.comment(
+      fmt::format("feed {} per revolution of the live tool x {} rpm = {} per minute "
+                  "for the {}",
+                  num_text(per_rev), num_text(s.live.value), num_text(h.feed), h.name));
+  return true;
+}
+
+bool live_hole_c(PostState& s, const Statement& st, Hole& h) {
+  if (!h.c) return true;
+  if (!write_c_steps(s, st, c_steps(s.m, s.c.angle, *h.c, false, std::nullopt))) return false;
+  h.c = s.c.angle;
+  return true;
+}
+
+}  // namespace clpost

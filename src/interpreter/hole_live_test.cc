@@ -1,0 +1,119 @@
+// The holes of a live tool off the centre line (hole_live.cc, docs/millturn.md): radial holes,
+// face holes at C computed from X and Y, a feed per revolution of the live tool.
+#include <gtest/gtest.h>
+
+#include "interpreter/post_test_util.h"
+
+namespace clpost {
+namespace {
+
+using test::load;
+using test::post;
+using test::Posted;
+
+// Three radial holes (tool axis through the centre line), radius 40 drilled 10 deep, clearance
+// 2: X bottom 30 (X60. as a diameter), R plane 42. Hole 3 is GOTO/0,40 at index 90: its own
+// angle atan2(40, 0) = 90, so C180.
+constexpr const char* kRadial =
+    "LOADTL/4,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nFROM/50,0,-10,1,0,0\n"
+    "CYCLE/DRILL,10,MMPM,100,CLEAR,2\nGOTO/40,0,-10,1,0,0\nROTABL/90,CAXIS\n"
+    "GOTO/40,0,-20,1,0,0\nGOTO/0,40,-30,0,1,0\nCYCLE/OFF\nSPINDL/OFF\nFINI\n";
+
+// LinuxCNC in G19: X the bottom as a diameter, R as a radius (rs274 reads them so:
+// Rs274.MillTurnRadialHoles); the tool starts at its X (radius 50: X100.).
+TEST(LiveHoles, RadialHolesOnLinuxcncLatheCInG19) {
+  Posted p = post(kRadial, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nG7 G18 G21 G90 G40 G80\nT4 M6 G43 H4\nM3 $1 S2000\nG0 C0.\n"
+            "(hole at CL line 6: radial drilling at Z-10. C0. to X60.)\nG0 X100. Z-10.\nG19\n"
+            "G98 G94 G81 X60. Y0 Z-10. R42. F100.\nG80\nG18\nG0 C90.\n"
+            "(hole at CL line 8: radial drilling at Z-20. C90. to X60.)\nG0 X100. Z-20.\nG19\n"
+            "G98 G94 G81 X60. Y0 Z-20. R42. F100.\nG80\nG18\nG0 C180.\n"
+            "(hole at CL line 9: radial drilling at Z-30. C180. to X60.)\nG0 X100. Z-30.\nG19\n"
+            "G98 G94 G81 X60. Y0 Z-30. R42. F100.\nG80\nG18\nM5 $1\nM2\n%\n");
+}
+
+// Haas G241 with R the R plane as a diameter (84 = 2 x 42), and Fanuc G87 with R relative to
+// the start (42 - 50 = -8, a radius), both as Fusion's posts write them (docs/millturn.md).
+TEST(LiveHoles, RadialHolesOnHaasAndFanuc) {
+  Posted haas = post(kRadial, load("haas-st-20y"));
+  EXPECT_EQ(haas.errors, 0u) << haas.diags;
+  EXPECT_NE(haas.nc.find("M15\nG0 C90.\nM14\n(HOLE AT CL LINE 8: RADIAL DRILLING AT Z-20. C90. TO "
+                         "X60.)\nG0 X100. Z-20.\nG19\nG98 G241 X60. Z-20. R84. F100.\nG80\nG18\n"),
+            std::string::npos)
+      << haas.nc;
+  Posted fanuc = post(kRadial, load("fanuc-0i-tf-live"));
+  EXPECT_EQ(fanuc.errors, 0u) << fanuc.diags;
+  EXPECT_NE(fanuc.nc.find("M74\nG0 C180.\nM73\n(HOLE AT CL LINE 9: RADIAL DRILLING AT Z-30. C180. "
+                          "TO X60.)\nG0 X100. Z-30.\nG98 G87 X60. Z-30. R-8. F100.\nG80\n"),
+            std::string::npos)
+      << fanuc.nc;
+}
+
+// Fanuc's face G83 at X (a diameter) with C, R relative to the start (2 - 5 = -3): the
+// Takisawa/Fanuc post's words (docs/millturn.md), before an error naming millturn.face_holes.
+TEST(LiveHoles, FaceHolesOnFanuc0iTfLive) {
+  Posted p = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/90,CAXIS\nFROM/30,0,5\n"
+      "CYCLE/DRILL,8,MMPM,100,CLEAR,2\nGOTO/30,0,0\nCYCLE/OFF\nSPINDL/OFF\nFINI\n",
+      load("fanuc-0i-tf-live"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C90.\nM73\n(HOLE AT CL LINE 6: DRILLING AT X60. C90. TO Z-8.)\n"
+                      "G0 X60. Z5.\nG98 G83 X60. Z-8. R-3. F100.\nG80\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// A face hole off the X axis is at radius hypot(x, y) and C = index + atan2(y, x): GOTO/0,30
+// at index 0 is X60. C90., GOTO/30,30 is X84.85281 (2 x 30 x sqrt 2) C45. A feed of 0.05 per
+// revolution of the live tool at 2000 rpm is written as 100 per minute, with a comment.
+TEST(LiveHoles, FaceHolesOffTheXAxisAndAFeedPerRevolution) {
+  Posted p = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nFROM/30,0,5\n"
+      "CYCLE/DRILL,8,MMPR,0.05,CLEAR,2\nGOTO/0,30,0\nGOTO/30,30,0\nCYCLE/OFF\nSPINDL/OFF\nFINI\n",
+      load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("(feed 0.05 per revolution of the live tool x 2000 rpm = 100 per minute for "
+                      "the hole at CL line 6)\nG0 C90.\n(hole at CL line 6: drilling at X60. C90. "
+                      "to Z-8.)\nG0 X60. Z5.\nG17\nG98 G94 G81 X60. Y0 Z-8. R2. F100.\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("G0 C45.\n(hole at CL line 7: drilling at X84.85281 C45. to Z-8.)\n"
+                      "G0 X84.85281 Z5.\nG17\nG98 G94 G81 X84.85281 Y0 Z-8. R2. F100.\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// What stays a located error: a tool axis across Z that misses the centre line, one neither
+// along nor across Z, a feed per revolution without the live tool's rpm.
+TEST(LiveHoles, HolesThatCannotBeWrittenAreLocatedErrors) {
+  const auto one = [](std::string goto_line) {
+    std::string cl = kRadial;
+    cl.replace(cl.find("GOTO/40,0,-10,1,0,0"), 19, goto_line);
+    return post(cl, load("linuxcnc-lathe-c"));
+  };
+  const std::string head = "t.cl:6:1: error: CYCLE/DRILL hole at CL line 6 with live tool 4: ";
+  Posted off = one("GOTO/40,5,-10,1,0,0");
+  EXPECT_NE(off.diags.find(head + "the tool axis does not pass through the centre line: a radial "
+                                  "hole is drilled toward it"),
+            std::string::npos)
+      << off.diags;
+  Posted slant = one("GOTO/40,0,-10,1,0,1");
+  EXPECT_NE(slant.diags.find(head + "the tool axis (40,0,-10,1,0,1) is neither along Z (a face "
+                                    "hole) nor across it (a radial hole)"),
+            std::string::npos)
+      << slant.diags;
+  std::string no_rpm = kRadial;
+  no_rpm.replace(no_rpm.find("MMPM,100"), 8, "MMPR,0.05");
+  no_rpm.erase(no_rpm.find("SPINDL/2000,RPM,CLW\n"), 20);
+  Posted per_rev = post(no_rpm, load("linuxcnc-lathe-c"));
+  EXPECT_NE(per_rev.diags.find("t.cl:5:1: error: CYCLE/DRILL hole at CL line 5 with live tool 4: a "
+                               "feed per revolution of the live tool needs its speed (SPINDL/n,RPM "
+                               "before it) to be written per minute"),
+            std::string::npos)
+      << per_rev.diags;
+}
+
+}  // namespace
+}  // namespace clpost
