@@ -155,6 +155,52 @@ TEST(Holes, AFaceHoleMovedOneDegreeInCFails) {
   fs::remove_all(dir);
 }
 
+// Radial holes of a live tool (docs/millturn.md): verify checks each one's Z, bottom X and C.
+// tests/data/millturn-radial-holes.apt verifies on linuxcnc-lathe-c (G19 G81), haas-st-20y
+// (G241) and fanuc-0i-tf-live (G87); the second hole's C moved by 1 degree (C91: 40 x pi/180 =
+// 0.6981 mm along the circle of its top, radius 40) fails naming the hole.
+TEST(Holes, ARadialHoleMovedOneDegreeInCFails) {
+  const std::string cl = "tests/data/millturn-radial-holes.apt", dir = temp_dir();
+  for (const char* m : {"linuxcnc-lathe-c", "haas-st-20y", "fanuc-0i-tf-live"}) {
+    RunResult ok = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " --verify -m " + m + " -o " + quote(dir + "/ok.nc") + " " + cl);
+    EXPECT_EQ(ok.exit_code, 0) << m << ok.err;
+    EXPECT_NE(ok.err.find("holes (0 on the face at their X and C, 3 radial at their Z and C): 3 "
+                          "in the CL, 3 in the program"),
+              std::string::npos)
+        << m << ok.err;
+  }
+  const std::string ngc = dir + "/holes.ngc", moved = dir + "/moved.ngc";
+  RunResult post = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " --verify -m linuxcnc-lathe-c -o " + quote(ngc) + " " + cl);
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  std::string text = read_file(ngc);
+  const size_t at = text.find("G0 C90.\n");
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, 8, "G0 C91.\n");
+  write_file(moved, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m linuxcnc-lathe-c " + quote(moved) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1) << r.err << r.out;
+  EXPECT_NE(first_error(r).find(":1: error: hole at " + cl +
+                                ":10: at C91.0000, CL C90.0000 (0.6981 mm along the circle of "
+                                "radius 40.0000)"),
+            std::string::npos)
+      << r.err;
+  // The hole's Z moved: Z-20 written Z-21.
+  text = read_file(ngc);
+  const size_t z = text.find("Y0 Z-20.");
+  ASSERT_NE(z, std::string::npos) << text;
+  text.replace(z, 8, "Y0 Z-21.");
+  write_file(moved, text);
+  RunResult rz = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                     " verify -m linuxcnc-lathe-c " + quote(moved) + " --cl " + cl);
+  EXPECT_NE(first_error(rz).find("hole at " + cl + ":10: at Z-21.0000, CL Z-20.0000"),
+            std::string::npos)
+      << rz.err;
+  fs::remove_all(dir);
+}
+
 // The same bolt circle with a first peck of 5 and pecks of 2 (the template has one peck word):
 // written as moves at X60 (a diameter) after each C; verify follows the moves off the centre
 // line and finds the second hole at C91 (NC line 28, its first feed).

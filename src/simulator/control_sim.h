@@ -45,6 +45,8 @@ struct SimHole {
   std::string line_text;
   std::string source;             // "G83", "CYCLE83", "moves"
   double x = 0;                   // X of the hole, a radius (0: on the centre line)
+  bool radial = false;            // drilled along X at Z `z` (feed_ends, r, out: X radii)
+  double z = 0;                   // Z of a radial hole
   std::optional<double> c;        // the C axis's position then (degrees), when C was written
   double r = 0;                   // where the first feed into the hole starts
   double dir = -1;                // the way the feeds go in

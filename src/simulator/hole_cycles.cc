@@ -25,18 +25,49 @@ namespace {
 // A hole template's cycle line, taken apart.
 struct HoleLine {
   HoleKind kind = HoleKind::kDrill;
+  bool radial = false;                         // a hole_radial_* template: X is the drilling axis
   std::string call;                            // a call's name ("CYCLE83"), else empty
   Code code;                                   // the cycle code of a word line
   std::map<std::string, std::string> by_addr;  // word lines: address -> field
   std::set<std::string> addresses;             // word lines: every non-G/M address
   std::map<std::string, size_t> by_arg;        // calls: field -> argument index
+  int plane = 0;  // the plane (17, 18, 19) a line of the template selects before it (0: none)
 };
 
-constexpr std::pair<const TemplateSpec*, HoleKind> kHoleTemplates[] = {
-    {&tmpl::kHoleDrill, HoleKind::kDrill}, {&tmpl::kHoleDwell, HoleKind::kDrill},
-    {&tmpl::kHolePeck, HoleKind::kDeep},   {&tmpl::kHoleChipBreak, HoleKind::kChipBreak},
-    {&tmpl::kHoleTap, HoleKind::kTap},     {&tmpl::kHoleTapRigid, HoleKind::kTap},
-    {&tmpl::kHoleBore, HoleKind::kBore}};
+// The plane ISO code `b` selects (G17, G18, G19), or 0.
+int plane_of(const NcBlock& b) {
+  for (const NcWord& w : b.words)
+    if (w.address == "G" && w.has_value())
+      for (int p : {17, 18, 19})
+        if (std::fabs(w.value - p) < 1e-9) return p;
+  return 0;
+}
+
+// The plane a template line selects when it is one plane code alone ("G19"), or 0.
+int plane_line(std::string_view line) {
+  for (int p : {17, 18, 19})
+    if (line == fmt::format("G{}", p)) return p;
+  return 0;
+}
+
+struct HoleTemplate {
+  const TemplateSpec* spec;
+  HoleKind kind;
+  bool radial = false;
+};
+constexpr HoleTemplate kHoleTemplates[] = {
+    {&tmpl::kHoleDrill, HoleKind::kDrill},
+    {&tmpl::kHoleDwell, HoleKind::kDrill},
+    {&tmpl::kHolePeck, HoleKind::kDeep},
+    {&tmpl::kHoleChipBreak, HoleKind::kChipBreak},
+    {&tmpl::kHoleTap, HoleKind::kTap},
+    {&tmpl::kHoleTapRigid, HoleKind::kTap},
+    {&tmpl::kHoleBore, HoleKind::kBore},
+    {&tmpl::kHoleRadialDrill, HoleKind::kDrill, true},
+    {&tmpl::kHoleRadialDwell, HoleKind::kDrill, true},
+    {&tmpl::kHoleRadialPeck, HoleKind::kDeep, true},
+    {&tmpl::kHoleRadialChipBreak, HoleKind::kChipBreak, true},
+    {&tmpl::kHoleRadialBore, HoleKind::kBore, true}};
 
 // The field named in `token` ("{peck}" or "{dwell_ms:04}"), or "".
 std::string field_in(std::string_view token) {
@@ -75,13 +106,17 @@ bool parse_word_line(const Machine& m, std::string_view line, HoleLine& h) {
 }
 
 // The cycle line of hole template `t` on machine `m`.
-std::optional<HoleLine> hole_line(const Machine& m, const TemplateSpec& t, HoleKind kind) {
-  auto it = m.templates.find(std::string(t.name));
+std::optional<HoleLine> hole_line(const Machine& m, const HoleTemplate& t) {
+  auto it = m.templates.find(std::string(t.spec->name));
   if (it == m.templates.end()) return std::nullopt;
+  int plane = 0;
   for (const std::string& line : it->second) {
+    if (int p = plane_line(line); p != 0) plane = p;
     if (line.find("{z") == std::string::npos) continue;
     HoleLine h;
-    h.kind = kind;
+    h.kind = t.kind;
+    h.radial = t.radial;
+    h.plane = plane;
     const size_t open = line.find('(');
     const bool call = open != std::string::npos && open > 0 &&
                       std::all_of(line.begin(), line.begin() + static_cast<long>(open), [](char c) {
@@ -92,7 +127,8 @@ std::optional<HoleLine> hole_line(const Machine& m, const TemplateSpec& t, HoleK
   return std::nullopt;
 }
 
-bool matches(const HoleLine& h, const NcBlock& b) {
+bool matches(const HoleLine& h, const NcBlock& b, int plane) {
+  if (h.plane != 0 && h.plane != plane) return false;
   if (!h.call.empty())
     return std::any_of(b.calls.begin(), b.calls.end(),
                        [&](const NcCall& c) { return c.name == h.call; });
@@ -112,13 +148,22 @@ std::string_view format_of(const std::string& field) {
   return "Z";
 }
 
+// The value of field `f` of `h` in word `w`: X positions as radii.
+double field_value(State& s, const HoleLine& h, const std::string& f, const NcWord& w) {
+  if (f == "x") return s.radius(w);
+  if (!h.radial) return s.value(w, format_of(f));
+  if (f == "r" || f == "top" || f == "start") return s.radius(w);
+  if (f == "z" || f == "peck" || f == "dwell" || f == "feed") return s.value(w, format_of(f));
+  return s.value(w, "X");  // r_radius, r_inc, safety, depth: radii
+}
+
 // The block's value of every field of `h` (X as a radius); false (reported) on a bad number.
 bool read_fields(State& s, const HoleLine& h, const NcBlock& b, std::map<std::string, double>& v) {
   if (h.call.empty()) {
     for (const NcWord& w : b.words) {
       auto it = h.by_addr.find(w.address);
       if (it == h.by_addr.end()) continue;
-      v[it->second] = it->second == "x" ? s.radius(w) : s.value(w, format_of(it->second));
+      v[it->second] = field_value(s, h, it->second, w);
     }
     return true;
   }
@@ -144,10 +189,12 @@ Hole hole_of(const HoleLine& h, const std::map<std::string, double>& v, double a
   auto has = [&](const char* f) { return v.count(f) > 0; };
   Hole hole;
   hole.kind = h.kind;
+  hole.radial = h.radial;
   hole.start = has("start") ? v.at("start") : at;
-  hole.bottom = v.at("z");
+  hole.bottom = v.at(h.radial ? "x" : "z");
   hole.dir = hole.bottom < hole.start ? -1 : 1;
   hole.r = has("r")                      ? v.at("r")
+           : has("r_radius")             ? v.at("r_radius")
            : has("r_inc")                ? hole.start + v.at("r_inc")
            : has("top") && has("safety") ? v.at("top") - hole.dir * v.at("safety")
                                          : at;
@@ -197,21 +244,34 @@ const HoleLines& hole_lines(State& s) {
   if (!s.hole_lines) {
     auto h = std::make_shared<HoleLines>();
     for (size_t i = 0; i < std::size(kHoleTemplates); ++i)
-      h->lines[i] = hole_line(s.m, *kHoleTemplates[i].first, kHoleTemplates[i].second);
+      h->lines[i] = hole_line(s.m, kHoleTemplates[i]);
     s.hole_lines = h;
   }
   return *static_cast<const HoleLines*>(s.hole_lines.get());
 }
+// A radial hole's moves at Z `z`: to the hole's Z at the tool's X, then along X.
+void radial_moves(State& s, SimHole& sh, const Hole& hole, double z) {
+  sh.radial = true;
+  sh.z = z;
+  sh.x = hole.start;
+  s.move(MoveKind::kRapid, {s.pos.x, z});
+  s.move(MoveKind::kRapid, {hole.r, z});
+  for (double x : sh.feed_ends) s.move(MoveKind::kFeed, {x, z});
+  s.move(MoveKind::kRapid, {hole.retract, z});
+  ++s.out.calls;
+}
+
 }  // namespace
 
 bool hole_cycle_block(State& s, const NcBlock& b) {
   const HoleLines& lines = hole_lines(s);
+  if (int p = plane_of(b); p != 0) s.plane = p;
   for (const std::optional<HoleLine>& h : lines.lines) {
-    if (!h || !matches(*h, b)) continue;
+    if (!h || !matches(*h, b, s.plane)) continue;
     std::map<std::string, double> v;
     if (!read_fields(s, *h, b, v)) return true;
-    if (v.count("z") == 0) continue;
-    const Hole hole = hole_of(*h, v, s.pos.z);
+    if (v.count("z") == 0 || (h->radial && v.count("x") == 0)) continue;
+    const Hole hole = hole_of(*h, v, h->radial ? s.pos.x : s.pos.z);
     if (const NcWord* f = b.find("F")) s.f_register = s.value(*f, "F");  // F is modal
     const bool marked = s.hole_open && s.out.holes.back().feed_ends.empty();
     if (!marked) s.out.holes.emplace_back();
@@ -227,9 +287,13 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
     sh.left = true;
     sh.out = hole.r;
     if (hole.lead > 0) sh.lead = hole.lead;
+    sh.c = s.c;
+    if (h->radial) {
+      radial_moves(s, sh, hole, v.at("z"));
+      return true;
+    }
     const double x = v.count("x") ? v.at("x") : s.pos.x;
     sh.x = x;
-    sh.c = s.c;
     s.move(MoveKind::kRapid, {x, hole.r});
     for (double z : sh.feed_ends) s.move(MoveKind::kFeed, {x, z});
     s.move(MoveKind::kRapid, {x, hole.retract});

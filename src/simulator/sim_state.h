@@ -123,6 +123,7 @@ struct State {
   G92Modal g92;
   std::optional<double> c;  // the C axis (millturn.c_axis) as last written, degrees
   bool hole_open = false;   // out.holes.back() is followed move by move (a "hole at" comment)
+  int plane = 18;           // the plane selected last (G17, G18, G19): which axis a hole drills
   CutState cut;             // feed mode, spindle and tool as the program last stated them
   // The machine's hole templates taken apart, once (hole_cycles.cc; null until the first block).
   std::shared_ptr<const void> hole_lines;
