@@ -234,6 +234,43 @@ TEST(Holes, AFaceHoleWrittenAsMovesIsCheckedAtItsC) {
   fs::remove_all(dir);
 }
 
+// A radial hole written as moves (haas-st-20y has no hole_radial_chip_break): pecks of 4 from
+// the R plane at radius 42 end at radius 38, 34, 30 (X76., X68., X60.), backing off
+// holes.peck_clearance 0.5 (X77.). verify follows the feeds along X at the hole's Z and finds
+// the second hole at C91 (NC line 27, its first feed; 0.6981 mm at radius 40).
+TEST(Holes, ARadialHoleWrittenAsMovesIsCheckedAtItsC) {
+  std::string cl = read_file(source_dir() + "/tests/data/millturn-radial-holes.apt");
+  const std::string drill = "CYCLE/DRILL,10,MMPM,100,CLEAR,2";
+  ASSERT_NE(cl.find(drill), std::string::npos);
+  cl.replace(cl.find(drill), drill.size(), "CYCLE/BRKCHP,10,MMPM,100,CLEAR,2,STEP,4");
+  const std::string dir = temp_dir(), apt = dir + "/brk.apt", nc = dir + "/brk.nc";
+  write_file(apt, cl);
+  RunResult post =
+      run(quote(clpost_bin()) + " --verify -m haas-st-20y -o " + quote(nc) + " " + quote(apt));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  EXPECT_NE(post.err.find("  " + apt +
+                          ":10  radial chip-breaking drilling to X30.0000 (radius)  ok  moves, NC "
+                          "line 27"),
+            std::string::npos)
+      << post.err;
+  std::string text = read_file(nc);
+  ASSERT_NE(text.find("G0 C90.\nM14\n(HOLE AT CL LINE 10: RADIAL CHIP-BREAKING DRILLING AT Z-20. "
+                      "C90. TO X60.)\nG0 X100. Z-20.\nX84.\nG1 X76. G98 F100.\nG0 X77.\nG1 "
+                      "X68.\nG0 X69.\nG1 X60.\nG0 X100.\n"),
+            std::string::npos)
+      << text;
+  text.replace(text.find("G0 C90.\n"), 8, "G0 C91.\n");
+  write_file(nc, text);
+  RunResult r =
+      run(quote(clpost_bin()) + " verify -m haas-st-20y " + quote(nc) + " --cl " + quote(apt));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(first_error(r), nc + ":27:1: error: hole at " + apt +
+                                ":10: at C91.0000, CL C90.0000 (0.6981 mm along the circle of "
+                                "radius 40.0000)")
+      << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
   if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
   const std::string dir = temp_dir();

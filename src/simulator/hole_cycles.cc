@@ -305,34 +305,45 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
 
 void follow_hole(State& s, MoveKind kind, Vec2 from, Vec2 to) {
   SimHole& h = s.out.holes.back();
+  // Along the hole's axis (Z, or X for a radial hole of a live tool) and across it.
+  const auto along = [&](Vec2 v) { return h.radial ? v.x : v.z; };
+  const auto across = [&](Vec2 v) { return h.radial ? v.z : v.x; };
   // On the centre line; off it only on a machine that drills face holes there
-  // (millturn.face_holes), and after the first feed at the hole's X.
-  const bool at_hole = h.feed_ends.empty() ? std::fabs(to.x) <= 1e-6 || s.m.face_holes
-                                           : std::fabs(to.x - h.x) <= 1e-6;
+  // (millturn.face_holes) or radial holes (live tools), and after the first feed on the hole's
+  // line.
+  const bool at_hole = h.feed_ends.empty()
+                           ? std::fabs(to.x) <= 1e-6 || s.m.face_holes || s.m.live_tools
+                           : std::fabs(across(to) - (h.radial ? h.z : h.x)) <= 1e-6;
   if (!at_hole || (kind != MoveKind::kRapid && kind != MoveKind::kFeed)) {
     s.hole_open = false;
     return;
   }
-  if (kind == MoveKind::kFeed && std::fabs(to.z - from.z) > 1e-9 &&
-      std::fabs(to.x - from.x) <= 1e-6) {
+  if (kind == MoveKind::kFeed && h.feed_ends.empty()) {
+    // The first feed says which way the hole goes: along Z, or along X at one Z (radial).
+    h.radial =
+        s.m.live_tools && std::fabs(to.z - from.z) <= 1e-9 && std::fabs(to.x - from.x) > 1e-9;
+  }
+  if (kind == MoveKind::kFeed && std::fabs(along(to) - along(from)) > 1e-9 &&
+      std::fabs(across(to) - across(from)) <= 1e-6) {
     if (h.feed_ends.empty()) {
-      h.x = to.x;
+      h.x = h.radial ? from.x : to.x;
+      h.z = to.z;
       h.c = s.c;
-      h.dir = to.z < from.z ? -1 : 1;
-      h.r = from.z;
+      h.dir = along(to) < along(from) ? -1 : 1;
+      h.r = along(from);
       h.line = s.line;
       h.line_text = std::string(s.line_text.substr(0, kKeptLineText));
     }
-    if (h.feed_ends.empty() || (to.z - h.feed_ends.back()) * h.dir > 1e-9) {
-      if (h.feed_ends.size() < kMaxHolePecks) h.feed_ends.push_back(to.z);
+    if (h.feed_ends.empty() || (along(to) - h.feed_ends.back()) * h.dir > 1e-9) {
+      if (h.feed_ends.size() < kMaxHolePecks) h.feed_ends.push_back(along(to));
       h.left = false;
       h.out.reset();
       return;
     }
   }
   if (h.feed_ends.empty()) return;
-  if (!h.out || (to.z - *h.out) * h.dir < 0) h.out = to.z;
-  if ((to.z - h.r) * h.dir <= 1e-9) h.left = true;
+  if (!h.out || (along(to) - *h.out) * h.dir < 0) h.out = along(to);
+  if ((along(to) - h.r) * h.dir <= 1e-9) h.left = true;
 }
 
 }  // namespace clpost::sim
