@@ -271,6 +271,28 @@ TEST(Holes, ARadialHoleWrittenAsMovesIsCheckedAtItsC) {
   fs::remove_all(dir);
 }
 
+// The setup sheet says where a live tool's hole is: radial at X (the top as a diameter), Z and
+// C; JSON gives its axis and C (null on the centre line, as before).
+TEST(Holes, TheSheetSaysWhereALiveToolsHolesAre) {
+  const std::string cl = source_dir() + "/tests/data/millturn-radial-holes.apt";
+  RunResult html = run(quote(clpost_bin()) + " sheet -m linuxcnc-lathe-c -o - " + quote(cl));
+  ASSERT_EQ(html.exit_code, 0) << html.err;
+  EXPECT_NE(html.out.find("<td>X80 Z-20 C90, radial</td>"), std::string::npos) << html.out;
+  EXPECT_NE(html.out.find("<p>On the spindle axis and off it with a live tool (at C), lengths in "),
+            std::string::npos)
+      << html.out;
+  RunResult json =
+      run(quote(clpost_bin()) + " sheet --format json -m linuxcnc-lathe-c -o - " + quote(cl));
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_NE(json.out.find("{\"line\": 11, \"cycle\": \"drilling\", \"x\": 40, \"z\": -30, "
+                          "\"axis\": \"x\", \"c\": 180, \"depth\": 10, \"r\": 42,"),
+            std::string::npos)
+      << json.out;
+  RunResult face = run(quote(clpost_bin()) + " sheet -m linuxcnc-lathe-c -o - " +
+                       quote(source_dir() + "/tests/data/millturn-face-holes.apt"));
+  EXPECT_NE(face.out.find("<td>X60 C90 Z0</td>"), std::string::npos) << face.out;
+}
+
 TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
   if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
   const std::string dir = temp_dir();

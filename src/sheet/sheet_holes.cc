@@ -1,7 +1,9 @@
-// Every hole on the spindle axis the program drills: where, how deep, the cycle, and the output
-// that wrote it (the holes the post keeps for verify, PostSummary::holes).
+// Every hole the program drills (on the spindle axis, or off it with a live tool): where, how
+// deep, the cycle, and the output that wrote it (the holes the post keeps for verify,
+// PostSummary::holes).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/plan_format.h"
@@ -21,12 +23,21 @@ std::string pecks(const Hole& h) {
   return num_text(h.peck > 0 ? h.peck : h.first_peck);
 }
 
+// Where the hole is, as the program writes it: on the centre line at Z, on the face at X and C,
+// or radial at Z and C from X (docs/millturn.md).
+std::string position(const SheetData& d, const Hole& h) {
+  const double k = d.diameter ? 2 : 1;
+  const std::string c = h.c ? fmt::format(" C{}", num_text(*h.c)) : std::string();
+  if (h.radial) return fmt::format("X{} Z{}{}, radial", num_text(h.top * k), num_text(h.z), c);
+  return fmt::format("X{}{} Z{}", num_text(h.x * k), c, num_text(h.top));
+}
+
 std::string hole_row(const SheetData& d, const Hole& h) {
   const OutputUsed* o = output_at(d.outputs, h.cl_line);
   const FeedUsed feed{h.feed, h.feed_mode};
   return row({{std::to_string(h.cl_line), true},
               {std::string(hole_kind_name(h.kind))},
-              {fmt::format("X0 Z{}", num_text(h.top))},
+              {position(d, h)},
               {num_text(std::fabs(h.bottom - h.top)), true},
               {num_text(h.r), true},
               {pecks(h), true},
@@ -41,7 +52,11 @@ std::string hole_row(const SheetData& d, const Hole& h) {
 std::string holes_section(const SheetData& d) {
   std::string o = "<section class=\"page\" id=\"holes\">\n<h2>Holes</h2>\n";
   if (d.holes.empty()) return o + "<p>No holes on the spindle axis.</p>\n</section>\n";
-  o += fmt::format("<p>On the spindle axis, lengths in {}.</p>\n", units_name(d.units));
+  const bool live = std::any_of(d.holes.begin(), d.holes.end(), [](const Hole& h) { return h.c; });
+  o += fmt::format(
+      "<p>{}, lengths in {}.</p>\n",
+      live ? "On the spindle axis and off it with a live tool (at C)" : "On the spindle axis",
+      units_name(d.units));
   o += "<table class=\"holes\">\n";
   o += head_row({"CL line", "Cycle", "Position", "Depth", "R plane", "Pecks", "Dwell", "Feed",
                  "Output", "Fallback"});

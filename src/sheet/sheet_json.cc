@@ -57,13 +57,17 @@ std::string output_json(const OutputUsed& o) {
                      array(o.notes, [](const std::string& n) { return json_string(n); }));
 }
 
+// A hole: x (a radius) and z of its top, the axis it is drilled along ("z"; "x" for a radial
+// hole of a live tool, r then along X too) and its C (null on the centre line).
 std::string hole_json(const Hole& h) {
   return fmt::format(
-      "    {{\"line\": {}, \"cycle\": {}, \"x\": 0, \"z\": {}, \"depth\": {}, \"r\": {}, "
-      "\"first_peck\": {}, \"peck\": {}, \"dwell\": {}, \"feed\": {}, \"per\": \"{}\"}}",
-      h.cl_line, json_string(hole_kind_name(h.kind)), num(h.top), num(std::fabs(h.bottom - h.top)),
-      num(h.r), num(h.first_peck), num(h.peck), num(h.dwell), num(h.feed),
-      h.feed_mode == FeedMode::kPerRev ? "rev" : "min");
+      "    {{\"line\": {}, \"cycle\": {}, \"x\": {}, \"z\": {}, \"axis\": \"{}\", \"c\": {}, "
+      "\"depth\": {}, \"r\": {}, \"first_peck\": {}, \"peck\": {}, \"dwell\": {}, \"feed\": {}, "
+      "\"per\": \"{}\"}}",
+      h.cl_line, json_string(hole_kind_name(h.kind)), num(h.radial ? h.top : h.x),
+      num(h.radial ? h.z : h.top), h.radial ? "x" : "z", h.c ? num(*h.c) : std::string("null"),
+      num(std::fabs(h.bottom - h.top)), num(h.r), num(h.first_peck), num(h.peck), num(h.dwell),
+      num(h.feed), h.feed_mode == FeedMode::kPerRev ? "rev" : "min");
 }
 
 std::string diagnostic_json(const Diagnostic& g) {
