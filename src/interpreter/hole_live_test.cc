@@ -85,6 +85,24 @@ TEST(LiveHoles, FaceHolesOffTheXAxisAndAFeedPerRevolution) {
       << p.nc;
 }
 
+// On a rollover C (haas-st-20y) a hole below the X axis is at 0 <= C < 360: GOTO/0,-30 at
+// index 0 is atan2(-30, 0) = -90, C270., reached the shortest way. A tool change forgets the
+// last tool's axis: the next tool's GOTO/30,0,0 without i,j,k is a face hole, not a radial one.
+TEST(LiveHoles, HoleBelowTheXAxisOnARolloverCAndAToolChange) {
+  Posted p = post(
+      "LOADTL/4,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nFROM/50,0,-10,1,0,0\n"
+      "CYCLE/DRILL,10,MMPM,100,CLEAR,2\nGOTO/40,0,-10,1,0,0\nCYCLE/OFF\n"
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nFROM/30,0,5\nCYCLE/DRILL,8,MMPM,100,CLEAR,2\n"
+      "GOTO/0,-30,0\nCYCLE/OFF\nSPINDL/OFF\nFINI\n",
+      load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G98 G241 X60. Z-10. R84. F100.\n"), std::string::npos) << p.nc;
+  EXPECT_NE(p.nc.find("M15\nG0 C270.\nM14\n(HOLE AT CL LINE 12: DRILLING AT X60. C270. TO "
+                      "Z-8.)\nG0 X60. Z5.\nG98 G81 X60. Z-8. R2. F100.\n"),
+            std::string::npos)
+      << p.nc;
+}
+
 // What stays a located error: a tool axis across Z that misses the centre line, one neither
 // along nor across Z, a feed per revolution without the live tool's rpm.
 TEST(LiveHoles, HolesThatCannotBeWrittenAreLocatedErrors) {

@@ -210,9 +210,10 @@ constexpr KeySpec kLaterKeys[] = {
     {"millturn.y_axis", kMillTurn, kBool, &M::y_axis,
      "the turret has a Y axis (milling motion in Y is not written yet: docs/millturn.md)"},
     {"millturn.face_holes", kMillTurn, kBool, &M::face_holes,
-     "a live tool drills off the centre line on the face: a hole cycle's GOTO at X (radius) "
-     "is written by the hole_* templates at that X with C at its index (ROTABL); without it "
-     "such a hole is an error naming what is missing (docs/millturn.md)"},
+     "a live tool drills off the centre line on the face: a hole cycle's GOTO at (x, y) with "
+     "the tool axis along Z is written by the hole_* templates at X = hypot(x, y) with C = the "
+     "ROTABL index + atan2(y, x); without it such a hole is an error naming what is missing "
+     "(radial holes need no key: templates hole_radial_*, else moves; docs/millturn.md)"},
     {"millturn.live_max_rpm", kMillTurn, kNumber, &M::live_max_rpm,
      "the live tool's speed limit: a milling tool's SPINDL above it is an error (0: none)", 0, 1e6},
     {"millturn.c_address", kMillTurn, kString, &M::c_address,
