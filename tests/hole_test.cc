@@ -293,6 +293,41 @@ TEST(Holes, TheSheetSaysWhereALiveToolsHolesAre) {
   EXPECT_NE(face.out.find("<td>X60 C90 Z0</td>"), std::string::npos) << face.out;
 }
 
+// Face and radial holes of one live tool in one program (tests/data/millturn-mixed-holes.apt:
+// a peck-drilled pair on the face at C0 and C90, radial holes at C0 and C-90 (GOTO/0,-40),
+// one face hole at radius 20) verify on the three live machines. On linuxcnc-lathe-c the face
+// G81 and the radial G81 differ only in their plane: a radial hole's G19 written G17 makes it
+// a face hole, which verify refuses.
+TEST(Holes, FaceAndRadialHolesInOneProgramVerify) {
+  const std::string cl = "tests/data/millturn-mixed-holes.apt", dir = temp_dir();
+  for (const char* m : {"linuxcnc-lathe-c", "haas-st-20y", "fanuc-0i-tf-live"}) {
+    RunResult ok = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " --verify -m " + m + " -o " + quote(dir + "/ok.nc") + " " + cl);
+    EXPECT_EQ(ok.exit_code, 0) << m << ok.err;
+    EXPECT_NE(ok.err.find("holes (3 on the face at their X and C, 2 radial at their Z and C): 5 "
+                          "in the CL, 5 in the program"),
+              std::string::npos)
+        << m << ok.err;
+  }
+  const std::string ngc = dir + "/holes.ngc";
+  RunResult post = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + cl);
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  std::string text = read_file(ngc);
+  const size_t g19 = text.find("G19\nG98 G94 G81 X60. Y0 Z-10. R42. F100.\n");
+  ASSERT_NE(g19, std::string::npos) << text;
+  text.replace(g19, 3, "G17");
+  write_file(ngc, text);
+  RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                    " verify -m linuxcnc-lathe-c " + quote(ngc) + " --cl " + cl);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(
+      first_error(r).find("hole at " + cl + ":16: drilled along Z, CL: a radial hole along X"),
+      std::string::npos)
+      << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
   if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
   const std::string dir = temp_dir();
