@@ -198,21 +198,26 @@ void time_thread(PostState& s, const ThreadPlan& plan, double rpm) {
 }
 
 void time_hole(PostState& s, const Hole& h) {
-  if (s.clock_at && std::fabs(s.clock_at->x) > 0) time_rapid(s, {0, s.clock_at->z});
-  time_rapid(s, {0, h.r});
+  // Along the hole's axis: Z at its X (0 on the centre line), or X at its Z (a radial hole).
+  const auto at = [&](double v) { return h.radial ? Vec2{v, h.z} : Vec2{h.x, v}; };
+  if (s.clock_at && !h.radial && std::fabs(s.clock_at->x - h.x) > 0)
+    time_rapid(s, {h.x, s.clock_at->z});
+  if (s.clock_at && h.radial && std::fabs(s.clock_at->z - h.z) > 0)
+    time_rapid(s, {s.clock_at->x, h.z});
+  time_rapid(s, at(h.r));
   const std::vector<double> ends = hole_feed_ends(h);
   const double clr = s.m.peck_clearance;
   for (size_t i = 0; i < ends.size(); ++i) {
-    feed_to(s, {0, ends[i]}, h.feed, h.feed_mode);
+    feed_to(s, at(ends[i]), h.feed, h.feed_mode);
     if (i + 1 == ends.size()) break;
-    if (h.kind == HoleKind::kDeep) time_rapid(s, {0, h.r});
+    if (h.kind == HoleKind::kDeep) time_rapid(s, at(h.r));
     const double back = h.kind == HoleKind::kDeep ? clr : chip_backoff(h, clr);
-    time_rapid(s, {0, h.r + h.dir * std::max(0.0, std::fabs(ends[i] - h.r) - back)});
+    time_rapid(s, at(h.r + h.dir * std::max(0.0, std::fabs(ends[i] - h.r) - back)));
   }
   time_dwell(s, h.dwell);
   if (h.kind == HoleKind::kTap || h.kind == HoleKind::kBore || h.kind == HoleKind::kReam)
-    feed_to(s, {0, h.r}, h.feed, h.feed_mode);
-  time_rapid(s, {0, h.retract});
+    feed_to(s, at(h.r), h.feed, h.feed_mode);
+  time_rapid(s, at(h.retract));
 }
 
 std::string time_text(double seconds) {

@@ -34,6 +34,18 @@ TEST(LiveHoles, RadialHolesOnLinuxcncLatheCInG19) {
             "G98 G94 G81 X60. Y0 Z-30. R42. F100.\nG80\nG18\nM5 $1\nM2\n%\n");
 }
 
+// The cycle time of the radial holes, by hand on linuxcnc-lathe-c (rapids 10000 mm/min along X
+// as a radius, 15000 along Z; a tool change 1.5 s): each hole rapids from radius 50 to the R
+// plane at 42 (8 / 10000 min = 0.048 s), drills 12 mm at 100 mm/min (7.2 s) and rapids out to
+// 50 (20 / 10000 min = 0.12 s); holes 2 and 3 first move 10 mm along Z (0.04 s each).
+TEST(LiveHoles, RadialHolesAreTimedAlongX) {
+  PostedText r = post_text(kRadial, load("linuxcnc-lathe-c"), "t.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  const double hole = 0.048 + 7.2 + 0.12;
+  ASSERT_EQ(r.summary.cycle_time.tools.size(), 1u);
+  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 1.5 + 3 * hole + 2 * 0.04, 1e-6);
+}
+
 // Haas G241 with R the R plane as a diameter (84 = 2 x 42), and Fanuc G87 with R relative to
 // the start (42 - 50 = -8, a radius), both as Fusion's posts write them (docs/millturn.md).
 TEST(LiveHoles, RadialHolesOnHaasAndFanuc) {
