@@ -53,9 +53,12 @@ bool live_hole(PostState& s, const Statement& st, const HoleCycle& c, Point3 p, 
   h.radial = s.hole_axis_radial;
   if (h.radial && std::fabs(axis_value(s.tool_axis, s.m.cl_axial)) > 1e-6)
     return refuse(fmt::format(
-        "the tool axis ({}) is neither along Z (a face hole) nor across it (a radial hole)",
+        "the tool axis of GOTO/{} is neither along Z (a face hole) nor across it (a radial hole)",
         st.text));
-  if (h.radial && (at.radius() <= kOnAxis || std::fabs(at.x * axis.y - at.y * axis.x) > kOnAxis))
+  if (h.radial && at.radius() <= kOnAxis)
+    return refuse(
+        "a radial hole (the tool axis across Z) at the centre line has no top to drill from");
+  if (h.radial && std::fabs(at.x * axis.y - at.y * axis.x) > kOnAxis)
     return refuse(
         "the tool axis does not pass through the centre line: a radial hole is drilled toward "
         "it (an off-centre hole across the part needs Y, which is not written)");

@@ -130,10 +130,16 @@ TEST(LiveHoles, HolesThatCannotBeWrittenAreLocatedErrors) {
             std::string::npos)
       << off.diags;
   Posted slant = one("GOTO/40,0,-10,1,0,1");
-  EXPECT_NE(slant.diags.find(head + "the tool axis (40,0,-10,1,0,1) is neither along Z (a face "
-                                    "hole) nor across it (a radial hole)"),
+  EXPECT_NE(slant.diags.find(head + "the tool axis of GOTO/40,0,-10,1,0,1 is neither along Z (a "
+                                    "face hole) nor across it (a radial hole)"),
             std::string::npos)
       << slant.diags;
+  Posted centre = one("GOTO/0,0,-10,1,0,0");
+  EXPECT_NE(
+      centre.diags.find(head + "a radial hole (the tool axis across Z) at the centre line has "
+                               "no top to drill from"),
+      std::string::npos)
+      << centre.diags;
   std::string no_rpm = kRadial;
   no_rpm.replace(no_rpm.find("MMPM,100"), 8, "MMPR,0.05");
   no_rpm.erase(no_rpm.find("SPINDL/2000,RPM,CLW\n"), 20);
