@@ -3,6 +3,7 @@
 // arguments, its comments. What nc_lexer makes and the control simulation (simulator/) runs.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace clpost {
@@ -29,8 +30,24 @@ struct NcBlock {
   std::vector<std::string> comments;
   bool program_delimiter = false;  // a '%' line
   bool block_delete = false;       // it starts with the block delete mark ('/'): optional
+  // The one-letter addresses among the words, a bit each ('A' is bit 0): a look-up for a letter
+  // the block has not is answered at once (a block has few words, a simulation asks it for some
+  // twenty codes). Set by lex_nc_line with the words.
+  uint32_t letters = 0;
 
+  // The bit of `address` in `letters`, or 0 when it is not one letter A-Z.
+  static uint32_t letter_bit(std::string_view address) {
+    return address.size() == 1 && address[0] >= 'A' && address[0] <= 'Z'
+               ? uint32_t{1} << (address[0] - 'A')
+               : 0;
+  }
+  // False when the block has no word of `address` for sure.
+  bool may_have(std::string_view address) const {
+    const uint32_t bit = letter_bit(address);
+    return bit == 0 || (letters & bit) != 0;
+  }
   const NcWord* find(std::string_view address) const {
+    if (!may_have(address)) return nullptr;
     for (const NcWord& w : words)
       if (w.address == address) return &w;
     return nullptr;

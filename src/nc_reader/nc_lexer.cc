@@ -194,9 +194,12 @@ bool lex_nc_line(std::string_view line, uint32_t line_no, const NcSyntax& syntax
   block.comments.clear();
   block.program_delimiter = false;
   block.block_delete = false;
+  block.letters = 0;
   while (!line.empty() && (line.back() == '\r' || is_blank(line.back()))) line.remove_suffix(1);
   Lexer lx{line, 0, block, error};
-  return lx.run(syntax);
+  const bool ok = lx.run(syntax);
+  for (const NcWord& w : block.words) block.letters |= NcBlock::letter_bit(w.address);
+  return ok;
 }
 
 }  // namespace clpost

@@ -34,8 +34,7 @@ Code parse_code(std::string_view text) {
   return c;
 }
 
-bool has_code(const NcBlock& b, const Code& c) {
-  if (c.empty()) return false;
+bool has_code_in_words(const NcBlock& b, const Code& c) {
   for (const NcWord& w : b.words) {
     // Most words differ in their first letter: that test first, without a call to memcmp.
     if (w.address.size() != c.address.size() || w.address[0] != c.address[0] ||
@@ -56,7 +55,8 @@ Code template_code(const Machine& m, const TemplateSpec& spec, size_t index) {
 }
 
 double State::value(const NcWord& w, std::string_view format) const {
-  const double scale = m.format_for(format).scale;
+  const double scale =
+      NcBlock::letter_bit(format) != 0 ? letter_scale[format[0] - 'A'] : m.format_for(format).scale;
   return scale != 0 ? w.value / scale : w.value;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The control simulation's state while it runs a program (control_sim.cc) and the controls'
 // cycle read-backs that share it (src/controls/*/*_readback.cc, through control_readback.h).
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,7 +33,12 @@ struct Code {
   bool empty() const { return address.empty(); }
 };
 Code parse_code(std::string_view text);
-bool has_code(const NcBlock& b, const Code& c);
+// Whether block `b` has code `c` (inline: most blocks have not the code's letter, a test of a
+// bit; the machine's codes are asked for some twenty times a block).
+bool has_code_in_words(const NcBlock& b, const Code& c);
+inline bool has_code(const NcBlock& b, const Code& c) {
+  return !c.empty() && b.may_have(c.address) && has_code_in_words(b, c);
+}
 // The first word of template `t`'s line `index` on machine `m` ("G76" of "G76 X{x} ..."); empty
 // when absent. Named by its spec (tmpl::kDwell, ...): a misspelt template does not compile.
 Code template_code(const Machine& m, const TemplateSpec& t, size_t index = 0);
@@ -102,8 +108,14 @@ struct G92Modal {
 
 struct State {
   State(const Machine& machine, Diagnostics& d, Simulation& o, const SimOptions& so)
-      : m(machine), diags(d), out(o), opt(so) {}
+      : m(machine), diags(d), out(o), opt(so) {
+    for (size_t i = 0; i < letter_scale.size(); ++i)
+      letter_scale[i] = m.format_for(std::string(1, static_cast<char>('A' + i))).scale;
+  }
   const Machine& m;
+  // The format scale of each one-letter address ('A' first), looked up once: nearly every word
+  // of a program is read through it (value()).
+  std::array<double, 26> letter_scale{};
   Diagnostics& diags;
   Simulation& out;
   const SimOptions& opt;
