@@ -80,17 +80,21 @@ struct Lexer {
     while (j < s.size() && is_letter(s[j])) ++j;
     // A call: an identifier of two letters or more, then letters or digits, then '(' at once
     // ("CYCLE99(" — "X1 (" and "X1(" are a word and a comment).
-    size_t k = j;
-    while (k < s.size() && (is_letter(s[k]) || is_digit(s[k]))) ++k;
-    if (j - start >= 2 && k < s.size() && s[k] == '(') {
-      std::string name;
-      for (size_t q = start; q < k; ++q) name += upper(s[q]);
-      i = k;
-      return call(start, std::move(name));
+    if (j - start >= 2) {
+      size_t k = j;
+      while (k < s.size() && (is_letter(s[k]) || is_digit(s[k]))) ++k;
+      if (k < s.size() && s[k] == '(') {
+        std::string name;
+        for (size_t q = start; q < k; ++q) name += upper(s[q]);
+        i = k;
+        return call(start, std::move(name));
+      }
     }
-    NcWord w;
+    // The word is made in its place in the block (its strings reused from the last block's).
+    NcWord& w = b.words.emplace_back();
     w.col = col(start);
-    for (size_t q = start; q < j; ++q) w.address += upper(s[q]);
+    w.address.assign(s.data() + start, j - start);
+    for (char& ch : w.address) ch = upper(ch);
     i = j;
     if (i < s.size() && s[i] == '=') {
       w.address += '=';
@@ -101,29 +105,34 @@ struct Lexer {
     if (n < s.size() && (s[n] == '+' || s[n] == '-')) ++n;
     while (n < s.size() && (is_digit(s[n]) || s[n] == '.')) ++n;
     if (n == i) {
-      if (w.address.back() == '=' || w.address == "$")
-        return fail(start, fmt::format("'{}' has no value", w.address));
-      b.words.push_back(std::move(w));  // a bare word: DIAMON, MACHINING, END
-      return true;
+      if (w.address.back() == '=' || w.address == "$") return unword(start, "'{}' has no value");
+      return true;  // a bare word: DIAMON, MACHINING, END
     }
     // The number runs to the next blank, letter or comment; anything else in it is an error.
     size_t end = n;
     while (end < s.size() && !is_blank(s[end]) && !is_letter(s[end]) && s[end] != '(' &&
            s[end] != '[' && s[end] != ';')
       ++end;
-    w.text = std::string(s.substr(i, end - i));
+    w.text.assign(s.data() + i, end - i);
     // The CL reader's number grammar (no exponent here: a letter ends the number).
     switch (reader::parse_number(w.text, w.value)) {
       case reader::NumberStatus::kOk:
         break;
       case reader::NumberStatus::kInvalid:
-        return fail(start, fmt::format("invalid number '{}{}'", w.address, w.text));
+        return unword(start, "invalid number '{}{}'");
       case reader::NumberStatus::kOutOfRange:
-        return fail(start, fmt::format("number out of range '{}{}'", w.address, w.text));
+        return unword(start, "number out of range '{}{}'");
     }
     i = end;
-    b.words.push_back(std::move(w));
     return true;
+  }
+
+  // The word just begun is not one: taken out of the block, the error `format` (of its address
+  // and text) at `start`.
+  bool unword(size_t start, fmt::format_string<const std::string&, const std::string&> format) {
+    const NcWord w = std::move(b.words.back());
+    b.words.pop_back();
+    return fail(start, fmt::format(format, w.address, w.text));
   }
 
   bool comment(const NcSyntax& syn, std::string_view open) {
@@ -163,13 +172,14 @@ struct Lexer {
       }
     }
     const std::string_view open = trim(syn.comment_open, kCr);
+    const bool other_open = open != "(";
     while (true) {
       skip_blanks();
       if (i >= s.size()) return true;
       const char c = s[i];
-      if (!open.empty() && s.substr(i, open.size()) == open) {
+      if (!open.empty() && c == open[0] && s.substr(i, open.size()) == open) {
         if (!comment(syn, open)) return false;
-      } else if (c == '(' && open != "(") {
+      } else if (c == '(' && other_open) {
         // An ISO comment in another dialect (INSERT text passed through): read as a comment.
         if (!comment(NcSyntax{syn.block_address, "(", ")"}, "(")) return false;
       } else if (c == ';') {

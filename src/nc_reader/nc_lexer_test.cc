@@ -129,6 +129,26 @@ TEST(NcLexer, ProgramDelimiters) {
   EXPECT_FALSE(lex("O0001", fanuc()).program_delimiter);
 }
 
+// The block's one-letter addresses, a bit each, for the look-ups that a block without the letter
+// answers at once; the words of longer addresses (IC, DIAMON) go through the words.
+TEST(NcLexer, OneLetterAddressesAsBits) {
+  NcBlock b = lex("N10 g1 X5 IC3 DIAMON Z-1 (Y2)", siemens());
+  EXPECT_EQ(b.letters,
+            NcBlock::letter_bit("G") | NcBlock::letter_bit("X") | NcBlock::letter_bit("Z"));
+  EXPECT_EQ(NcBlock::letter_bit("G"), 1u << 6);
+  EXPECT_EQ(NcBlock::letter_bit("IC"), 0u);
+  EXPECT_EQ(b.find("Z")->value, -1);
+  EXPECT_EQ(b.find("IC")->value, 3);
+  EXPECT_NE(b.find("DIAMON"), nullptr);
+  EXPECT_EQ(b.find("Y"), nullptr);
+  EXPECT_EQ(b.find("N"), nullptr);
+  // The next block read into it keeps none of these.
+  NcLexError e;
+  ASSERT_TRUE(lex_nc_line("M3", 8, siemens(), b, e));
+  EXPECT_EQ(b.letters, NcBlock::letter_bit("M"));
+  EXPECT_EQ(b.find("X"), nullptr);
+}
+
 TEST(NcLexer, CarriageReturnAndTrailingBlanks) {
   NcBlock b = lex("G1 X5 \r", fanuc());
   ASSERT_EQ(b.words.size(), 2u);
@@ -142,6 +162,12 @@ TEST(NcLexer, ErrorsNameTheColumnAndTheText) {
   EXPECT_EQ(lex_error("CYCLE99(1, 2", siemens()), "1: 'CYCLE99(' has no closing ')'");
   EXPECT_EQ(lex_error("G1 #1=5", fanuc()), "4: unexpected '#'");
   EXPECT_EQ(lex_error("SF= Z1", siemens()), "1: 'SF=' has no value");
+  // A word in error is not left in the block.
+  NcBlock b;
+  NcLexError e;
+  EXPECT_FALSE(lex_nc_line("G1 X1.2.3", 7, fanuc(), b, e));
+  ASSERT_EQ(b.words.size(), 1u);
+  EXPECT_EQ(b.words[0].address, "G");
 }
 
 }  // namespace
