@@ -473,6 +473,8 @@ bool ControlSim::line(uint32_t number, std::string_view text) {
     s.diags.error(SourceLoc{number, impl_->lex_error.col}, s.line_text, impl_->lex_error.message);
     s.ok = false;
   } else {
+    if (impl_->block.block_delete && s.out.deleted_blocks == 0 && impl_->options.on_first_optional)
+      impl_->options.on_first_optional();
     run_block(s, impl_->block, impl_->codes);
     if (impl_->block.block_delete && s.out.deleted_blocks++ == 0)
       s.out.first_optional = {number, std::string(text)};

@@ -81,6 +81,9 @@ struct SimOptions {
   bool block_delete_too = false;
   // With block_delete_too: the moves of the run with block delete on, as on_move has the others.
   std::function<void(const Move&, const CutState&)> on_block_delete_move;
+  // Called before the first optional block is run: where the runs with block delete off and on
+  // first differ.
+  std::function<void()> on_first_optional;
 };
 
 // The simulation a line at a time, as the program is written (clpost --verify). `out` and

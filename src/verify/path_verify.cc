@@ -51,14 +51,14 @@ struct PathStream::Check {
       : m(machine),
         options(o),
         readback(r),
-        units(u),
+        units(&u),
         diags(o.plan_name),
         tol(tolerance),
         xs(diameter_factor(machine)) {}
   const Machine& m;
   VerifyOptions options;
   StateReadback readback;
-  const LengthUnit& units;  // the program's, as read so far
+  const LengthUnit* units;  // the program's, as read so far
   Diagnostics diags;        // the problems, handed to the program's at the end
   MoveWindow moves;
   size_t next = 0;  // the move the next CL motion is looked for from
@@ -170,7 +170,7 @@ void check_state(Check& k, const PathStream::ClStep& c, size_t j) {
   const CutState& a = c.state.state;
   const CutState& b = mv.state;
   const StateReadback& r = k.readback;
-  const LengthUnit u = k.units;
+  const LengthUnit u = *k.units;
   // The states change seldom: the comparison of the last pair is kept.
   if (!k.compared || k.compared_units != u || !(k.cl_state == a) || !(k.program_state == b)) {
     k.differs = {!same_tool(r, a, b), !same_feed(k.m, r, a, b, u == LengthUnit::kInch),
@@ -295,6 +295,22 @@ PathStream::~PathStream() {
 
 static_assert(std::is_trivially_copyable_v<PathStream::ClStep>, "spilled as bytes");
 
+namespace {
+
+// Spilled CL motions from number `at` on: `batch` (its size) read from `f`, or written to it.
+bool read_spill(std::FILE* f, size_t at, std::vector<PathStream::ClStep>& batch) {
+  using Step = PathStream::ClStep;
+  return std::fseek(f, static_cast<long>(at * sizeof(Step)), SEEK_SET) == 0 &&
+         std::fread(batch.data(), sizeof(Step), batch.size(), f) == batch.size();
+}
+bool write_spill(std::FILE* f, size_t at, const std::vector<PathStream::ClStep>& batch) {
+  using Step = PathStream::ClStep;
+  return std::fseek(f, static_cast<long>(at * sizeof(Step)), SEEK_SET) == 0 &&
+         std::fwrite(batch.data(), sizeof(Step), batch.size(), f) == batch.size();
+}
+
+}  // namespace
+
 // A CL motion in order: in memory while the window has room and nothing waits on disk, else
 // on disk (a program that is written after the whole post, behind its header, comes after
 // every CL motion).
@@ -308,11 +324,7 @@ void PathStream::queue(const ClStep& step) {
   if (spill_buffer_.size() < kSpillBatch) return;
   if (spill_ == nullptr) spill_ = std::tmpfile();
   if (spill_ == nullptr) return;  // no temporary file: they wait in memory
-  const bool ok =
-      std::fseek(spill_, static_cast<long>(spill_written_ * sizeof(ClStep)), SEEK_SET) == 0 &&
-      std::fwrite(spill_buffer_.data(), sizeof(ClStep), spill_buffer_.size(), spill_) ==
-          spill_buffer_.size();
-  if (!ok) return;  // they wait in memory
+  if (!write_spill(spill_, spill_written_, spill_buffer_)) return;  // they wait in memory
   spill_written_ += spill_buffer_.size();
   spill_buffer_.clear();
 }
@@ -321,8 +333,7 @@ void PathStream::queue(const ClStep& step) {
 void PathStream::refill() {
   if (spill_read_ < spill_written_) {
     std::vector<ClStep> batch(std::min(kSpillBatch, spill_written_ - spill_read_));
-    if (std::fseek(spill_, static_cast<long>(spill_read_ * sizeof(ClStep)), SEEK_SET) == 0 &&
-        std::fread(batch.data(), sizeof(ClStep), batch.size(), spill_) == batch.size()) {
+    if (read_spill(spill_, spill_read_, batch)) {
       spill_read_ += batch.size();
       cl_.insert(cl_.end(), batch.begin(), batch.end());
       return;
@@ -331,6 +342,33 @@ void PathStream::refill() {
   }
   cl_.insert(cl_.end(), spill_buffer_.begin(), spill_buffer_.end());
   spill_buffer_.clear();
+}
+
+void PathStream::take_over(const PathStream& o) {
+  const LengthUnit* units = k_->units;
+  k_ = std::make_unique<Check>(*o.k_);
+  k_->units = units;
+  window_ = o.window_;
+  shown_ = o.shown_;
+  cl_ = o.cl_;
+  if (spill_ != nullptr) std::fclose(spill_);
+  spill_ = nullptr;
+  spill_read_ = spill_written_ = 0;
+  spill_buffer_.clear();
+  // o's motions on disk into a file of its own, a batch at a time; what cannot be written
+  // waits in memory, in order, before o's buffer.
+  std::vector<ClStep> batch;
+  for (size_t at = o.spill_read_; at < o.spill_written_; at += batch.size()) {
+    batch.resize(std::min(kSpillBatch, o.spill_written_ - at));
+    if (!read_spill(o.spill_, at, batch)) break;  // unreadable: lost, as refill() loses them
+    if (spill_buffer_.empty() && spill_ == nullptr) spill_ = std::tmpfile();
+    if (spill_buffer_.empty() && spill_ != nullptr && write_spill(spill_, spill_written_, batch)) {
+      spill_written_ += batch.size();
+    } else {
+      spill_buffer_.insert(spill_buffer_.end(), batch.begin(), batch.end());
+    }
+  }
+  spill_buffer_.insert(spill_buffer_.end(), o.spill_buffer_.begin(), o.spill_buffer_.end());
 }
 
 void PathStream::cl_motion(const ClMotion& c, const CutStateAt* state) {

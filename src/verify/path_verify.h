@@ -62,6 +62,10 @@ class PathStream {
   void cl_motion(const ClMotion& c, const CutStateAt* state);
   // A program move, in order (the entries from an unknown position among them).
   void program_move(const Move& mv, const CutState* state);
+  // This stream made what `o` is now (its comparison so far, the CL motions it has waiting, on
+  // disk too), with its own units: as if it had had o's input. (The program with block delete
+  // on is compared by o until it first differs from the program with it off.)
+  void take_over(const PathStream& o);
   // Both ended: the motions left compared, every problem added to `nc_diags` in order.
   // `cl_states`: how many states the CL made (the summary says it).
   PathReport finish(size_t cl_states, Diagnostics& nc_diags);

@@ -153,9 +153,16 @@ const SimOptions& ProgramStream::options() {
   so_.on_move = [this](const Move& mv, const CutState& state) { path_.program_move(mv, &state); };
   so_.block_delete_too = true;
   so_.on_block_delete_move = [this](const Move& mv, const CutState& state) {
-    path_on_.program_move(mv, &state);
+    if (!on_follows_) path_on_.program_move(mv, &state);
   };
+  so_.on_first_optional = [this] { part_on(); };
   return so_;
+}
+
+void ProgramStream::part_on() {
+  if (!on_follows_) return;
+  on_follows_ = false;
+  path_on_.take_over(path_);
 }
 
 void ProgramStream::program_text(std::string_view text) {
@@ -207,8 +214,9 @@ void ProgramStream::line(std::string_view text) {
 void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
   ++motions_;
   optional_motions_ = optional_motions_ || c.optional;
+  if (c.optional) part_on();
   path_.cl_motion(c, &state);
-  if (!c.optional) path_on_.cl_motion(c, &state);
+  if (!c.optional && !on_follows_) path_on_.cl_motion(c, &state);
 }
 
 void ProgramStream::plan(const ThreadPlan& p) {

@@ -67,6 +67,12 @@ class ProgramStream {
   // when the program has optional blocks).
   PathStream path_on_;
   ThreadStream threads_;
+  // While the program with block delete on has had the same input as with it off (no optional
+  // CL motion, no optional block yet), path_on_ is not fed: it would compare as path_ does, and
+  // a program behind a header has every CL motion spilled to disk before its first line. Where
+  // they first differ, path_on_ takes over path_'s comparison so far (part_on()).
+  bool on_follows_ = true;
+  void part_on();
   std::string partial_;  // the line being written
   uint32_t number_ = 0;
   bool after_cr_ = false;
