@@ -47,7 +47,12 @@ struct NcBlock {
     return bit == 0 || (letters & bit) != 0;
   }
   const NcWord* find(std::string_view address) const {
-    if (!may_have(address)) return nullptr;
+    if (const uint32_t bit = letter_bit(address); bit != 0) {
+      if ((letters & bit) == 0) return nullptr;
+      for (const NcWord& w : words)
+        if (w.address.size() == 1 && w.address[0] == address[0]) return &w;
+      return nullptr;
+    }
     for (const NcWord& w : words)
       if (w.address == address) return &w;
     return nullptr;

@@ -262,7 +262,10 @@ bool settings_block(State& s, const NcBlock& b, const Codes& c) {
   if (sim::has_code(b, c.diameter_on)) s.diameter = true;
   if (sim::has_code(b, c.diameter_off)) s.diameter = false;
   if (sim::machine_position_block(s, b)) return true;
+  const uint32_t incremental =
+      NcBlock::letter_bit("G") | NcBlock::letter_bit("U") | NcBlock::letter_bit("W");
   for (const NcWord& w : b.words) {
+    if ((b.letters & incremental) == 0) break;
     if ((w.address == "G" && w.has_value() && std::fabs(w.value - 91) < 1e-9) ||
         ((w.address == "U" || w.address == "W") && !c.control->uw_are_cycle_words)) {
       s.error(w.col, fmt::format("'{}{}': incremental positions are not supported by verify "

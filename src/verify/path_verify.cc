@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <deque>
 #include <type_traits>
 
 #include "laws/cut_pass.h"
 #include "laws/written_value.h"
+#include "support/ring.h"
 
 namespace clpost {
 
@@ -28,7 +28,7 @@ bool same_kind(const ClMotion& c, const Move& mv) {
 
 // The program's moves in a window of the stream: moves[i] is move number `base + i`.
 struct MoveWindow {
-  std::deque<PathStream::ProgramMove> moves;
+  Ring<PathStream::ProgramMove> moves;
   size_t base = 0;
   size_t size() const { return base + moves.size(); }  // one past the last move received
   const Move& operator[](size_t i) const { return moves[i - base].move; }
@@ -187,7 +187,8 @@ void check_state(Check& k, const PathStream::ClStep& c, size_t j) {
   for (int i = 0; i < 3; ++i) {
     if (!compared[i]) continue;
     if (!differs[i]) {
-      k.reported[i] = {};
+      k.reported[i].first.clear();
+      k.reported[i].second.clear();
       continue;
     }
     std::pair<std::string, std::string> texts =
@@ -287,6 +288,11 @@ PathStream::PathStream(const Machine& m, const VerifyOptions& options,
     : window_(window) {
   shown_ = options.tolerance > 0 ? options.tolerance : cut_tolerance(m);
   k_ = std::make_unique<Check>(m, options, readback, units, shown_ + 1e-9);
+  if (window == SIZE_MAX) return;
+  // A window of CL motions; the moves from the one before the next motion's to a window past
+  // it, and the one just come.
+  cl_ = Ring<ClStep>(window);
+  k_->moves.moves = Ring<ProgramMove>(window + 2);
 }
 
 PathStream::~PathStream() {
@@ -335,12 +341,12 @@ void PathStream::refill() {
     std::vector<ClStep> batch(std::min(kSpillBatch, spill_written_ - spill_read_));
     if (read_spill(spill_, spill_read_, batch)) {
       spill_read_ += batch.size();
-      cl_.insert(cl_.end(), batch.begin(), batch.end());
+      for (const ClStep& step : batch) cl_.push_back(step);
       return;
     }
     spill_read_ = spill_written_;  // unreadable: those motions are lost, not compared
   }
-  cl_.insert(cl_.end(), spill_buffer_.begin(), spill_buffer_.end());
+  for (const ClStep& step : spill_buffer_) cl_.push_back(step);
   spill_buffer_.clear();
 }
 

@@ -9,7 +9,6 @@
 // where it begins. Thread passes and holes are compared on their own (verify.h, hole_verify.h);
 // their moves lie between these points.
 #include <cstdio>
-#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "laws/hole_law.h"
 #include "simulator/toolpath.h"
 #include "support/diagnostics.h"
+#include "support/ring.h"
 #include "verify/verify.h"
 
 namespace clpost {
@@ -81,7 +81,7 @@ class PathStream {
   size_t spill_written_ = 0, spill_read_ = 0;  // motions written to it, read back
   std::vector<ClStep> spill_buffer_;
   double shown_ = 0;  // the tolerance as the report says it
-  std::deque<ClStep> cl_;
+  Ring<ClStep> cl_;
   std::unique_ptr<Check> k_;
 };
 
