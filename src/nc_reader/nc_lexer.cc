@@ -25,7 +25,13 @@ char upper(char c) {
 }
 // Trimmed text drops trailing CRs too, as lex_nc_line does at the line's end: one can still
 // stand inside a line given to lex_nc_line, or in the machine's block address and comment text.
-constexpr std::string_view kCr = "\r";
+// trim(s, "\r") without a search of that set for the last character (a call of memchr for
+// each of two texts a line).
+std::string_view trim_cr(std::string_view s) {
+  s = trim(s);
+  while (!s.empty() && s.back() == '\r') s = trim(s.substr(0, s.size() - 1));
+  return s;
+}
 
 struct Lexer {
   std::string_view s;
@@ -58,7 +64,7 @@ struct Lexer {
         std::string_view a = s.substr(arg_start, i - arg_start);
         size_t lead = 0;
         while (lead < a.size() && is_blank(a[lead])) ++lead;
-        c.args.emplace_back(trim(a, kCr));
+        c.args.emplace_back(trim_cr(a));
         c.cols.push_back(col(arg_start + lead));
         arg_start = i + 1;
         if (ch == ')') {
@@ -139,14 +145,14 @@ struct Lexer {
     const size_t start = i;
     i += open.size();
     if (syn.comment_close.empty()) {
-      b.comments.emplace_back(trim(s.substr(i), kCr));
+      b.comments.emplace_back(trim_cr(s.substr(i)));
       i = s.size();
       return true;
     }
     size_t close = s.find(syn.comment_close, i);
     if (close == std::string_view::npos)
       return fail(start, fmt::format("comment has no closing '{}'", syn.comment_close));
-    b.comments.emplace_back(trim(s.substr(i, close - i), kCr));
+    b.comments.emplace_back(trim_cr(s.substr(i, close - i)));
     i = close + syn.comment_close.size();
     return true;
   }
@@ -162,7 +168,7 @@ struct Lexer {
       ++i;
     }
     // Block number.
-    std::string_view addr = trim(syn.block_address, kCr);
+    std::string_view addr = trim_cr(syn.block_address);
     if (!addr.empty() && s.substr(i, addr.size()) == addr) {
       size_t j = i + addr.size();
       while (j < s.size() && is_blank(s[j])) ++j;
@@ -171,7 +177,7 @@ struct Lexer {
         i = j;
       }
     }
-    const std::string_view open = trim(syn.comment_open, kCr);
+    const std::string_view open = trim_cr(syn.comment_open);
     const bool other_open = open != "(";
     while (true) {
       skip_blanks();
@@ -183,7 +189,7 @@ struct Lexer {
         // An ISO comment in another dialect (INSERT text passed through): read as a comment.
         if (!comment(NcSyntax{syn.block_address, "(", ")"}, "(")) return false;
       } else if (c == ';') {
-        b.comments.emplace_back(trim(s.substr(i + 1), kCr));
+        b.comments.emplace_back(trim_cr(s.substr(i + 1)));
         return true;
       } else if (is_letter(c) || c == '$') {
         if (!word()) return false;

@@ -137,6 +137,23 @@ void read_spindle(State& s, const NcBlock& b, const ModalWords& w) {
   if (has_code(b, w.stop)) s.cut.spindle = SpindleRun::kOff;
 }
 
+// ModalWords::letters and longer, from its codes and words.
+void learn_letters(ModalWords& w) {
+  const auto add = [&w](const std::string& address) {
+    if (address.empty()) return;
+    const uint32_t bit = NcBlock::letter_bit(address);
+    w.letters |= bit;
+    w.longer = w.longer || bit == 0;
+  };
+  for (const Code* c :
+       {&w.per_min, &w.per_rev, &w.cw, &w.ccw, &w.stop, &w.rpm_mode, &w.css_mode, &w.limit_code})
+    add(c->address);
+  for (const Code& c : w.tool_codes) add(c.address);
+  for (const std::string* a :
+       {&w.rpm_address, &w.css_address, &w.limit_address, &w.tool_address, &w.offset_address})
+    add(*a);
+}
+
 }  // namespace
 
 ModalWords modal_words(const Machine& m) {
@@ -146,10 +163,12 @@ ModalWords modal_words(const Machine& m) {
   w.readback.feed_mode = !w.per_min.empty() && !w.per_rev.empty();
   learn_spindle(m, w);
   learn_tool(m, w);
+  learn_letters(w);
   return w;
 }
 
 void read_modal_words(State& s, const NcBlock& b, const ModalWords& w) {
+  if (!w.longer && (b.letters & w.letters) == 0) return;  // most blocks: X and Z alone
   if (has_code(b, w.per_min)) s.cut.per_rev = 0;
   if (has_code(b, w.per_rev)) s.cut.per_rev = 1;
   if (!w.tool_address.empty())

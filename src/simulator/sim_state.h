@@ -73,6 +73,10 @@ struct ModalWords {
   std::string offset_address;              // {offset} in a word of its own ("D"), else empty
   std::vector<Code> tool_codes;            // the tool line's codes, each needed (M6 of T1 M6)
   StateReadback readback;
+  // The letters of every code and word above (NcBlock::letters), and whether any has a longer
+  // address ("LIMS="): a block without those letters states none of them.
+  uint32_t letters = 0;
+  bool longer = false;
 };
 ModalWords modal_words(const Machine& m);
 

@@ -183,11 +183,13 @@ size_t line_end(std::string_view text) {
 }  // namespace
 
 void ProgramStream::read_lines(std::string_view text) {
-  // Lines end at "\n", "\r" or "\r\n", as reader::LineSource reads them.
+  // Lines end at "\n", "\r" or "\r\n", as reader::LineSource reads them. Text without a "\r"
+  // (a search of the whole chunk at once) is cut at its "\n"s by memchr.
+  const bool cr = text.find('\r') != std::string_view::npos;
   while (!text.empty()) {
     if (after_cr_ && text.front() == '\n') text.remove_prefix(1);
     after_cr_ = false;
-    const size_t end = line_end(text);
+    const size_t end = cr ? line_end(text) : text.find('\n');
     if (end == std::string_view::npos) {
       partial_.append(text);
       return;
