@@ -404,5 +404,47 @@ TEST(Verify, StreamedBlockDeleteRunReportsAsTheWholeProgram) {
   }
 }
 
+// `clpost verify --cl` reads the program into the stream a line at a time
+// (ProgramStream::program_lines) after the whole CL, as a program behind its header comes: on
+// a program with CRLF line ends and a thread pass edited, and on one with a line longer than
+// 64 KiB (it cannot be read), it says word for word what verify of the whole program says.
+TEST(Verify, ProgramReadIntoTheStreamReportsAsTheWholeProgram) {
+  const Machine m = shipped_machine("generic-lathe");
+  PostOptions options;
+  options.keep_motions = true;
+  const PostedText posted = post_text(identical_threads(3), m, "t.cl", options);
+  ASSERT_FALSE(posted.diags.has_errors()) << posted.diags.render_all();
+  std::string edited = posted.program, too_long = posted.program;
+  replace_nth_line(edited, " G33 ", 7, "G33 Z-28.831 F2.5");
+  replace_nth_line(too_long, " G33 ", 2, "(" + std::string(70000, 'x') + ")");
+  const std::string first_errors[] = {
+      "t.nc:54:1: error: thread at t.cl:13: pass 2: ends at X17.9720 Z-28.8310, plan X17.9720 "
+      "Z-29.6998 (tolerance 0.001)\n",
+      "t.nc:21:1: error: line longer than 65536 bytes\n"};
+  int k = 0;
+  for (const std::string& program : {edited, too_long}) {
+    std::string crlf;
+    for (char c : program) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    reader::LineSource whole_src{std::string_view(crlf)};
+    const ClExpected expected{posted.summary.holes, posted.summary.path};
+    const VerifyOutcome whole =
+        verify_program(whole_src, "t.nc", posted.plans, &expected, "t.cl", m, 0);
+    EXPECT_FALSE(whole.ok);
+    EXPECT_EQ(whole.diagnostics.rfind(first_errors[k++], 0), 0u) << whole.diagnostics;
+
+    ProgramStream stream("t.nc", "t.cl", m, 0);
+    for (const ThreadPlan& p : posted.plans) stream.plan(p);
+    const ClPath& path = posted.summary.path;
+    for (const ClMotion& c : path.motions) stream.cl_motion(c, path.states[c.state]);
+    reader::LineSource src{std::string_view(crlf)};
+    stream.program_lines(src);
+    const VerifyOutcome streamed = stream.finish(posted.summary.holes, path.states.size());
+    EXPECT_EQ(streamed.ok, whole.ok);
+    EXPECT_EQ(streamed.report, whole.report);
+    EXPECT_EQ(streamed.diagnostics, whole.diagnostics);
+    EXPECT_EQ(streamed.errors, whole.errors);
+  }
+}
+
 }  // namespace
 }  // namespace clpost::test

@@ -512,16 +512,16 @@ bool ControlSim::finish() {
   return s.ok;
 }
 
-bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
-                 const SimOptions& options) {
+bool read_nc_lines(reader::LineSource& src, Diagnostics& diags,
+                   const std::function<bool(uint32_t, std::string_view)>& line,
+                   const std::function<void()>& unreadable) {
   using Status = reader::LineSource::Status;
   constexpr size_t kMaxLine = 64 * 1024;
-  ControlSim sim(m, diags, out, options);
   while (true) {
     src.mark();
     reader::LineSource::Line l;
     const Status st = src.next_line(kMaxLine, l);
-    if (st == Status::kEnd) break;
+    if (st == Status::kEnd) return true;
     if (st == Status::kBinary) {
       diags.error({}, {},
                   fmt::format("not an NC text file (binary data at byte {})", src.binary_offset()));
@@ -534,12 +534,20 @@ bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, 
     if (st == Status::kTooLong) {
       diags.error(SourceLoc{l.number, 1}, {}, fmt::format("line longer than {} bytes", kMaxLine));
       src.skip_line();
-      sim.unreadable();
+      unreadable();
       continue;
     }
-    if (!sim.line(l.number, src.text(l))) return false;
+    if (!line(l.number, src.text(l))) return false;
   }
-  return sim.finish();
+}
+
+bool simulate_nc(reader::LineSource& src, const Machine& m, Diagnostics& diags, Simulation& out,
+                 const SimOptions& options) {
+  ControlSim sim(m, diags, out, options);
+  const bool read = read_nc_lines(
+      src, diags, [&sim](uint32_t number, std::string_view text) { return sim.line(number, text); },
+      [&sim] { sim.unreadable(); });
+  return read && sim.finish();
 }
 
 }  // namespace clpost

@@ -113,6 +113,13 @@ class ControlSim {
   std::unique_ptr<Impl> impl_;
 };
 
+// Reads a program from `src` a line at a time into `line(number, text)` (false: stop there), as
+// the control simulation reads one: a line too long is an error and `unreadable()`; binary data
+// and a read error are errors that stop it. False when it stopped.
+bool read_nc_lines(reader::LineSource& src, Diagnostics& diags,
+                   const std::function<bool(uint32_t, std::string_view)>& line,
+                   const std::function<void()>& unreadable);
+
 // Reads the program from `src` into `out`. Errors (text that is not NC, a word the control
 // would refuse, a cycle its law refuses) go to `diags` as `file:line:col: error: ...`; returns
 // false when there were any.

@@ -196,21 +196,33 @@ void ProgramStream::read_lines(std::string_view text) {
     }
     after_cr_ = text[end] == '\r';
     if (partial_.empty()) {
-      line(text.substr(0, end));
+      line(++number_, text.substr(0, end));
     } else {
       partial_.append(text.substr(0, end));
-      line(partial_);
+      line(++number_, partial_);
       partial_.clear();
     }
     text.remove_prefix(end + 1);
   }
 }
 
-void ProgramStream::line(std::string_view text) {
+void ProgramStream::line(uint32_t number, std::string_view text) {
   // Behind a header the whole CL is posted before the program's first line: without an OPSKIP
   // range in it, the run with block delete on is not needed.
-  if (++number_ == 1 && writes_program_header(m_) && !optional_motions_) sim_.no_optional_blocks();
-  if (!stopped_) stopped_ = !sim_.line(number_, text);
+  if (number == 1 && writes_program_header(m_) && !optional_motions_) sim_.no_optional_blocks();
+  if (!stopped_) stopped_ = !sim_.line(number, text);
+}
+
+void ProgramStream::program_lines(reader::LineSource& src) {
+  const bool read = read_nc_lines(
+      src, diags_,
+      [this](uint32_t number, std::string_view text) {
+        line(number, text);
+        threads_.poll(out_.cuts);
+        return !stopped_;
+      },
+      [this] { sim_.unreadable(); });
+  stopped_ = stopped_ || !read;
 }
 
 void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
@@ -226,7 +238,7 @@ void ProgramStream::plan(const ThreadPlan& p) {
 }
 
 VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes, size_t cl_states) {
-  if (!partial_.empty()) line(partial_);
+  if (!partial_.empty()) line(++number_, partial_);
   VerifyOutcome out;
   if (!stopped_ && sim_.finish()) {
     compare(

@@ -23,7 +23,9 @@ struct VerifyOutcome {
   std::string first_error;  // "PROGRAM:LINE: message" of the first error, for one-line summaries
 };
 
-// Verifies the program read from `src` (shown as `program_name`) against `plans`.
+// Verifies the program read from `src` (shown as `program_name`) against `plans`, the whole
+// program in memory (`clpost verify --plan`; `clpost verify --cl` and `--verify` stream it
+// through ProgramStream, which says the same).
 // `cl`: the CL's holes and motion end points, compared with the program's; nullptr (a plan
 // JSON, which has neither): only the threads are checked.
 VerifyOutcome verify_program(reader::LineSource& src, const std::string& program_name,
@@ -42,6 +44,9 @@ class ProgramStream {
   ~ProgramStream();
   void program_text(std::string_view text);
   void cl_motion(const ClMotion& c, const CutStateAt& state);
+  // `clpost verify --cl`: the program read from `src` a line at a time, after every CL motion
+  // and plan (as a program behind its header comes).
+  void program_lines(reader::LineSource& src);
   // A thread's plan, as it is planned.
   void plan(const ThreadPlan& p);
   // Both ended: the outcome. `cl_states`: the states the CL made (ClPath::state_count).
@@ -53,7 +58,7 @@ class ProgramStream {
   static constexpr size_t kWindow = 1 << 14;
   const SimOptions& options();
   void read_lines(std::string_view text);
-  void line(std::string_view text);
+  void line(uint32_t number, std::string_view text);
 
   std::string name_;
   const Machine& m_;
