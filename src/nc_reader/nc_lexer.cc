@@ -99,8 +99,12 @@ struct Lexer {
     // The word is made in its place in the block (its strings reused from the last block's).
     NcWord& w = b.words.emplace_back();
     w.col = col(start);
-    w.address.assign(s.data() + start, j - start);
-    for (char& ch : w.address) ch = upper(ch);
+    if (j == start + 1) {
+      w.address.assign(1, upper(s[start]));  // most words: X, Z, G
+    } else {
+      w.address.assign(s.data() + start, j - start);
+      for (char& ch : w.address) ch = upper(ch);
+    }
     i = j;
     if (i < s.size() && s[i] == '=') {
       w.address += '=';

@@ -36,6 +36,7 @@ struct HoleLine {
 
 // The plane ISO code `b` selects (G17, G18, G19), or 0.
 int plane_of(const NcBlock& b) {
+  if (!b.may_have("G")) return 0;  // most blocks
   for (const NcWord& w : b.words)
     if (w.address == "G" && w.has_value())
       for (int p : {17, 18, 19})
@@ -238,13 +239,22 @@ namespace {
 // Every hole template's cycle line, taken apart once per program (State::hole_lines).
 struct HoleLines {
   std::optional<HoleLine> lines[std::size(kHoleTemplates)];
+  // The letters of the word lines' cycle codes (NcBlock::letters), and whether one has a longer
+  // address: a block without those letters and without a call is no hole cycle.
+  uint32_t letters = 0;
+  bool longer = false;
 };
 
 const HoleLines& hole_lines(State& s) {
   if (!s.hole_lines) {
     auto h = std::make_shared<HoleLines>();
-    for (size_t i = 0; i < std::size(kHoleTemplates); ++i)
+    for (size_t i = 0; i < std::size(kHoleTemplates); ++i) {
       h->lines[i] = hole_line(s.m, kHoleTemplates[i]);
+      if (!h->lines[i] || !h->lines[i]->call.empty() || h->lines[i]->code.empty()) continue;
+      const uint32_t bit = NcBlock::letter_bit(h->lines[i]->code.address);
+      h->letters |= bit;
+      h->longer = h->longer || bit == 0;
+    }
     s.hole_lines = h;
   }
   return *static_cast<const HoleLines*>(s.hole_lines.get());
@@ -266,6 +276,7 @@ void radial_moves(State& s, SimHole& sh, const Hole& hole, double z) {
 bool hole_cycle_block(State& s, const NcBlock& b) {
   const HoleLines& lines = hole_lines(s);
   if (int p = plane_of(b); p != 0) s.plane = p;
+  if (b.calls.empty() && !lines.longer && (b.letters & lines.letters) == 0) return false;
   for (const std::optional<HoleLine>& h : lines.lines) {
     if (!h || !matches(*h, b, s.plane)) continue;
     std::map<std::string, double> v;
