@@ -3,6 +3,7 @@
 // points (X as a radius: rs274 reports radii even in G7 diameter mode).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -244,6 +245,96 @@ TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   EXPECT_DOUBLE_EQ(m[0].z, 5);
   EXPECT_DOUBLE_EQ(m[1].x, 17);
   EXPECT_DOUBLE_EQ(m[1].z, -22);
+}
+
+}  // namespace
+}  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// Face milling of a live tool on linuxcnc-lathe-c (docs/millturn.md): the part frame's lines
+// and arc written in X, Z and C by the post (tests/data/millturn-face-mill.apt, C index 30).
+// rs274 runs the program; every feed move it makes, sampled at eighths as the control moves
+// (X, Z and C linear), mapped back to the part (X as the radius at angle C - 30) lies within
+// 0.01 mm of the CL path, every CL point is reached, and the tool moves along the part at the
+// CL's 200 mm/min (G93: rs274 turns F into a rate over the move's length).
+struct PartSeg {
+  double ax, ay, bx, by;  // a line a-b (the part frame)
+  bool arc = false;       // or an arc about the centre 0,0 of radius hypot(a)
+};
+
+double to_seg(const PartSeg& s, double x, double y) {
+  if (s.arc) return std::abs(std::hypot(x, y) - std::hypot(s.ax, s.ay));
+  const double dx = s.bx - s.ax, dy = s.by - s.ay;
+  const double t = std::clamp(((x - s.ax) * dx + (y - s.ay) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  return std::hypot(s.ax + dx * t - x, s.ay + dy * t - y);
+}
+
+TEST(Rs274, MillTurnFaceMillingInXzcFollowsThePartPath) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), ngc = dir + "/mill.ngc";
+  const std::string cl = source_dir() + "/tests/data/millturn-face-mill.apt";
+  RunResult post =
+      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  // The CL's cut at Z -1 and -2 (the square, the arc, the slot through the centre line).
+  const std::vector<PartSeg> path = {{10, -10, 10, 10},     {10, 10, -10, 10},
+                                     {-10, 10, -10, -10},   {-10, -10, 10, -10},
+                                     {10, -10, 0, 0, true}, {12, 0.002, -12, 0.002}};
+  const std::vector<std::pair<double, double>> corners = {{10, -10},  {10, 10},    {-10, 10},
+                                                          {-10, -10}, {12, 0.002}, {-12, 0.002}};
+  const double deg = std::acos(-1.0) / 180;
+  std::vector<double> at, rate_now;
+  double rate = 0, worst = 0;
+  size_t feeds = 0, timed = 0;
+  std::vector<bool> reached(corners.size(), false);
+  std::istringstream out(r.out);
+  for (std::string line; std::getline(out, line);) {
+    if (const size_t f = line.find("SET_FEED_RATE("); f != std::string::npos)
+      rate = canon_numbers(line.substr(f))[0];
+    const size_t t = line.find("STRAIGHT_TRAVERSE("), m = line.find("STRAIGHT_FEED(");
+    if (t == std::string::npos && m == std::string::npos) continue;
+    const std::vector<double> v = canon_numbers(line.substr(t != std::string::npos ? t : m));
+    ASSERT_EQ(v.size(), 6u) << line;
+    if (m != std::string::npos && !at.empty() && v[2] < -0.5) {
+      ++feeds;
+      for (int k = 0; k <= 8; ++k) {
+        const double x = at[0] + (v[0] - at[0]) * k / 8, z = at[2] + (v[2] - at[2]) * k / 8;
+        const double c = (at[5] + (v[5] - at[5]) * k / 8 - 30) * deg;
+        const double px = x * std::cos(c), py = x * std::sin(c);
+        double d = 1e9;
+        for (const PartSeg& s : path) d = std::min(d, to_seg(s, px, py));
+        EXPECT_LE(d, 0.01) << line << " at " << k << "/8: part " << px << ", " << py << ", " << z;
+        worst = std::max(worst, d);
+        for (size_t i = 0; i < corners.size(); ++i)
+          reached[i] =
+              reached[i] || std::hypot(px - corners[i].first, py - corners[i].second) < 0.01;
+      }
+      // The time rs274 gives the move (its length over X and Z, else C, over the rate) and the
+      // part length it covers: the CL's 200 per minute, but on the flips at the centre.
+      const double ca = (at[5] - 30) * deg, cb = (v[5] - 30) * deg;
+      const double part = std::hypot(v[0] * std::cos(cb) - at[0] * std::cos(ca),
+                                     v[0] * std::sin(cb) - at[0] * std::sin(ca));
+      const double linear = std::hypot(v[0] - at[0], v[2] - at[2]);
+      const double minutes = (linear > 1e-9 ? linear : std::abs(v[5] - at[5])) / rate;
+      if (part > 0.05) {
+        EXPECT_NEAR(part / minutes, 200, 2) << line;
+        ++timed;
+      }
+    }
+    at = v;
+  }
+  EXPECT_GT(feeds, 100u);
+  EXPECT_GT(timed, 100u);
+  EXPECT_LT(worst, 0.006);  // the machine's xzc_tolerance 0.005, and the output's rounding
+  for (size_t i = 0; i < corners.size(); ++i) EXPECT_TRUE(reached[i]) << "corner " << i;
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interpreter/milling_motion.h"
 #include "interpreter/statement_table.h"
 #include "machine/template_values.h"
 
@@ -89,6 +90,7 @@ bool millturn_tool_change(PostState& s, const Statement& st, int tool,
     s.mill_motion_reported = true;  // its motions are not reported again
     return false;
   }
+  if (s.tool.mills()) end_milling(s, st, false);
   if (s.tool.mills()) stop_live(s, st);
   if (mills) hold_main_spindle(s, st);
   return true;

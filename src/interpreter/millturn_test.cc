@@ -137,7 +137,7 @@ TEST(MillTurn, MainSpindleStopsForMillingAndCMovesOnlyWhenItChanges) {
 
 TEST(MillTurn, LiveToolLimitsAndMillingMotionAreLocatedErrors) {
   Posted p = post(
-      "LOADTL/3,MILL\nSPINDL/5000,RPM,CLW\nSPINDL/100,SMM\nGOTO/10,5,0\n"
+      "LOADTL/3,MILL\nSPINDL/5000,RPM,CLW\nSPINDL/100,SMM\nGOTO/10,5,0,1,0,0\n"
       "GOTO/10,6,0\nROTABL/10,BAXIS\nFINI\n",
       haas_live());
   EXPECT_EQ(p.errors, 4u) << p.diags;
@@ -149,10 +149,11 @@ TEST(MillTurn, LiveToolLimitsAndMillingMotionAreLocatedErrors) {
                          "for milling tool 3 is not supported"),
             std::string::npos)
       << p.diags;
-  // One error for the tool's motions, at the first.
-  EXPECT_NE(p.diags.find("t.cl:4:1: error: milling motion with live tool 3 (loaded at line 1) is "
-                         "not supported yet: clpost writes no XZC or Y motion for a milling tool, "
-                         "only the holes of a hole cycle (docs/millturn.md)"),
+  // One error for the tool's motions, at the first: peripheral milling (milling_motion.cc).
+  EXPECT_NE(p.diags.find("t.cl:4:1: error: milling motion with live tool 3 (loaded at line 1): "
+                         "the tool axis (GOTO i,j,k) is not along Z: milling on the peripheral "
+                         "surface (G19, cylindrical interpolation) is not written yet, face "
+                         "milling (tool axis 0,0,1) is (docs/millturn.md)"),
             std::string::npos)
       << p.diags;
   EXPECT_NE(p.diags.find("t.cl:6:11: error: ROTABL/…,BAXIS: a lathe's rotary axis is C; machine "
@@ -251,7 +252,8 @@ TEST(MillTurn, FaceHolesAtXWithCOnLinuxcncLatheC) {
 }
 
 // The approach of a live tool at the C index is an XZ move (Y 0, C indexed): written as a
-// lathe's rapid; before any ROTABL, or off the X axis, it stays the milling-motion error.
+// lathe's rapid. Off the X axis it is milling (milling_motion.cc): X and C from the point's
+// radius and angle, and C back at its index before the hole.
 TEST(MillTurn, ALiveToolsXzMoveAtTheCIndexIsWritten) {
   std::string cl = kFaceHoles;
   cl.replace(cl.find("FROM/30,0,5"), 11, "RAPID\nGOTO/30,0,5");
@@ -264,10 +266,12 @@ TEST(MillTurn, ALiveToolsXzMoveAtTheCIndexIsWritten) {
   std::string off_axis = cl;
   off_axis.replace(off_axis.find("GOTO/30,0,5"), 11, "GOTO/30,2,5");
   Posted q = post(off_axis, load("linuxcnc-lathe-c"));
-  EXPECT_NE(q.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line 1) is "
-                         "not supported yet"),
+  EXPECT_EQ(q.errors, 0u) << q.diags;
+  // hypot(30, 2) = 30.06659 (X60.13319), atan2(2, 30) = 3.8141 degrees.
+  EXPECT_NE(q.nc.find("G0 C0.\nG0 X60.13319 Z5. C3.8141\nG0 C0.\n"
+                      "(hole at CL line 8: drilling at X60. C0. to Z-8.)\n"),
             std::string::npos)
-      << q.diags;
+      << q.nc;
 }
 
 // Haas G81 on the face at X (a diameter) with C clamped at its index (reference/millturn.md

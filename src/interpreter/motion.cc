@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interpreter/milling_motion.h"
 #include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
@@ -233,9 +234,11 @@ void goto_stmt(PostState& s, const Statement& st) {
   }
   // A live tool's hole cycle GOTOs are face holes (hole_goto.cc), its XZ moves at the C index
   // are a lathe's moves; its other motion is refused.
+  if (s.tool.mills() && !s.in_cycle) return milling_goto(s, st, p);  // milling_motion.cc
   const bool live_ok = s.tool.mills() && (s.in_cycle || live_xz_move(s, p));
   if (!live_ok && milling_motion_refused(s, st)) return;
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
+    if (s.hole_cycle && s.tool.mills()) end_milling(s, st, false);  // hole_live.cc turns C
     if (s.hole_cycle) hole_goto(s, st, p);
     return;
   }
@@ -278,7 +281,7 @@ void godlta_stmt(PostState& s, const Statement& st) {
     if (st.args.size() >= 3 && !number_arg(s, st, 2, "dZ", d.z)) return;
   }
   const Point3 p{s.pos->x + d.x, s.pos->y + d.y, s.pos->z + d.z};
-  if (milling_motion_refused(s, st)) return;
+  if (s.tool.mills()) return milling_goto(s, st, p);
   if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);
@@ -292,7 +295,7 @@ void circle_stmt(PostState& s, const Statement& st) {
       !number_arg(s, st, 6, "the radius", c.radius))
     return;
   c.loc = st.loc;
-  if (milling_motion_refused(s, st)) return;
+  if (s.tool.mills()) return milling_circle(s, st, c);
   frame_normal(s, st, Point3{c.ax, c.ay, c.az});
   // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
   const double axis[3] = {c.ax, c.ay, c.az};

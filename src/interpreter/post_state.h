@@ -82,6 +82,25 @@ struct CAxisState {
   std::optional<double> index;
 };
 
+// One straight piece of a live tool's milling in the part frame (Z the spindle axis, X/Y the
+// face plane, CL units), and the C index it was milled at: what verify checks the program's
+// X, Y, Z and C moves against (milling_motion.cc, verify/mill_verify.h).
+struct MillSegment {
+  uint32_t line = 0;  // the CL line of the motion
+  Point3 from, to;    // part frame
+  double index = 0;   // degrees
+  bool rapid = false;
+};
+
+// Face milling written so far (milling_motion.cc): the G17 plane and Y of a machine with Y, and
+// the inverse-time feed mode of XZC moves, as last written.
+struct MillState {
+  bool face_plane = false;    // codes.plane_face written, not plane_lathe since
+  double y = 0;               // Y as last written (output units)
+  bool inverse_time = false;  // codes.inverse_time in force
+  bool per_minute = false;    // codes.feed_per_min written for this tool's milling
+};
+
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number
 // and offset; tool-data words (TOOLNO, TPRINT, CUTTER, SWITCH, a `PPRINT TOOL:` comment) fill in
 // what they say. Read by the tool list and by whatever needs the tool's geometry.
@@ -169,6 +188,8 @@ struct PostState {
   ThreadSequence thread;                // the thread sequence being read, if any
   double clock_feed = -1;         // the feed in force for the clock, per minute (time_feed_rate)
   bool clock_feed_noted = false;  // the clock tool's feeds and speeds have the feed in force
+  MillState mill;                 // face milling of a live tool (milling_motion.cc)
+  std::vector<MillSegment> mill_path;  // every milling piece written, in order (verify)
 };
 
 // Diagnostics at statement `st` (its own line text is shown).

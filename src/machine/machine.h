@@ -141,6 +141,13 @@ struct Machine : ControlSettings {
   // the shortest way; kContinuous, a continuous angle (C360 is one turn more than C0).
   CRotation c_rotation = CRotation::kRollover;
   bool c_clw_increasing = false;  // a CLW turn (ROTABL/…,CLW) increases C (else decreases it)
+  // Face milling without Y (XZC, interpreter/milling_motion.cc): the chordal tolerance of the
+  // pieces a part-frame line is split into, output units; the feed of a move that turns C is
+  // written in inverse time (codes.inverse_time, G93) or as the combined feed of X, Z and C
+  // (degrees counted as output units).
+  double xzc_tolerance = 0.005;
+  bool xzc_inverse_time = false;
+  bool polar_interpolation = false;  // polar / cylindrical interpolation asked for (not written)
 
   // Cycle time (0: not known)
   double rapid_x = 0;           // per minute along X (as a radius), output units

@@ -34,6 +34,7 @@ constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};          // false, true
 constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};          // false, true
 constexpr Choice kCRotations[] = {{"rollover"}, {"continuous"}};  // CRotation order
 constexpr Choice kClwTurns[] = {{"decreasing"}, {"increasing"}};  // false, true
+constexpr Choice kXzcFeeds[] = {{"combined"}, {"inverse_time"}};  // false, true
 
 constexpr const char* kId = "Identity";
 constexpr const char* kCl = "CL frame";
@@ -208,7 +209,9 @@ constexpr KeySpec kLaterKeys[] = {
      "the main spindle positions as a C axis: ROTABL/a,…,CAXIS writes template c_index between "
      "codes c_engage/c_unclamp and c_clamp; without it such a ROTABL is an error"},
     {"millturn.y_axis", kMillTurn, kBool, &M::y_axis,
-     "the turret has a Y axis (milling motion in Y is not written yet: docs/millturn.md)"},
+     "the turret has a Y axis: a live tool's face milling is written in the face plane (codes "
+     "plane_face, plane_lathe) as X (diameter) Y Z moves and G2/G3 arcs at the C index; without "
+     "it the post computes X Z C (docs/millturn.md)"},
     {"millturn.face_holes", kMillTurn, kBool, &M::face_holes,
      "a live tool drills off the centre line on the face: a hole cycle's GOTO at (x, y) with "
      "the tool axis along Z is written by the hole_* templates at X = hypot(x, y) with C = the "
@@ -228,6 +231,22 @@ constexpr KeySpec kLaterKeys[] = {
      "what a CLW turn (ROTABL/…,CLW) does to C: `decreasing` (clockwise seen from +Z, the "
      "right-hand rule about +Z; inferred, as no CAM source states it) or `increasing`",
      0, 0, kClwTurns},
+    {"millturn.xzc_tolerance", kMillTurn, kNumber, &M::xzc_tolerance,
+     "face milling without Y (XZC): the largest distance, output units, between the part-frame "
+     "line of the CL and the path of the X, Z and C moves written for it (each CL line is split "
+     "into pieces within it; docs/millturn.md)",
+     1e-6, 10},
+    {"millturn.xzc_feed", kMillTurn, kChoice, &M::xzc_inverse_time,
+     "how the control takes F on a move that turns C (XZC): `inverse_time`, F is 1/minutes of "
+     "the move in code inverse_time (G93; LinuxCNC: rs274 completes the move in 1/F minutes); "
+     "`combined`, F per minute of the combined move of X (as a radius), Z and C (degrees counted "
+     "as length units; inferred for Fanuc, check the control's manual): written so that the tool "
+     "moves along the part at the CL's feed",
+     0, 0, kXzcFeeds},
+    {"millturn.polar_interpolation", kMillTurn, kBool, &M::polar_interpolation,
+     "polar (G12.1, G112, TRANSMIT) and cylindrical (G7.1, G107, TRACYL) interpolation: not "
+     "written yet, so true is an error at the first milling motion; false (the default), the post "
+     "computes XZC itself"},
     {"time.rapid_x", kTime, kNumber, &M::rapid_x,
      "rapid rate along X (as a radius), per minute, output units; 0: rapids are not timed", 0, 1e7},
     {"time.rapid_z", kTime, kNumber, &M::rapid_z,
@@ -287,6 +306,11 @@ constexpr NameSpec kLaterCodes[] = {
     {"c_disengage", "the C axis becomes the main spindle again (Haas M155), before it turns"},
     {"c_clamp", "C axis brake on (Haas M14), after C is positioned"},
     {"c_unclamp", "C axis brake off (Haas M15), before C moves"},
+    {"inverse_time",
+     "inverse time feed (G93), for the XZC moves that turn C with millturn.xzc_feed: "
+     "inverse_time; the next feed move writes feed_per_min again"},
+    {"plane_face", "the face plane (G17), before face milling in X Y (millturn.y_axis)"},
+    {"plane_lathe", "the lathe plane (G18), after face milling in X Y"},
     {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
     {"clamp_off", "CLAMP/OFF"},
 };

@@ -1,0 +1,19 @@
+#pragma once
+// A live tool's milling motion (milling_motion.cc, docs/millturn.md): GOTO, GODLTA and CIRCLE/
+// of a milling tool outside a hole cycle. The CL point is in the part frame (Z the spindle axis,
+// X/Y the face plane) turned by the C index (the last ROTABL): on a machine with Y it is written
+// as X (diameter) Y Z in the face plane at that C, without Y as X, Z and C computed by the post
+// (laws/xzc_law.h).
+#include "interpreter/post_state.h"
+
+namespace clpost {
+
+// A GOTO (or GODLTA) of a milling tool to part point `p`.
+void milling_goto(PostState& s, const Statement& st, Point3 p);
+// CIRCLE/ `c` with a milling tool: the arc of the next GOTO, about an axis along Z.
+void milling_circle(PostState& s, const Statement& st, const Circle& c);
+// Before a hole or a tool change: Y back to 0 and the lathe plane after face milling in Y; with
+// `c_back` (a hole) C back at its index after XZC moves, so that the hole is where the CL says.
+void end_milling(PostState& s, const Statement& st, bool c_back);
+
+}  // namespace clpost

@@ -1,0 +1,125 @@
+// A live tool's face milling (milling_motion.cc, docs/millturn.md): X Z C computed by the post
+// on machines without Y, X Y Z in G17 at the C index on haas-st-20y.
+#include <gtest/gtest.h>
+
+#include "interpreter/post_test_util.h"
+
+namespace clpost {
+namespace {
+
+using test::load;
+using test::post;
+using test::Posted;
+
+// A quarter circle of radius 10 about the centre at Z-1 (index 0), then a line through the
+// centre line from (0, 10) to (0, -10).
+constexpr const char* kQuarterAndSlot =
+    "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,0,2\n"
+    "FEDRAT/100,MMPM\nGOTO/10,0,-1\nCIRCLE/0,0,-1,0,0,1,10\nGOTO/0,10,-1\nGOTO/0,-10,-1\nFINI\n";
+
+// The arc (radius 10) as chords within half the tolerance (0.0025): 2.5 degrees each (sagitta
+// 10 (1 - cos 1.25°) = 0.00238), each one C move at X20. Fanuc takes F over the combined move
+// (degrees as mm): the chord is 20 sin 1.25° = 0.43630 mm at 100 mm/min, 0.0043630 min, the C
+// move 2.5 in that time: F573.0032. The slot through the centre: straight in at C90 to X0, C
+// turned 180 there in two steps (the shortest way of a rollover control), straight out at C270.
+TEST(MillingMotion, XzcArcAndCentreCrossingOnFanuc) {
+  Posted p = post(kQuarterAndSlot, load("fanuc-0i-tf-live"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C0.\nM73\nG0 X20. Z2.\nG1 Z-1. G98 F100.\nM74\n"
+                      "G1 X20. Z-1. C2.5 F573.0032\nG1 X20. Z-1. C5. F573.0032\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("G1 X20. Z-1. C90. F573.0032\nG1 X0. Z-1. G98 F100.\n"
+                      "G1 X0. Z-1. C180. F100.\nG1 X0. Z-1. C270. F100.\nG1 X20. Z-1. G98 F100.\n"
+                      "M30\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// LinuxCNC: G93, F = 1 / minutes of the chord: 100 / 0.43630 = 229.2013; a C turn on the centre
+// line at the feed read as degrees per minute (90 degrees: F1.1111); G94 again for the moves
+// that do not turn C (exact along X and Z).
+TEST(MillingMotion, XzcInInverseTimeOnLinuxcnc) {
+  Posted p = post(kQuarterAndSlot, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G1 Z-1. G94 F100.\nG93 G1 X20. Z-1. C2.5 F229.2013\n"
+                      "G1 X20. Z-1. C5. F229.2013\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("G1 X20. Z-1. C90. F229.2013\nG1 X0. Z-1. G94 F100.\n"
+                      "G93 G1 X0. Z-1. C180. F1.1111\nG1 X0. Z-1. C270. F1.1111\n"
+                      "G1 X20. Z-1. G94 F100.\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// A continuous C (LinuxCNC) keeps turning the same way: a second lap of the circle goes on from
+// C360 to C720, where a rollover control (Fanuc) writes 0 <= C < 360. A full circle of radius
+// 10 is 141 chords of 360/141 = 2.5532 degrees (20 sin 1.2766° = 0.44558 mm: G93 F224.427).
+TEST(MillingMotion, ContinuousCGoesOnRolloverCWraps) {
+  const std::string cl =
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,0,-1\n"
+      "FEDRAT/100,MMPM\nCIRCLE/0,0,-1,0,0,1,10\nGOTO/10,0,-1\nCIRCLE/0,0,-1,0,0,1,10\n"
+      "GOTO/10,0,-1\nFINI\n";
+  Posted l = post(cl, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(l.errors, 0u) << l.diags;
+  EXPECT_NE(l.nc.find("C360. F224.427\nG1 X20. Z-1. C362.5532 F224.427\n"), std::string::npos)
+      << l.nc;
+  EXPECT_NE(l.nc.find("C720. F224.427\nM2\n"), std::string::npos) << l.nc;
+  Posted f = post(cl, load("fanuc-0i-tf-live"));
+  EXPECT_EQ(f.errors, 0u) << f.diags;
+  EXPECT_NE(f.nc.find("C357.447 F573.0052\nG1 X20. Z-1. C0. F573.0051\nG1 X20. Z-1. C2.553 "),
+            std::string::npos)
+      << f.nc;
+  EXPECT_EQ(f.nc.find("C360."), std::string::npos) << f.nc;
+}
+
+// haas-st-20y: the face work in G17 at the C index (clamped), X a diameter, Y and Z as the
+// CL's; the arc (counter-clockwise about +Z) is G3 with I and J from its start; Y0 and G18 before
+// the tool change.
+TEST(MillingMotion, FaceMillingInXyzOnHaasSt20y) {
+  Posted p = post(kQuarterAndSlot, load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("M154\nM133 P2000\nG0 C0.\nM14\nG17\nG0 X20. Y0. Z2.\n"
+                      "G98 G1 X20. Y0. Z-1. F100.\nG3 X0. Y10. Z-1. I-10. J0. F100.\n"
+                      "G1 X0. Y-10. Z-1. F100.\nM30\n"),
+            std::string::npos)
+      << p.nc;
+  Posted q = post(std::string(kQuarterAndSlot)
+                      .replace(std::string(kQuarterAndSlot).find("FINI"), 4, "LOADTL/1\nFINI"),
+                  load("haas-st-20y"));
+  EXPECT_NE(q.nc.find("G1 X0. Y-10. Z-1. F100.\nG0 Y0.\nG18\nM135\nT0101\n"), std::string::npos)
+      << q.nc;
+}
+
+// What is not written: polar interpolation asked for, a feed per revolution without the live
+// tool's rpm, a CIRCLE/ about another axis: located errors, the tool's later motions not
+// reported again.
+TEST(MillingMotion, WhatIsNotWrittenIsALocatedError) {
+  Posted polar =
+      post(kQuarterAndSlot, load("fanuc-0i-tf-live", {"millturn.polar_interpolation=true"}));
+  EXPECT_EQ(polar.errors, 1u) << polar.diags;
+  EXPECT_NE(polar.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line "
+                             "1): machine 'fanuc-0i-tf-live' asks for polar or cylindrical "
+                             "interpolation (millturn.polar_interpolation: true), which clpost "
+                             "does not write yet"),
+            std::string::npos)
+      << polar.diags;
+  Posted axis = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,0,2\nFEDRAT/100,MMPM\n"
+      "CIRCLE/0,0,-1,1,0,0,10\nGOTO/0,10,-1\nFINI\n",
+      load("linuxcnc-lathe-c"));
+  EXPECT_NE(axis.diags.find("t.cl:7:1: error: milling motion with live tool 3 (loaded at line 1): "
+                            "CIRCLE/ about the axis (1, 0, 0), not the spindle axis"),
+            std::string::npos)
+      << axis.diags;
+  // Per revolution of the live tool: 0.05 x 2000 rpm = 100 mm/min, as the MMPM program.
+  std::string per_rev = kQuarterAndSlot;
+  per_rev.replace(per_rev.find("FEDRAT/100,MMPM"), 15, "FEDRAT/0.05,MMPR");
+  Posted rev = post(per_rev, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(rev.errors, 0u) << rev.diags;
+  EXPECT_NE(rev.nc.find("G93 G1 X20. Z-1. C2.5 F229.2013\n"), std::string::npos) << rev.nc;
+}
+
+}  // namespace
+}  // namespace clpost
