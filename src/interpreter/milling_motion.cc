@@ -47,18 +47,35 @@ bool can_mill(PostState& s, const Statement& st) {
   }
   if (s.m.cl_axial != ClAxis::kZ || !s.m.c_axis) {
     refuse(s, st,
-           fmt::format("face milling is read with CL Z the spindle axis (cl.axial_axis: z) on a "
+           fmt::format("milling is read with CL Z the spindle axis (cl.axial_axis: z) on a "
                        "machine with a C axis (millturn.c_axis), and machine '{}' has {}",
                        s.m.name, s.m.c_axis ? "another axial axis" : "no C axis"));
     return false;
   }
-  if (s.hole_axis_radial) {
+  if (s.hole_axis_radial && !s.m.y_axis) {
     refuse(s, st,
-           "the tool axis (GOTO i,j,k) is not along Z: milling on the peripheral surface (G19, "
-           "cylindrical interpolation) is not written yet, face milling (tool axis 0,0,1) is");
+           fmt::format("the tool axis (GOTO i,j,k) is not along Z, and machine '{}' has no Y "
+                       "axis: milling on the peripheral surface without Y (cylindrical "
+                       "interpolation) is not written yet, face milling (tool axis 0,0,1) is",
+                       s.m.name));
     return false;
   }
   return true;
+}
+
+// The side of the part the tool works on, as the turn of C from the index that brings its axis
+// onto the machine's (degrees): 0 for the face (tool axis 0,0,1), the axis's angle for a radial
+// tool (k 0: C turns it to +X, X its depth, Y across). None (reported) for another axis.
+std::optional<double> side_turn(PostState& s, const Statement& st) {
+  const Point3 t = s.tool_axis;
+  const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+  if (len > 0 && std::abs(t.z / len - 1) < 1e-6) return 0.0;
+  if (len > 0 && std::abs(t.z / len) < 1e-6) return std::atan2(t.y, t.x) * 180 / kPi;
+  refuse(s, st,
+         fmt::format("the tool axis ({}, {}, {}) is neither the face's (0,0,1) nor radial (k 0): "
+                     "a tilted or back-face live tool is not written",
+                     t.x, t.y, t.z));
+  return std::nullopt;
 }
 
 // The feed of a feed move per minute, output units: a feed per revolution is per revolution of
@@ -169,77 +186,168 @@ void xzc_move(PostState& s, Point3 from, Point3 to, double index, bool rapid, do
   }
 }
 
-// The straight move to part point `to` in the face plane (a machine with Y, C at the index):
-// X (diameter) Y Z, exact.
-void face_move(PostState& s, Point3 to, bool rapid, double feed) {
-  NcWriter& w = s.prog.writer();
-  if (!s.mill.face_plane) {
-    w.code(s.m.code("plane_face")).end_block();
-    s.mill.face_plane = true;
-  }
-  if (!rapid) per_minute_code(s, w);
-  w.code(s.m.code(rapid ? "rapid" : "linear"));
-  w.word("X", diameter_factor(s.m) * to.x).word("Y", to.y).word("Z", to.z);
-  if (!rapid) w.word("F", feed);
-  w.end_block();
-  s.mill.y = to.y;
-  s.prog.cycle_ended_at(LathePoint{to.x, to.z});
-  rapid ? time_rapid(s, Vec2{to.x, to.z}) : time_feed(s, Vec2{to.x, to.z});
+// Part point `p` in the machine's X Y Z with C turned `turn` degrees past the index: the
+// point turned back by `turn` (X as a radius).
+Point3 machine_xyz(Point3 p, double turn) {
+  const double a = -turn * kPi / 180, c = std::cos(a), n = std::sin(a);
+  return {p.x * c - p.y * n, p.x * n + p.y * c, p.z};
 }
 
-}  // namespace
+// The plane code `plane` (17, 18, 19) when another is in force.
+void plane_code(PostState& s, NcWriter& w, int plane) {
+  if (s.mill.plane == plane) return;
+  w.code(s.m.code(plane == 17   ? "plane_face"
+                  : plane == 19 ? "plane_side"
+                                : "plane_lathe"))
+      .end_block();
+  s.mill.plane = plane;
+}
 
-namespace {
+// The straight move to machine point `m` (a machine with Y, C set): X (diameter) Y Z, exact.
+void xyz_move(PostState& s, Point3 m, bool rapid, double feed, int plane) {
+  NcWriter& w = s.prog.writer();
+  plane_code(s, w, plane);
+  if (!rapid) per_minute_code(s, w);
+  w.code(s.m.code(rapid ? "rapid" : "linear"));
+  w.word("X", diameter_factor(s.m) * m.x).word("Y", m.y).word("Z", m.z);
+  if (!rapid) w.word("F", feed);
+  w.end_block();
+  s.mill.y = m.y;
+  s.prog.cycle_ended_at(LathePoint{m.x, m.z});
+  rapid ? time_rapid(s, Vec2{m.x, m.z}) : time_feed(s, Vec2{m.x, m.z});
+}
 
-// The arc of CIRCLE/ `c` (about Z, counter-clockwise seen from +Z when `ccw`) from `from` to
-// `to` as points on it, the chords within `tol` of it; the last is `to`.
-std::vector<Point3> arc_points(const Circle& c, Point3 from, Point3 to, bool ccw, double tol) {
-  const double r = std::hypot(from.x - c.cx, from.y - c.cy);
-  const double a0 = std::atan2(from.y - c.cy, from.x - c.cx);
-  const double a1 = std::atan2(to.y - c.cy, to.x - c.cx);
-  double sweep = ccw ? a1 - a0 : a0 - a1;
-  while (sweep <= 1e-9) sweep += 2 * kPi;  // the same point: a full circle
+// An arc or a helix in the part frame: about `axis` (a unit vector) through `center`, turning
+// `sense` (+1 positive about the axis, -1 negative), from `from` to `to` (its advance along
+// the axis linear).
+struct MillArc {
+  Point3 center, axis;
+  int sense = 1;
+  uint32_t line = 0;  // its CIRCLE/ or HELICAL/
+};
+
+Point3 sub(Point3 a, Point3 b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+double dot(Point3 a, Point3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+Point3 cross(Point3 a, Point3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Point3 along(Point3 a, double k) {
+  return {a.x * k, a.y * k, a.z * k};
+}
+Point3 add(Point3 a, Point3 b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+
+// The radius vector of `p` about the arc's axis, and its advance along it.
+Point3 radial_of(const MillArc& c, Point3 p, double& h) {
+  const Point3 u = sub(p, c.center);
+  h = dot(u, c.axis);
+  return sub(u, along(c.axis, h));
+}
+
+// Points on the arc from `from` to `to`, the chords within `tol` of it; the last is `to`. The
+// same point: a full turn.
+std::vector<Point3> arc_points(const MillArc& c, Point3 from, Point3 to, double tol) {
+  double h0 = 0, h1 = 0;
+  const Point3 r0 = radial_of(c, from, h0), r1 = radial_of(c, to, h1);
+  const double r = std::sqrt(dot(r0, r0));
+  double sweep = c.sense * std::atan2(dot(cross(r0, r1), c.axis), dot(r0, r1));
+  while (sweep <= 1e-9) sweep += 2 * kPi;
   const double step = tol < r ? 2 * std::acos(1 - tol / r) : kPi / 2;
   const int n = std::max(1, static_cast<int>(std::ceil(sweep / std::min(step, kPi / 2))));
+  const Point3 side = cross(c.axis, r0);
   std::vector<Point3> out;
   for (int k = 1; k < n; ++k) {
-    const double a = a0 + (ccw ? 1 : -1) * sweep * k / n;
-    out.push_back(
-        {c.cx + r * std::cos(a), c.cy + r * std::sin(a), from.z + (to.z - from.z) * k / n});
+    const double a = c.sense * sweep * k / n;
+    const Point3 rk = add(along(r0, std::cos(a)), along(side, std::sin(a)));
+    out.push_back(add(add(c.center, along(c.axis, h0 + (h1 - h0) * k / n)), rk));
   }
   out.push_back(to);
   return out;
 }
 
-// The arc of `c` to `to`: G2/G3 in the face plane with Y, lines within the tolerance without.
-void mill_arc(PostState& s, const Statement& st, const Circle& c, Point3 from, Point3 to,
-              double index, double feed) {
-  const double r0 = std::hypot(from.x - c.cx, from.y - c.cy);
-  const double r1 = std::hypot(to.x - c.cx, to.y - c.cy);
-  if (std::abs(r0 - r1) > std::max(1e-3, 1e-4 * r0))
+// The arc in the machine's plane (C turned `turn` past the index): G2/G3 with the two centre
+// words of the plane; false when its axis is along none of X, Y, Z there.
+bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn, double feed) {
+  const Point3 a = machine_xyz(c.axis, turn), m0 = machine_xyz(from, turn);
+  const Point3 m1 = machine_xyz(to, turn), mc = machine_xyz(c.center, turn);
+  const double n[3] = {a.x, a.y, a.z};
+  int axis = -1;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(std::abs(n[i]) - 1) < 1e-6) axis = i;
+  if (axis < 0) return false;
+  // G3 turns positively about the plane's normal (+Z in G17, +Y in G18, +X in G19: ISO 6983).
+  const bool ccw = c.sense * n[axis] > 0;
+  NcWriter& w = s.prog.writer();
+  plane_code(s, w, axis == 2 ? 17 : axis == 1 ? 18 : 19);
+  per_minute_code(s, w);
+  w.code(s.m.code(ccw ? "arc_ccw" : "arc_cw"));
+  w.word("X", diameter_factor(s.m) * m1.x).word("Y", m1.y).word("Z", m1.z);
+  if (axis != 0) w.word("I", mc.x - m0.x);
+  if (axis != 1) w.word("J", mc.y - m0.y);
+  if (axis != 2) w.word("K", mc.z - m0.z);
+  w.word("F", feed).end_block();
+  s.mill.y = m1.y;
+  s.prog.cycle_ended_at(LathePoint{m1.x, m1.z});
+  time_feed(s, Vec2{m1.x, m1.z});
+  return true;
+}
+
+// The arc `c` to `to`: G2/G3 in the machine's plane with Y, lines within the tolerance without.
+void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
+              double index, double feed, double turn) {
+  double h = 0;
+  const Point3 r0 = radial_of(c, from, h), r1 = radial_of(c, to, h);
+  const double d0 = std::sqrt(dot(r0, r0)), d1 = std::sqrt(dot(r1, r1));
+  if (std::abs(d0 - d1) > std::max(1e-3, 1e-4 * d0))
     return error(s, st, st.loc,
                  fmt::format("arc end point is not on the circle of line {}: distance from the "
-                             "centre {:.6g} at the start, {:.6g} at the end",
-                             c.loc.line, r0, r1));
-  const bool ccw = c.az > 0;  // positive rotation about +Z: G3 seen from +Z (G17)
+                             "axis {:.6g} at the start, {:.6g} at the end",
+                             c.line, d0, d1));
+  if (!s.m.y_axis && std::abs(std::abs(c.axis.z) - 1) > 1e-6)
+    return refuse(s, st, "an arc about another axis than the spindle's needs a Y axis");
   // Chords within half the tolerance, each piece within the other half: the segments verify
   // checks the program against.
-  const std::vector<Point3> points = arc_points(c, from, to, ccw, s.m.xzc_tolerance / 2);
+  const std::vector<Point3> points = arc_points(c, from, to, s.m.xzc_tolerance / 2);
   Point3 at = from;
   for (const Point3& p : points) {
     s.mill_path.push_back({st.loc.line, at, p, index, false});
     if (!s.m.y_axis) xzc_move(s, at, p, index, false, feed, s.m.xzc_tolerance / 2);
     at = p;
   }
-  if (!s.m.y_axis) return;
-  NcWriter& w = s.prog.writer();
-  per_minute_code(s, w);
-  w.code(s.m.code(ccw ? "arc_ccw" : "arc_cw"));
-  w.word("X", diameter_factor(s.m) * to.x).word("Y", to.y).word("Z", to.z);
-  w.word("I", c.cx - from.x).word("J", c.cy - from.y).word("F", feed).end_block();
-  s.mill.y = to.y;
-  s.prog.cycle_ended_at(LathePoint{to.x, to.z});
-  time_feed(s, Vec2{to.x, to.z});
+  if (s.m.y_axis && !xyz_arc(s, c, from, to, turn, feed))
+    refuse(s, st, "the arc's axis is along none of the machine's X, Y, Z at this C");
+}
+
+// Where a milling motion starts: checked, C set (at the index, or past it for a radial tool on
+// a machine with Y). False (reported, or nothing to write) when the motion is not written.
+struct MotionStart {
+  double index = 0, turn = 0, feed = 0;
+};
+bool start_motion(PostState& s, const Statement& st, bool rapid, MotionStart& ms) {
+  if (s.dntcut || !can_mill(s, st)) return false;
+  ensure_started(s);
+  ++s.stats.motions;
+  const std::optional<double> feed = rapid ? std::optional<double>(0) : mill_feed(s, st);
+  if (!feed) return false;
+  ms.feed = *feed;
+  ms.index = part_index(s, st);
+  if (s.m.y_axis) {
+    const std::optional<double> turn = side_turn(s, st);
+    if (!turn) return false;
+    ms.turn = *turn;
+  }
+  // C unknown, or a machine with Y: C where the work is first.
+  if ((!s.c.angle || s.m.y_axis) && !c_to(s, st, ms.index + ms.turn)) return false;
+  if (!s.pos && !rapid) {
+    error(s, st, st.loc, "a milling feed move needs a start point: no GOTO or FROM before it");
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -249,50 +357,94 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
   const bool rapid = s.rapid_next;
   s.circle.reset();
   s.rapid_next = false;
-  if (s.dntcut || !can_mill(s, st)) {
-    s.pos = p;  // DNTCUT: the position is tracked, nothing is written
-    return;
-  }
-  ensure_started(s);
-  ++s.stats.motions;
   if (rapid && circle)
     return error(s, st, st.loc,
                  fmt::format("RAPID before the GOTO of CIRCLE/ (line {}): an arc is cut at the "
                              "feed, there is no rapid arc",
                              circle->loc.line));
-  const std::optional<double> feed = rapid ? std::optional<double>(0) : mill_feed(s, st);
-  if (!feed) return;
-  const double index = part_index(s, st);
-  // C unknown, or a machine with Y: C at the index first.
-  if ((!s.c.angle || s.m.y_axis) && !c_to(s, st, index)) return;
-  if (!s.pos && !rapid)
-    return error(s, st, st.loc,
-                 "a milling feed move needs a start point: no GOTO or FROM before it");
+  MotionStart ms;
+  if (!start_motion(s, st, rapid, ms)) {
+    s.pos = p;  // DNTCUT: the position is tracked, nothing is written
+    return;
+  }
   const Point3 from = s.pos.value_or(p);
   s.pos = p;
-  if (circle) return mill_arc(s, st, *circle, from, p, index, *feed);
-  s.mill_path.push_back({st.loc.line, from, p, index, rapid});
-  if (s.m.y_axis) return face_move(s, p, rapid, *feed);
-  xzc_move(s, from, p, index, rapid, *feed, s.m.xzc_tolerance);
+  if (circle) {
+    const double len =
+        std::sqrt(dot({circle->ax, circle->ay, circle->az}, {circle->ax, circle->ay, circle->az}));
+    const MillArc arc{{circle->cx, circle->cy, circle->cz},
+                      along({circle->ax, circle->ay, circle->az}, 1 / len),
+                      1,
+                      circle->loc.line};
+    return mill_arc(s, st, arc, from, p, ms.index, ms.feed, ms.turn);
+  }
+  s.mill_path.push_back({st.loc.line, from, p, ms.index, rapid});
+  if (!s.m.y_axis) return xzc_move(s, from, p, ms.index, rapid, ms.feed, s.m.xzc_tolerance);
+  // The face's lines in G17; a radial tool's in the plane in force (its arcs choose theirs).
+  xyz_move(s, machine_xyz(p, ms.turn), rapid, ms.feed, s.hole_axis_radial ? s.mill.plane : 17);
 }
 
 void milling_circle(PostState& s, const Statement& st, const Circle& c) {
   if (!can_mill(s, st)) return;
   const double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
-  if (!(len > 0) || std::abs(std::abs(c.az) / len - 1) > 1e-6)
+  if (!(len > 0))
+    return refuse(s, st, fmt::format("CIRCLE/ with the axis ({}, {}, {})", c.ax, c.ay, c.az));
+  if (!s.m.y_axis && std::abs(std::abs(c.az) / len - 1) > 1e-6)
     return refuse(s, st,
-                  fmt::format("CIRCLE/ about the axis ({}, {}, {}), not the spindle axis: a live "
-                              "tool's arc is written in the face plane only",
+                  fmt::format("CIRCLE/ about the axis ({}, {}, {}), not the spindle axis: without "
+                              "a Y axis a live tool's arc is written in the face plane only",
                               c.ax, c.ay, c.az));
   s.circle = c;
 }
 
+namespace {
+
+// The words of HELICAL/ (CATIA): CENTER x,y,z, INDIRV i,j,k, AXIS i,j,k, END x,y,z (PITCH,
+// RADIUS, ANGLE, HEIGHT, ROUND are implied by them and not read).
+bool helical_words(PostState& s, const Statement& st, Point3& c, Point3& dir, Point3& axis,
+                   Point3& end) {
+  const auto three = [&](std::string_view word, Point3& out) {
+    for (size_t i = 0; i + 3 < st.args.size(); ++i)
+      if (st.args[i].is(word))
+        return number_arg(s, st, i + 1, word, out.x) && number_arg(s, st, i + 2, word, out.y) &&
+               number_arg(s, st, i + 3, word, out.z);
+    error(s, st, st.loc,
+          fmt::format("HELICAL/ without {} x,y,z: expected CENTER, INDIRV, AXIS and END", word));
+    return false;
+  };
+  return three("CENTER", c) && three("INDIRV", dir) && three("AXIS", axis) && three("END", end);
+}
+
+}  // namespace
+
+// HELICAL/CENTER,…,INDIRV,…,AXIS,…,END,… (CATIA): an arc (a helix when END moves along the
+// axis) from where the tool is to END, turning the way INDIRV starts it.
+void helical_stmt(PostState& s, const Statement& st) {
+  if (!s.tool.mills()) return unknown_stmt(s, st);
+  if (circle_waits(s, st)) return;
+  Point3 c, dir, axis, end;
+  if (!helical_words(s, st, c, dir, axis, end)) return;
+  const double len = std::sqrt(dot(axis, axis));
+  if (!(len > 0) || !s.pos)
+    return error(s, st, st.loc, "HELICAL/ needs an axis and a start point (a GOTO before it)");
+  MotionStart ms;
+  if (!start_motion(s, st, false, ms)) return;
+  MillArc arc{c, along(axis, 1 / len), 1, st.loc.line};
+  double h = 0;
+  arc.sense = dot(cross(arc.axis, radial_of(arc, *s.pos, h)), dir) >= 0 ? 1 : -1;
+  const Point3 from = *s.pos;
+  s.pos = end;
+  mill_arc(s, st, arc, from, end, ms.index, ms.feed, ms.turn);
+}
+
 void end_milling(PostState& s, const Statement& st, bool c_back) {
-  if (s.mill.face_plane) {
+  if (s.mill.plane != 18) {
     NcWriter& w = s.prog.writer();
     if (s.mill.y != 0) w.code(s.m.code("rapid")).word("Y", 0.0).end_block();
     w.code(s.m.code("plane_lathe")).end_block();
     s.prog.forget_modal();
+  } else if (s.mill.y != 0) {
+    s.prog.writer().code(s.m.code("rapid")).word("Y", 0.0).end_block();
   }
   s.mill = MillState{};
   if (c_back && s.c.index && s.c.angle) c_to(s, st, *s.c.index);

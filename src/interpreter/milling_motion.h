@@ -12,6 +12,9 @@ namespace clpost {
 void milling_goto(PostState& s, const Statement& st, Point3 p);
 // CIRCLE/ `c` with a milling tool: the arc of the next GOTO, about an axis along Z.
 void milling_circle(PostState& s, const Statement& st, const Circle& c);
+// HELICAL/ (CATIA) with a milling tool: an arc or a helix about any axis; without a milling
+// tool the comment an unknown statement is.
+void helical_stmt(PostState& s, const Statement& st);
 // Before a hole or a tool change: Y back to 0 and the lathe plane after face milling in Y; with
 // `c_back` (a hole) C back at its index after XZC moves, so that the hole is where the CL says.
 void end_milling(PostState& s, const Statement& st, bool c_back);

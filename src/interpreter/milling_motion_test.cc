@@ -123,3 +123,42 @@ TEST(MillingMotion, WhatIsNotWrittenIsALocatedError) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// A radial live tool (tool axis 1,0,0) on haas-st-20y: C stays at the index (the axis is +X
+// already), X is the depth (diameter), Y across; CATIA's HELICAL/ of MillTurn3x_PATH1 (lines
+// 83-87: about the X axis, radius 0.75, 180 degrees from Y0.75 to Y-0.75, X 0.00737 deeper,
+// INDIRV +Z at the start: positive about +X) is G3 in G19 with J and K from its start.
+TEST(MillingMotion, RadialToolAndCatiaHelicalOnHaasSt20y) {
+  const std::string cl =
+      "LOADTL/3,MILL\nSPINDL/3000,RPM,CLW\nFEDRAT/150,MMPM\nRAPID\nGOTO/9.42906,0.75,3,1,0,0\n"
+      "GOTO/3.92323,0.75,3.0,1,0,0\n"
+      "HELICAL/CENTER,3.92323,0.00000,3.00000,INDIRV,0.00000,0.00000,1.00000,AXIS,1.00000,"
+      "0.00000,0.00000,PITCH,0.01474,RADIUS,0.75000,ANGLE,180.00000,HEIGHT,0.00737,ROUND,"
+      "0.50000,END,3.91586,-0.75000,3.00000\n"
+      "GOTO/3.90178,-0.75,1.5,1,0,0\nLOADTL/1\nFINI\n";
+  Posted p = post(cl, load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C0.\nM14\nG0 X18.858 Y0.75 Z3.\nG98 G1 X7.846 Y0.75 Z3. F150.\nG19\n"
+                      "G3 X7.832 Y-0.75 Z3. J-0.75 K0. F150.\nG1 X7.804 Y-0.75 Z1.5 F150.\n"
+                      "G0 Y0.\nG18\nM135\n"),
+            std::string::npos)
+      << p.nc;
+  // The tool from the other side (tool axis -1,0,0, as linear_3x_PATH2's tool 33): C turns 180
+  // past the index and the point is turned back: GOTO/-3.92906,0.1,z is X7.858 Y-0.1.
+  Posted q = post(
+      "LOADTL/3,MILL\nSPINDL/3000,RPM,CLW\nROTABL/0,CAXIS\nFEDRAT/150,MMPM\nRAPID\n"
+      "GOTO/-9.42906,0,-2.78441,-1,0,0\nGOTO/-3.92906,0.1,-2.78441,-1,0,0\nFINI\n",
+      load("haas-st-20y"));
+  EXPECT_EQ(q.errors, 0u) << q.diags;
+  // (A rollover control turns 180 degrees in two steps of 90, the way the shortest is.)
+  EXPECT_NE(q.nc.find("G0 C0.\nM14\nM15\nG0 C90.\nG0 C180.\nM14\nG0 X18.858 Y0. Z-2.784\n"
+                      "G98 G1 X7.858 Y-0.1 Z-2.784 F150.\n"),
+            std::string::npos)
+      << q.nc;
+}
+
+}  // namespace
+}  // namespace clpost

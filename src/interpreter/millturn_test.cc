@@ -151,9 +151,10 @@ TEST(MillTurn, LiveToolLimitsAndMillingMotionAreLocatedErrors) {
       << p.diags;
   // One error for the tool's motions, at the first: peripheral milling (milling_motion.cc).
   EXPECT_NE(p.diags.find("t.cl:4:1: error: milling motion with live tool 3 (loaded at line 1): "
-                         "the tool axis (GOTO i,j,k) is not along Z: milling on the peripheral "
-                         "surface (G19, cylindrical interpolation) is not written yet, face "
-                         "milling (tool axis 0,0,1) is (docs/millturn.md)"),
+                         "the tool axis (GOTO i,j,k) is not along Z, and machine 'haas-st' has no "
+                         "Y axis: milling on the peripheral surface without Y (cylindrical "
+                         "interpolation) is not written yet, face milling (tool axis 0,0,1) is "
+                         "(docs/millturn.md)"),
             std::string::npos)
       << p.diags;
   EXPECT_NE(p.diags.find("t.cl:6:11: error: ROTABL/…,BAXIS: a lathe's rotary axis is C; machine "

@@ -234,7 +234,12 @@ void goto_stmt(PostState& s, const Statement& st) {
   }
   // A live tool's hole cycle GOTOs are face holes (hole_goto.cc), its XZ moves at the C index
   // are a lathe's moves; its other motion is refused.
-  if (s.tool.mills() && !s.in_cycle) return milling_goto(s, st, p);  // milling_motion.cc
+  // A live tool's motion is milling (milling_motion.cc), but the radial drill's approach along X
+  // at Y 0 (live_xz_move), the lathe's XZ move; with Y, a tool from the -X side is milling (C
+  // turns it to the turret's side).
+  const bool radial_approach =
+      s.hole_axis_radial && live_xz_move(s, p) && (!s.m.y_axis || s.tool_axis.x > 0);
+  if (s.tool.mills() && !s.in_cycle && !radial_approach) return milling_goto(s, st, p);
   const bool live_ok = s.tool.mills() && (s.in_cycle || live_xz_move(s, p));
   if (!live_ok && milling_motion_refused(s, st)) return;
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/

@@ -95,7 +95,7 @@ struct MillSegment {
 // Face milling written so far (milling_motion.cc): the G17 plane and Y of a machine with Y, and
 // the inverse-time feed mode of XZC moves, as last written.
 struct MillState {
-  bool face_plane = false;    // codes.plane_face written, not plane_lathe since
+  int plane = 18;             // the plane in force: 17 (plane_face), 19 (plane_side), 18
   double y = 0;               // Y as last written (output units)
   bool inverse_time = false;  // codes.inverse_time in force
   bool per_minute = false;    // codes.feed_per_min written for this tool's milling

@@ -309,8 +309,11 @@ constexpr NameSpec kLaterCodes[] = {
     {"inverse_time",
      "inverse time feed (G93), for the XZC moves that turn C with millturn.xzc_feed: "
      "inverse_time; the next feed move writes feed_per_min again"},
-    {"plane_face", "the face plane (G17), before face milling in X Y (millturn.y_axis)"},
-    {"plane_lathe", "the lathe plane (G18), after face milling in X Y"},
+    {"plane_face", "the face plane (G17), before milling in X Y (millturn.y_axis)"},
+    {"plane_lathe", "the lathe plane (G18), after milling in X Y, and for arcs about Y"},
+    {"plane_side",
+     "the plane across the part (G19, Y Z), for arcs of peripheral milling "
+     "(a radial tool, millturn.y_axis)"},
     {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
     {"clamp_off", "CLAMP/OFF"},
 };
