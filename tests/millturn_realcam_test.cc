@@ -22,19 +22,22 @@ TEST(MillTurnRealcam, Linear3xPath2PostsAndVerifiesOnHaasSt20y) {
   const std::string dir = temp_dir(), nc = dir + "/p2.nc";
   RunResult r = run(quote(clpost_bin()) + kRaised + "--verify -o " + quote(nc) + " " + quote(cl));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE((r.out + r.err).find("motions: "), std::string::npos) << r.out << r.err;
+  // verify checks the milling: every CL point reached, every feed move on the CL path.
+  EXPECT_NE((r.out + r.err)
+                .find("ok: every CL point reached in order and every feed move on the "
+                      "CL path, within 0.006"),
+            std::string::npos)
+      << r.out << r.err;
   const std::string out = read_file(nc);
   // The face tool 35: G17, the zig-zag across the centre line (X -2.9 .. 2.9 diameter, Y +-0.1)
   // at C0 (no ROTABL: noted).
-  EXPECT_NE(out.find("M133 P15000\nG0 C0.\nM14\nG17\nG0 X0.072 Y0. Z5.5\n"),
-            std::string::npos)
+  EXPECT_NE(out.find("M133 P15000\nG0 C0.\nM14\nG17\nG0 X0.072 Y0. Z5.5\n"), std::string::npos)
       << out;
   EXPECT_NE(out.find("G1 X-2.9 Y0.1 Z-0.017 F150.\nG1 X-2.9 Y-0.1 Z-0.02 F150.\n"),
             std::string::npos);
   // The radial tool 33 (tool axis -1,0,0): C180, X the depth: GOTO/-9.42906,0,-2.78441 is
   // X18.858.
-  EXPECT_NE(out.find("M133 P15000\nG0 C180.\nM14\nG0 X18.858 Y0. Z-2.784\n"),
-            std::string::npos)
+  EXPECT_NE(out.find("M133 P15000\nG0 C180.\nM14\nG0 X18.858 Y0. Z-2.784\n"), std::string::npos)
       << out;
   EXPECT_NE(r.err.find("linear_3x_PATH2.aptsource:64:1: note: no ROTABL/ since C was engaged: "
                        "the milling is written with the part frame's X axis at C0"),

@@ -328,7 +328,7 @@ TEST(Verify, StreamedThreadsReportAsTheWholeProgram) {
   replace_nth_line(program, " G33 ", 148, "G33 Z-28.831 F2.5");
   replace_nth_line(program, " G33 ", 450, "");
   reader::LineSource src{std::string_view(program)};
-  const ClExpected expected{posted.summary.holes, posted.summary.path};
+  const ClExpected expected{posted.summary.holes, posted.summary.path, posted.summary.mill};
   const VerifyOutcome whole = verify_program(src, "t.nc", posted.plans, &expected, "t.cl", m, 0);
 
   ProgramStream stream("t.nc", "t.cl", m, 0);
@@ -336,7 +336,8 @@ TEST(Verify, StreamedThreadsReportAsTheWholeProgram) {
   for (const ThreadPlan& p : posted.plans) stream.plan(p);
   const ClPath& path = posted.summary.path;
   for (const ClMotion& c : path.motions) stream.cl_motion(c, path.states[c.state]);
-  const VerifyOutcome streamed = stream.finish(posted.summary.holes, path.states.size());
+  const VerifyOutcome streamed =
+      stream.finish(posted.summary.holes, posted.summary.mill, path.states.size());
 
   EXPECT_FALSE(whole.ok);
   EXPECT_NE(whole.report.find(": 100 threads, 500 passes planned, 499 cut\n"), std::string::npos)
@@ -375,7 +376,7 @@ TEST(Verify, StreamedBlockDeleteRunReportsAsTheWholeProgram) {
   ASSERT_NE(at, std::string::npos) << program.substr(program.size() - 200);
   program.replace(at, right.size(), " Z-10.\n");
   reader::LineSource src{std::string_view(program)};
-  const ClExpected expected{posted.summary.holes, posted.summary.path};
+  const ClExpected expected{posted.summary.holes, posted.summary.path, posted.summary.mill};
   const VerifyOutcome whole = verify_program(src, "t.nc", {}, &expected, "t.cl", m, 0);
   EXPECT_FALSE(whole.ok);
   EXPECT_EQ(whole.errors, 1u);
@@ -396,7 +397,8 @@ TEST(Verify, StreamedBlockDeleteRunReportsAsTheWholeProgram) {
     if (!cl_first) stream.program_text(program);
     for (const ClMotion& c : path.motions) stream.cl_motion(c, path.states[c.state]);
     if (cl_first) stream.program_text(program);
-    const VerifyOutcome streamed = stream.finish(posted.summary.holes, path.states.size());
+    const VerifyOutcome streamed =
+        stream.finish(posted.summary.holes, posted.summary.mill, path.states.size());
     EXPECT_EQ(streamed.ok, whole.ok) << cl_first;
     EXPECT_EQ(streamed.report, whole.report) << cl_first;
     EXPECT_EQ(streamed.diagnostics, whole.diagnostics) << cl_first;
@@ -426,7 +428,7 @@ TEST(Verify, ProgramReadIntoTheStreamReportsAsTheWholeProgram) {
     std::string crlf;
     for (char c : program) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
     reader::LineSource whole_src{std::string_view(crlf)};
-    const ClExpected expected{posted.summary.holes, posted.summary.path};
+    const ClExpected expected{posted.summary.holes, posted.summary.path, posted.summary.mill};
     const VerifyOutcome whole =
         verify_program(whole_src, "t.nc", posted.plans, &expected, "t.cl", m, 0);
     EXPECT_FALSE(whole.ok);
@@ -438,7 +440,8 @@ TEST(Verify, ProgramReadIntoTheStreamReportsAsTheWholeProgram) {
     for (const ClMotion& c : path.motions) stream.cl_motion(c, path.states[c.state]);
     reader::LineSource src{std::string_view(crlf)};
     stream.program_lines(src);
-    const VerifyOutcome streamed = stream.finish(posted.summary.holes, path.states.size());
+    const VerifyOutcome streamed =
+        stream.finish(posted.summary.holes, posted.summary.mill, path.states.size());
     EXPECT_EQ(streamed.ok, whole.ok);
     EXPECT_EQ(streamed.report, whole.report);
     EXPECT_EQ(streamed.diagnostics, whole.diagnostics);

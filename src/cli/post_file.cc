@@ -72,6 +72,7 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
     };
   PostSummary summary = post(reader, *req.machine, sink, diags, options, on_thread);
   out.holes = std::move(summary.holes);
+  out.mill = std::move(summary.mill);
   out.outputs = std::move(summary.outputs);
   out.partno = std::move(summary.partno);
   out.path = std::move(summary.path);
@@ -87,7 +88,7 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
 // error on the CL file says so).
 bool verify_posted(ProgramStream& verify, Diagnostics& diags, PostOutcome& out,
                    std::string& verify_diagnostics) {
-  VerifyOutcome v = verify.finish(out.holes, out.path.state_count);
+  VerifyOutcome v = verify.finish(out.holes, out.mill, out.path.state_count);
   out.verify_report = std::move(v.report);
   out.path = {};  // compared: a batch keeps every outcome
   verify_diagnostics = std::move(v.diagnostics);

@@ -42,6 +42,7 @@ struct PostOutcome {
   size_t bytes_out = 0;
   std::string verify_report;        // with PostRequest::verify
   std::vector<Hole> holes;          // the holes written (CYCLE/DRILL …), for verify
+  std::vector<MillSegment> mill;    // a live tool's milling (docs/millturn.md), for verify
   std::vector<OutputUsed> outputs;  // the output of each thread, hole, undercut (clpost sheet)
   std::string partno;               // PARTNO's text (clpost sheet)
   CycleTime cycle_time;             // the tool list and estimated cycle time

@@ -67,7 +67,7 @@ VerifyOutcome verify_against_cl(const std::string& program, const std::string& c
   stream.program_lines(src);
   // The CL file's own notes and warnings were shown when it was posted; verify is about the
   // program.
-  return stream.finish(posted.holes, posted.path.state_count);
+  return stream.finish(posted.holes, posted.mill, posted.path.state_count);
 }
 
 }  // namespace

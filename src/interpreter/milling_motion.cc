@@ -315,7 +315,7 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
   const std::vector<Point3> points = arc_points(c, from, to, s.m.xzc_tolerance / 2);
   Point3 at = from;
   for (const Point3& p : points) {
-    s.mill_path.push_back({st.loc.line, at, p, index, false});
+    s.mill_path.push_back({st.loc.line, part(at), part(p), index, false});
     if (!s.m.y_axis) xzc_move(s, at, p, index, false, feed, s.m.xzc_tolerance / 2);
     at = p;
   }
@@ -378,7 +378,7 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                       circle->loc.line};
     return mill_arc(s, st, arc, from, p, ms.index, ms.feed, ms.turn);
   }
-  s.mill_path.push_back({st.loc.line, from, p, ms.index, rapid});
+  s.mill_path.push_back({st.loc.line, part(from), part(p), ms.index, rapid});
   if (!s.m.y_axis) return xzc_move(s, from, p, ms.index, rapid, ms.feed, s.m.xzc_tolerance);
   // The face's lines in G17; a radial tool's in the plane in force (its arcs choose theirs).
   xyz_move(s, machine_xyz(p, ms.turn), rapid, ms.feed, s.hole_axis_radial ? s.mill.plane : 17);

@@ -80,6 +80,7 @@ PostSummary PostRun::end(bool reader_gave_up, uint32_t last_line, size_t bytes_i
   summary.units = interp_.units();
   summary.bytes_in = bytes_in;
   summary.holes = interp_.take_holes();
+  summary.mill = interp_.take_mill();
   summary.outputs = interp_.take_outputs();
   summary.partno = interp_.partno();
   summary.cycle_time = interp_.cycle_time();

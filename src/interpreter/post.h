@@ -26,6 +26,7 @@ struct PostSummary {
   LengthUnit units = LengthUnit::kMm;  // of the CL file (its last UNITS/, else the machine's)
   size_t bytes_in = 0;
   std::vector<Hole> holes;          // every hole on the spindle axis written, in order (verify)
+  std::vector<MillSegment> mill;    // a live tool's milling, in the part frame (verify)
   std::vector<OutputUsed> outputs;  // the output each thread, hole and undercut is written by
   std::string partno;               // PARTNO's text
   CycleTime cycle_time;             // the tool list and estimated cycle time (cycle_time.h)

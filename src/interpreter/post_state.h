@@ -14,6 +14,7 @@
 #include "interpreter/cycle_time.h"
 #include "interpreter/hole_cycle.h"
 #include "interpreter/thread_sequence.h"
+#include "laws/xzc_law.h"
 #include "machine/machine.h"
 #include "planner/thread_plan.h"
 #include "reader/statement.h"
@@ -80,16 +81,6 @@ struct CAxisState {
   // The last ROTABL's angle: the part frame is turned by it (a hole off the X axis is at this
   // index plus its own angle, hole_live.cc), while C may have moved on to a hole.
   std::optional<double> index;
-};
-
-// One straight piece of a live tool's milling in the part frame (Z the spindle axis, X/Y the
-// face plane, CL units), and the C index it was milled at: what verify checks the program's
-// X, Y, Z and C moves against (milling_motion.cc, verify/mill_verify.h).
-struct MillSegment {
-  uint32_t line = 0;  // the CL line of the motion
-  Point3 from, to;    // part frame
-  double index = 0;   // degrees
-  bool rapid = false;
 };
 
 // Face milling written so far (milling_motion.cc): the G17 plane and Y of a machine with Y, and

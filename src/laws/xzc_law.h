@@ -5,6 +5,7 @@
 // into pieces, each moving X, Z and C together (linearly, as the control interpolates them),
 // whose chordal error from the line stays within a tolerance. Pure geometry: the interpreter
 // writes the pieces (interpreter/milling_motion.cc), verify maps X and C back.
+#include <cstdint>
 #include <vector>
 
 namespace clpost {
@@ -12,6 +13,17 @@ namespace clpost {
 // A point of the part frame (CL units).
 struct PartPoint {
   double x = 0, y = 0, z = 0;
+};
+
+// One straight piece of a live tool's milling in the part frame (CL units) and the C index it
+// was milled at (degrees): what verify checks the program's X, Y, Z and C moves against
+// (interpreter/milling_motion.cc, verify/mill_verify.h). An arc is its chords, each with the
+// arc's CL line.
+struct MillSegment {
+  uint32_t line = 0;  // the CL line of the motion
+  PartPoint from, to;
+  double index = 0;
+  bool rapid = false;
 };
 
 // A point as the XZC machine reaches it: `r` the radius (>= 0), `c` the C angle in degrees as a

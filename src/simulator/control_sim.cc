@@ -369,6 +369,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   if (settings_block(s, b, c) || cycle_block(s, b, c)) return;
   const Code* motion_code = motion_of(s, b, c);
   if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);
+  if (s.m.c_axis) sim::mill_move(s, b);
   const NcWord* x = b.find("X");
   const NcWord* z = b.find("Z");
   if (x == nullptr && z == nullptr) return;

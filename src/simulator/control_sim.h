@@ -56,6 +56,17 @@ struct SimHole {
   std::optional<double> lead;     // a tap's lead, when the cycle says it
 };
 
+// A move of a machine with C (millturn.c_axis) in X, Y, Z and C, as read: where it ends, so
+// that verify maps it back to the part frame (verify/mill_verify.h, docs/millturn.md).
+struct SimMillMove {
+  uint32_t line = 0;
+  std::string line_text;
+  bool rapid = false;
+  bool arc = false;            // G2/G3: checked at its end
+  double x = 0, y = 0, z = 0;  // X a radius
+  double c = 0;                // degrees, as written (0 before any C)
+};
+
 struct Simulation {
   LengthUnit units = LengthUnit::kMm;
   Toolpath path;            // every move (only when SimOptions::keep_moves)
@@ -63,7 +74,8 @@ struct Simulation {
   size_t blocks = 0;        // NC lines read
   int calls = 0;            // cycle calls expanded
   std::vector<SimHole> holes;
-  size_t deleted_blocks = 0;  // blocks marked optional ('/'), which block delete skips
+  std::vector<SimMillMove> mill_moves;  // a machine with C: every move in X, Y, Z or C
+  size_t deleted_blocks = 0;            // blocks marked optional ('/'), which block delete skips
   std::pair<uint32_t, std::string> first_optional;  // the first one's line and text
   // With SimOptions::block_delete_too and optional blocks: the run with block delete on (one).
   std::vector<Simulation> with_block_delete;

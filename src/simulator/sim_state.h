@@ -138,6 +138,7 @@ struct State {
   PendingCycle pending;                 // a multi-block cycle being read (its control's read-back)
   G92Modal g92;
   std::optional<double> c;  // the C axis (millturn.c_axis) as last written, degrees
+  double y = 0;             // Y as last written (milling on a machine with Y)
   bool hole_open = false;   // out.holes.back() is followed move by move (a "hole at" comment)
   int plane = 18;           // the plane selected last (G17, G18, G19): which axis a hole drills
   CutState cut;             // feed mode, spindle and tool as the program last stated them
@@ -166,6 +167,8 @@ struct State {
 // Holes (hole_cycles.cc): a "hole at CL line N" comment opens a hole followed move by move;
 // a block of one of the machine's hole_* templates is that hole's cycle, expanded.
 void hole_comment(State& s, const NcBlock& b);
+// On a machine with C: a motion block's end in X, Y, Z and C into out.mill_moves (mill_moves.cc).
+void mill_move(State& s, const NcBlock& b);
 // The feed mode, spindle and tool words of `b` into s.cut (modal_words.cc).
 void read_modal_words(State& s, const NcBlock& b, const ModalWords& w);
 bool hole_cycle_block(State& s, const NcBlock& b);

@@ -15,6 +15,7 @@
 
 #include "interpreter/cl_motion.h"
 #include "laws/hole_law.h"
+#include "laws/xzc_law.h"
 #include "simulator/toolpath.h"
 #include "support/diagnostics.h"
 #include "support/ring.h"
@@ -26,6 +27,7 @@ namespace clpost {
 struct ClExpected {
   std::vector<Hole> holes;
   ClPath path;
+  std::vector<MillSegment> mill;  // a live tool's milling (verify/mill_verify.h)
 };
 
 struct PathReport {

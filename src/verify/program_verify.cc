@@ -6,6 +6,7 @@
 
 #include "simulator/control_sim.h"
 #include "verify/hole_verify.h"
+#include "verify/mill_verify.h"
 #include "verify/verify.h"
 
 namespace clpost {
@@ -63,15 +64,16 @@ void report_block_delete(size_t on, VerifyOutcome& out) {
 // The program, read: its thread cuts against the plans by `threads(report)` (true: as
 // planned); with `holes` (the CL's), its holes, then its path by `path()` (its problems last).
 template <typename Threads, typename Path>
-void compare(const Simulation& sim, const std::vector<Hole>* holes, const Machine& m,
-             const VerifyOptions& vo, Diagnostics& diags, VerifyOutcome& out, Threads&& threads,
-             Path&& path) {
+void compare(const Simulation& sim, const std::vector<Hole>* holes,
+             const std::vector<MillSegment>* mill, const Machine& m, const VerifyOptions& vo,
+             Diagnostics& diags, VerifyOutcome& out, Threads&& threads, Path&& path) {
   out.ok = threads(out.report);
   if (holes != nullptr) {
     const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
+    const MillReport mr = verify_milling(*mill, sim.mill_moves, m, vo, diags);
     const PathReport pr = path();
-    out.ok = out.ok && hr.problems == 0 && pr.problems == 0;
-    out.report += hr.text + pr.text;
+    out.ok = out.ok && hr.problems == 0 && mr.problems == 0 && pr.problems == 0;
+    out.report += hr.text + mr.text + pr.text;
   }
 }
 
@@ -117,7 +119,7 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
       text = verify_report_text(report, plans, program_name, m, vo);
       return ok;
     };
-    compare(sim, cl ? &cl->holes : nullptr, m, vo, diags, out, threads,
+    compare(sim, cl ? &cl->holes : nullptr, cl ? &cl->mill : nullptr, m, vo, diags, out, threads,
             [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
     if (cl != nullptr && std::none_of(cl->path.motions.begin(), cl->path.motions.end(),
                                       [](const ClMotion& c) { return c.optional; }))
@@ -237,12 +239,13 @@ void ProgramStream::plan(const ThreadPlan& p) {
   threads_.plan(p, out_.cuts);
 }
 
-VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes, size_t cl_states) {
+VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes,
+                                    const std::vector<MillSegment>& mill, size_t cl_states) {
   if (!partial_.empty()) line(++number_, partial_);
   VerifyOutcome out;
   if (!stopped_ && sim_.finish()) {
     compare(
-        out_, &holes, m_, vo_, diags_, out,
+        out_, &holes, &mill, m_, vo_, diags_, out,
         [&](std::string& text) { return threads_.finish(out_.cuts, name_, diags_, text); },
         [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
     if (motions_ > 0 && !optional_motions_) optional_without_opskip(out_, diags_, out);

@@ -50,7 +50,8 @@ class ProgramStream {
   // A thread's plan, as it is planned.
   void plan(const ThreadPlan& p);
   // Both ended: the outcome. `cl_states`: the states the CL made (ClPath::state_count).
-  VerifyOutcome finish(const std::vector<Hole>& holes, size_t cl_states);
+  VerifyOutcome finish(const std::vector<Hole>& holes, const std::vector<MillSegment>& mill,
+                       size_t cl_states);
 
  private:
   // Moves the path is compared ahead in: far more than a program's moves can run ahead of the

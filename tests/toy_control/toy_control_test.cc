@@ -56,7 +56,7 @@ TEST(ToyControl, PostsItsCycleAndVerifies) {
   EXPECT_NE(posted.program.find("G177 X17.6 Z-20. K2. F2.\n"), std::string::npos) << posted.program;
 
   reader::LineSource src{std::string_view(posted.program)};
-  const ClExpected expected{posted.summary.holes, posted.summary.path};
+  const ClExpected expected{posted.summary.holes, posted.summary.path, posted.summary.mill};
   const VerifyOutcome v =
       verify_program(src, "toy.nc", posted.plans, &expected, "toy.cl", m, 0.001);
   EXPECT_TRUE(v.ok) << v.report << v.diagnostics;

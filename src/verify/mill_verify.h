@@ -1,0 +1,27 @@
+#pragma once
+// Verify of a live tool's milling (docs/millturn.md): the program's moves in X, Y, Z and C
+// (simulator/control_sim.h SimMillMove) mapped back to the part (X the radius at angle C, Y
+// across: the point turned by C) against the CL's milling in the part frame turned by its C
+// index (laws/xzc_law.h MillSegment): every CL point reached in order, and every feed move,
+// sampled as the control moves (X, Y, Z and C linear), within the tolerance of the CL path.
+#include <string>
+#include <vector>
+
+#include "laws/xzc_law.h"
+#include "simulator/control_sim.h"
+#include "support/diagnostics.h"
+#include "verify/verify.h"
+
+namespace clpost {
+
+struct MillReport {
+  std::string text;     // the report's lines ("" without milling)
+  size_t problems = 0;  // CL motions not reached or left
+};
+
+// The tolerance: the verify tolerance, and the machine's xzc_tolerance plus the written
+// numbers' rounding. Every problem is also an error in `nc_diags` at the program's line.
+MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<SimMillMove>& nc,
+                          const Machine& m, const VerifyOptions& options, Diagnostics& nc_diags);
+
+}  // namespace clpost

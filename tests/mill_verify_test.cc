@@ -1,0 +1,85 @@
+// verify of a live tool's milling (verify/mill_verify.h, docs/millturn.md): the program's X, Y,
+// Z and C mapped back to the part against the CL's milling in the part frame turned by its C
+// index (tests/data/millturn-face-mill.apt: a square, an arc and a slot through the centre at
+// C index 30).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "test_util.h"
+
+namespace clpost::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kCl = source_dir() + "/tests/data/millturn-face-mill.apt";
+
+// Posted with --verify on the three live machines: every CL point reached, every feed move
+// (sampled at eighths as the control moves X, Y, Z and C together) on the CL path.
+TEST(MillVerify, FaceMillingVerifiesOnTheLiveMachines) {
+  const std::string dir = temp_dir();
+  for (const char* m : {"linuxcnc-lathe-c", "fanuc-0i-tf-live", "haas-st-20y"}) {
+    RunResult r = run(quote(clpost_bin()) + " -m " + m + " --verify -o " + quote(dir + "/p.nc") +
+                      " " + quote(kCl));
+    EXPECT_EQ(r.exit_code, 0) << m << r.err;
+    EXPECT_NE((r.out + r.err)
+                  .find("ok: every CL point reached in order and every feed move on "
+                        "the CL path, within 0.006"),
+              std::string::npos)
+        << m << r.out << r.err;
+  }
+  fs::remove_all(dir);
+}
+
+// The program `nc` with `from` replaced by `to` once, verified against the CL.
+RunResult verify_edited(const std::string& machine, const std::string& from,
+                        const std::string& to) {
+  const std::string dir = temp_dir(), nc = dir + "/p.nc";
+  RunResult p = run(quote(clpost_bin()) + " -m " + machine + " -o " + quote(nc) + " " + quote(kCl));
+  EXPECT_EQ(p.exit_code, 0) << p.err;
+  std::string text = read_file(nc);
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << text;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  std::ofstream(nc, std::ios::binary) << text;
+  RunResult r =
+      run(quote(clpost_bin()) + " verify -m " + machine + " " + quote(nc) + " --cl " + quote(kCl));
+  fs::remove_all(dir);
+  return r;
+}
+
+// The corner (10, 10) at index 30 is radius 14.1421 at C75: written at C76 it is 1 degree off,
+// 14.1421 x pi / 180 = 0.2468 mm along its circle.
+TEST(MillVerify, ACMovedOneDegreeFails) {
+  RunResult r =
+      verify_edited("linuxcnc-lathe-c", "G1 X28.28427 Z-1. C75. ", "G1 X28.28427 Z-1. C76. ");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(":48:1: error: milling at " + kCl +
+                       ":13: at C76.0000, CL C75.0000 (0.2468 mm along the circle of radius "
+                       "14.1421)"),
+            std::string::npos)
+      << r.err;
+  // Fanuc (C 0-360, F of the combined move): the same corner, X28.284 (3 decimals) a radius of
+  // 14.1420.
+  RunResult f = verify_edited("fanuc-0i-tf-live", "X28.284 Z-1. C75. ", "X28.284 Z-1. C76. ");
+  EXPECT_NE(f.exit_code, 0);
+  EXPECT_NE(f.err.find("at C76.0000, CL C75.0000 (0.2468 mm along the circle of radius 14.1420)"),
+            std::string::npos)
+      << f.err;
+}
+
+// haas-st-20y: Y 0.1 off at the corner (10, 10) (X20. Y10. at C30) is 0.1 mm from the path.
+TEST(MillVerify, AYOffFailsOnHaasSt20y) {
+  RunResult r = verify_edited("haas-st-20y", "G1 X20. Y10. Z-1. F200.", "G1 X20. Y10.1 Z-1. F200.");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("error: milling at " + kCl +
+                       ":13: at X10.0000 (radius) Y10.1000 Z-1.0000 C30.0000, 0.1000 mm from the "
+                       "CL path at (3.6603, 13.6603, -1.0000) (the part at C0)"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace clpost::test
