@@ -10,6 +10,7 @@
 #include <span>
 
 #include "interpreter/lathe_geometry.h"
+#include "interpreter/milling_motion.h"
 #include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
@@ -157,7 +158,7 @@ Point3 frame_point_of(const PostState& s, double u, double v) {
 }  // namespace
 
 void go_stmt(PostState& s, const Statement& st) {
-  if (milling_motion_refused(s, st)) return;
+  if (s.tool.mills()) return milling_go(s, st);  // milling_geometry.cc
   Side side;
   if (!tool_side(s, st, side)) return;
   if (st.args.size() < 2) {
@@ -229,6 +230,8 @@ void indirv_stmt(PostState& s, const Statement& st) {
 
 // PSIS/: the part surface. On a lathe it can only be the turning plane itself.
 void psis_stmt(PostState& s, const Statement& st) {
+  // A milling tool's arcs lie across their drive surface's axis (milling_geometry.cc).
+  if (s.tool.mills()) return skipped_stmt(s, st);
   if (st.args.size() != 1)
     return error(s, st, st.args.empty() ? st.loc : st.args[1].loc,
                  "PSIS/ takes one plane: PSIS/(PLANE/…)");

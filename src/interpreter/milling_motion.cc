@@ -427,14 +427,20 @@ void helical_stmt(PostState& s, const Statement& st) {
   const double len = std::sqrt(dot(axis, axis));
   if (!(len > 0) || !s.pos)
     return error(s, st, st.loc, "HELICAL/ needs an axis and a start point (a GOTO before it)");
-  MotionStart ms;
-  if (!start_motion(s, st, false, ms)) return;
-  MillArc arc{c, along(axis, 1 / len), 1, st.loc.line};
+  const Point3 a = along(axis, 1 / len);
   double h = 0;
-  arc.sense = dot(cross(arc.axis, radial_of(arc, *s.pos, h)), dir) >= 0 ? 1 : -1;
+  const int sense = dot(cross(a, radial_of({c, a, 1, 0}, *s.pos, h)), dir) >= 0 ? 1 : -1;
+  milling_arc_to(s, st, c, a, sense, end);
+}
+
+void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axis, int sense,
+                    Point3 end) {
+  MotionStart ms;
+  if (!s.pos) return error(s, st, st.loc, "an arc needs a start point: no GOTO or FROM before it");
+  if (!start_motion(s, st, false, ms)) return;
   const Point3 from = *s.pos;
   s.pos = end;
-  mill_arc(s, st, arc, from, end, ms.index, ms.feed, ms.turn);
+  mill_arc(s, st, {center, axis, sense, st.loc.line}, from, end, ms.index, ms.feed, ms.turn);
 }
 
 void end_milling(PostState& s, const Statement& st, bool c_back) {

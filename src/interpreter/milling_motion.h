@@ -12,6 +12,12 @@ namespace clpost {
 void milling_goto(PostState& s, const Statement& st, Point3 p);
 // CIRCLE/ `c` with a milling tool: the arc of the next GOTO, about an axis along Z.
 void milling_circle(PostState& s, const Statement& st, const Circle& c);
+// An arc of a milling tool from where it is to `end`, about `axis` through `center`, turning
+// `sense` (+1 positively about the axis): HELICAL/ and geometric motion (milling_geometry.cc).
+void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axis, int sense,
+                    Point3 end);
+// TLON,GOFWD/(CYLNDR/…),ON[,n,INTOF],(PLANE/…) of a milling tool (milling_geometry.cc).
+void milling_go(PostState& s, const Statement& st);
 // HELICAL/ (CATIA) with a milling tool: an arc or a helix about any axis; without a milling
 // tool the comment an unknown statement is.
 void helical_stmt(PostState& s, const Statement& st);
