@@ -98,7 +98,7 @@ struct Walk {
   const std::vector<SimMillMove>& nc;
   double tol;
   bool rollover;  // millturn.c_rotation: the control turns C the shortest way to a C word
-  size_t k = 0;  // the next program move
+  size_t k = 0;   // the next program move
   std::string why;
   const SimMillMove* at = nullptr;  // the program's move the difference is at
 
