@@ -162,3 +162,35 @@ TEST(MillingMotion, RadialToolAndCatiaHelicalOnHaasSt20y) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// TLON,GOFWD of a milling tool around a cylinder about X (CATIA, MillTurn3x_PATH1 line 197):
+// from (3.5, 0.75, 3), INDIRV +Z, ON,2,INTOF the plane z 3 (the start on it is the first): the
+// half turn to (3.5, -0.75, 3), G3 in G19. PSIS/ across X is skipped. TO a check surface is a
+// located error (the tool's radius in 3D is not offset).
+TEST(MillingMotion, GeometricMotionAroundACylinderOnHaasSt20y) {
+  const std::string head =
+      "LOADTL/3,MILL\nSPINDL/3000,RPM,CLW\nFEDRAT/150,MMPM\nRAPID\nGOTO/9,0.75,3,1,0,0\n"
+      "GOTO/3.5,0.75,3,1,0,0\nPSIS/(PLANE/(POINT/3.5,0,3),PERPTO,(VECTOR/1,0,0))\n"
+      "INDIRV/0,0,1\n";
+  const std::string check =
+      "(PLANE/PERPTO,(PLANE/(POINT/3.5,0,3),PERPTO,(VECTOR/1,0,0)),(POINT/3.5,0,3),"
+      "(POINT/3.5,-0.75,3))\n";
+  Posted p = post(head + "TLON,GOFWD/(CYLNDR/3.5,0,3,1,0,0,0.75),ON,2,INTOF," + check + "FINI\n",
+                  load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G1 X7. Y0.75 Z3. F150.\nG19\nG3 X7. Y-0.75 Z3. J-0.75 K0. F150.\n"),
+            std::string::npos)
+      << p.nc;
+  Posted to = post(head + "TLON,GOFWD/(CYLNDR/3.5,0,3,1,0,0,0.75),TO," + check + "FINI\n",
+                   load("haas-st-20y"));
+  EXPECT_NE(to.diags.find("t.cl:9:40: error: GOFWD/ of a milling tool: only ON a check plane is "
+                          "written (TO, PAST and TANTO need the tool's radius in 3D)"),
+            std::string::npos)
+      << to.diags;
+}
+
+}  // namespace
+}  // namespace clpost
