@@ -328,6 +328,54 @@ TEST(Holes, FaceAndRadialHolesInOneProgramVerify) {
   fs::remove_all(dir);
 }
 
+// Live taps (tests/data/millturn-live-taps.apt: two M10x1.5 face taps at 1000 rpm, C90 and
+// C180, one M10x1.25 radial tap at 800 rpm) verify on the three live machines. The lead is read
+// back as the control taps it: LinuxCNC's K; Haas's and Fanuc's F per minute over the live
+// tool's rpm as last written (M133 P1000: F1600. is a lead of 1.6, M70 S800 ... F1100. 1.375).
+TEST(Holes, LiveTapsVerifyAndAWrongLeadFails) {
+  const std::string cl = "tests/data/millturn-live-taps.apt", dir = temp_dir();
+  for (const char* m : {"linuxcnc-lathe-c", "haas-st-20y", "fanuc-0i-tf-live"}) {
+    RunResult ok = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) +
+                       " --verify -m " + m + " -o " + quote(dir + "/ok.nc") + " " + cl);
+    EXPECT_EQ(ok.exit_code, 0) << m << ok.err;
+    EXPECT_NE(ok.err.find("holes (2 on the face at their X and C, 1 radial at their Z and C): 3 "
+                          "in the CL, 3 in the program"),
+              std::string::npos)
+        << m << ok.err;
+  }
+  struct Edit {
+    const char* machine;
+    const char* from;
+    const char* to;
+    const char* error;
+  };
+  const Edit edits[] = {
+      {"linuxcnc-lathe-c", "G33.1 Z-10. K1.5 $1", "G33.1 Z-10. K1.4 $1", ":8: lead 1.4, CL 1.5"},
+      {"haas-st-20y", "G95 X60. Z-10. R2. F1500.", "G95 X60. Z-10. R2. F1600.",
+       ":8: lead 1.6, CL 1.5"},
+      {"fanuc-0i-tf-live", "G88 X64. Z-10. R-8. F1000.", "G88 X64. Z-10. R-8. F1100.",
+       ":16: lead 1.375, CL 1.25"},
+      // The live tool's speed never written: the lead of F per minute is not known.
+      {"haas-st-20y", "M133 P1000\n", "M133\n",
+       ":8: the live tool's speed is not written before the tap: its lead is not known"}};
+  for (const Edit& e : edits) {
+    const std::string nc = dir + "/taps.nc";
+    RunResult post = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " -m " +
+                         e.machine + " -o " + quote(nc) + " " + cl);
+    ASSERT_EQ(post.exit_code, 0) << post.err;
+    std::string text = read_file(nc);
+    const size_t at = text.find(e.from);
+    ASSERT_NE(at, std::string::npos) << e.machine << text;
+    text.replace(at, std::string(e.from).size(), e.to);
+    write_file(nc, text);
+    RunResult r = run("cd " + quote(source_dir()) + " && " + quote(clpost_bin()) + " verify -m " +
+                      e.machine + " " + quote(nc) + " --cl " + cl);
+    EXPECT_EQ(r.exit_code, 1) << e.machine << r.err;
+    EXPECT_NE(r.err.find("hole at " + cl + e.error), std::string::npos) << e.machine << r.err;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Holes, Rs274DrillsEveryHoleToItsDepths) {
   if (!rs274_available()) GTEST_SKIP() << "rs274 not installed: skipped";
   const std::string dir = temp_dir();

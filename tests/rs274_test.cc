@@ -234,6 +234,57 @@ TEST(Rs274, MillTurnRadialHoles) {
   fs::remove_all(dir);
 }
 
+// Live taps on linuxcnc-lathe-c (tests/data/millturn-live-taps.apt): rs274 taps each with
+// G33.1 synchronised with spindle 1, the live tool (START_SPEED_FEED_SYNC at the lead, then
+// RIGID_TAP to the bottom). Mapped back to the part at the C of the traverse before it, the
+// bottoms are the CL's by hand: radius 30 at C90, 10 deep: (0, 30, -10); at C180 (GOTO/0,30 at
+// index 90) (-30, 0, -10); the radial tap from radius 40, 8 deep, at C0 and Z-10: (32, 0, -10).
+// The same program tapping on spindle 0 ($0), which is stopped, is refused by rs274.
+TEST(Rs274, MillTurnLiveTaps) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), ngc = dir + "/taps.ngc";
+  const std::string cl = source_dir() + "/tests/data/millturn-live-taps.apt";
+  RunResult post =
+      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  const auto rs274_on = [&](const std::string& path) {
+    return run("cd " + quote(dir) + " && " + rs274() + " -i " +
+               quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+               quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(path));
+  };
+  RunResult r = rs274_on(ngc);
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const double deg = std::acos(-1.0) / 180;
+  std::vector<std::vector<double>> got;  // part x, y, z of each tap's bottom
+  std::vector<double> leads;
+  double c = 0;
+  std::istringstream out(r.out);
+  for (std::string line; std::getline(out, line);) {
+    if (size_t at = line.find("STRAIGHT_TRAVERSE("); at != std::string::npos)
+      c = canon_numbers(line.substr(at))[5];
+    if (size_t at = line.find("START_SPEED_FEED_SYNC("); at != std::string::npos)
+      leads.push_back(canon_numbers(line.substr(at))[0]);
+    if (size_t at = line.find("RIGID_TAP("); at != std::string::npos) {
+      const std::vector<double> v = canon_numbers(line.substr(at));
+      ASSERT_EQ(v.size(), 3u) << line;
+      got.push_back({v[0] * std::cos(c * deg), v[0] * std::sin(c * deg), v[2]});
+    }
+  }
+  const std::vector<std::vector<double>> want = {{0, 30, -10}, {-30, 0, -10}, {32, 0, -10}};
+  ASSERT_EQ(got.size(), want.size()) << r.out;
+  for (size_t i = 0; i < want.size(); ++i)
+    for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(got[i][k], want[i][k], 0.01) << "tap " << i + 1;
+  EXPECT_EQ(leads, (std::vector<double>{1.5, 1.5, 1.25}));
+  std::string text = read_file(ngc);
+  for (size_t at; (at = text.find("K1.5 $1")) != std::string::npos;) text.replace(at, 7, "K1.5 $0");
+  write_file(dir + "/main.ngc", text);
+  RunResult main = rs274_on(dir + "/main.ngc");
+  EXPECT_NE((main.out + main.err).find("Spindle not turning in G33.1"), std::string::npos)
+      << main.out << main.err;
+  fs::remove_all(dir);
+}
+
 TEST(Rs274, CanonParserReadsWhatRs274Prints) {
   // From rs274 -g on "G7 G18 G21 G90 / G0 X20 Z5 / G2 X34 Z-22 I2 K0": radii, Z first on arcs.
   std::vector<XZ> m = rs274_motion_ends(

@@ -57,6 +57,8 @@ TemplateWrite write_radial_cycle(NcProgram& prog, const Hole& h, const TemplateS
   v.set_text(radial_field("feed"), prog.num("F", h.feed));
   v.set_text(radial_field("feed_mode"),
              m.code(h.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+  v.set_text(radial_field("lead"), prog.num("F", h.lead));
+  v.set_text(radial_field("rpm"), prog.num("S", h.rpm));
   return prog.write_template(v);
 }
 
@@ -91,8 +93,9 @@ LathePoint on_axis(const Hole& h, double along) {
 const TemplateSpec& radial_hole_template(const Hole& h) {
   switch (h.kind) {
     case HoleKind::kDrill:
-    case HoleKind::kTap:  // a live tool's tap is refused before it is a hole (hole_live.cc)
       return h.dwell > 0 ? tmpl::kHoleRadialDwell : tmpl::kHoleRadialDrill;
+    case HoleKind::kTap:
+      return tmpl::kHoleRadialTap;
     case HoleKind::kDeep:
       return tmpl::kHoleRadialPeck;
     case HoleKind::kChipBreak:
@@ -115,8 +118,8 @@ const TemplateSpec& hole_template(const Machine& m, const Hole& h) {
       return tmpl::kHolePeck;
     case HoleKind::kChipBreak:
       return tmpl::kHoleChipBreak;
-    case HoleKind::kTap:
-      return m.rigid_tapping ? tmpl::kHoleTapRigid : tmpl::kHoleTap;
+    case HoleKind::kTap:  // a live tool's (at a C) with its own spindle
+      return h.c ? tmpl::kHoleLiveTap : m.rigid_tapping ? tmpl::kHoleTapRigid : tmpl::kHoleTap;
     case HoleKind::kBore:
     case HoleKind::kReam:
       break;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "emitters/hole_output.h"
 #include "interpreter/hole_live.h"
 #include "interpreter/statement_table.h"
 #include "support/number_text.h"
@@ -145,6 +146,14 @@ Point3 hole_exit_point(const PostState& s, Point3 p, const Hole& h) {
 void hole_goto(PostState& s, const Statement& st, Point3 p) {
   Hole h;
   if (!make_hole(s, st, p, h)) return;
+  // A live tool's tap has no moves to fall back to (hole_live.cc): its cycle fits, or it is an
+  // error.
+  if (s.tool.mills() && h.kind == HoleKind::kTap)
+    if (std::string why = hole_misfit(s.m, h); !why.empty()) {
+      error(s, st, st.loc,
+            fmt::format("CYCLE/TAP {} with live tool {}: {}", h.name, s.tool.number, why));
+      return;
+    }
   ensure_started(s);
   if (s.tool.mills() && (!live_feed_per_minute(s, st, *s.hole_cycle, h) || !live_hole_c(s, st, h)))
     return;

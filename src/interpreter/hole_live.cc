@@ -8,10 +8,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "interpreter/millturn.h"
+#include "machine/machine_schema.h"
 #include "support/number_text.h"
 
 namespace clpost {
@@ -37,6 +39,26 @@ FacePoint face_point(const PostState& s, Point3 p) {
 // A CL length across the face as the lathe frame's radius (cl2's units).
 double as_radius(const PostState& s, double v) {
   return s.m.cl_x_is_diameter ? v / 2 : v;
+}
+
+// A tap of a live tool is synchronised with the live spindle by the machine's own cycle: moves
+// would reverse the main spindle, so a machine without the template refuses it.
+template <typename Refuse>
+bool live_tap_writable(const PostState& s, bool radial, const Refuse& refuse) {
+  const TemplateSpec& t = radial ? tmpl::kHoleRadialTap : tmpl::kHoleLiveTap;
+  auto it = s.m.templates.find(std::string(t.name));
+  // An empty template would tap nothing, silently: it is no template here.
+  if (it == s.m.templates.end() ||
+      std::all_of(it->second.begin(), it->second.end(), [](const auto& l) { return l.empty(); }))
+    return refuse(fmt::format(
+        "machine '{}' has no template '{}': a live tool's tap is synchronised with the live "
+        "spindle by the control's own cycle, never written as moves",
+        s.m.name, t.name));
+  if (s.live.dir == SpindleDir::kCcw)
+    return refuse(
+        "a left-hand tap (the live tool turning counter-clockwise) is not written: the live tap "
+        "templates tap right-hand");
+  return true;
 }
 
 }  // namespace
@@ -70,8 +92,7 @@ bool live_hole(PostState& s, const Statement& st, const HoleCycle& c, Point3 p, 
         s.m.name));
   if (!s.c.index)
     return refuse("C is not indexed: a hole of a live tool needs ROTABL/…,CAXIS before it");
-  if (c.kind == HoleKind::kTap)
-    return refuse("a tap needs the live tool's synchronised tapping, which is not written yet");
+  if (c.kind == HoleKind::kTap && !live_tap_writable(s, h.radial, refuse)) return false;
   const double own = at.radius() > kOnAxis ? degrees(std::atan2(at.y, at.x)) : 0;
   h.c = *s.c.index + own;
   const Vec2 v = cl2(s, p);

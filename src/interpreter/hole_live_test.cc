@@ -115,6 +115,81 @@ TEST(LiveHoles, HoleBelowTheXAxisOnARolloverCAndAToolChange) {
       << p.nc;
 }
 
+// Live taps (docs/millturn.md): an M10x1.5 face tap 10 deep at radius 30 (X60.) and C90, the
+// live tool at 1000 rpm, and an M10x1.25 radial tap 8 deep from radius 40 (bottom radius 32:
+// X64.) at Z-10 and C0, the live tool at 800 rpm. Clearance 2: R plane Z2 on the face, radius
+// 42 (X84.) radial; the radial tool starts at radius 50 (X100.).
+constexpr const char* kLiveTaps =
+    "LOADTL/3,MILL\nSPINDL/1000,RPM,CLW\nROTABL/90,CAXIS\nFROM/30,0,5\n"
+    "CYCLE/TAP,10,MMPR,1.5,CLEAR,2\nGOTO/30,0,0\nCYCLE/OFF\n"
+    "LOADTL/4,MILL\nSPINDL/800,RPM,CLW\nROTABL/0,CAXIS\nFROM/50,0,-10,1,0,0\n"
+    "CYCLE/TAP,8,MMPR,1.25,CLEAR,2\nGOTO/40,0,-10,1,0,0\nCYCLE/OFF\nSPINDL/OFF\nFINI\n";
+
+// LinuxCNC: G33.1 with $1 taps synchronised with spindle 1 (the live tool), K the lead; from
+// the R plane and back to it (rs274 reads them so: Rs274.MillTurnLiveTaps).
+TEST(LiveTaps, G33_1OnSpindle1OnLinuxcncLatheC) {
+  Posted p = post(kLiveTaps, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("(hole at CL line 6: tapping at X60. C90. to Z-10.)\nG0 X60. Z5.\n"
+                      "G0 X60. Z2.\nG33.1 Z-10. K1.5 $1\nG0 Z5.\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("(hole at CL line 13: radial tapping at Z-10. C0. to X64.)\n"
+                      "G0 X100. Z-10.\nG0 X84.\nG33.1 X64. Z-10. K1.25 $1\nG0 X100.\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// Haas (Fusion's Haas lathe post): G95 on the face, G195 radial in G19 from X at the R plane,
+// F per minute = the lead x the live rpm: 1.5 x 1000 = 1500, 1.25 x 800 = 1000.
+TEST(LiveTaps, G95AndG195OnHaasSt20y) {
+  Posted p = post(kLiveTaps, load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("(FEED 1.5 PER REVOLUTION OF THE LIVE TOOL X 1000 RPM = 1500 PER MINUTE FOR "
+                      "THE HOLE AT CL LINE 6)\n(HOLE AT CL LINE 6: TAPPING AT X60. C90. TO Z-10.)\n"
+                      "G0 X60. Z5.\nG98 G95 X60. Z-10. R2. F1500.\nG80\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("G0 X100. Z-10.\nG19\nG0 X84.\nG98 G195 X64. Z-10. F1000.\nG80\n"
+                      "G0 X100.\nG18\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// Fanuc (Fusion's Takisawa/Fanuc post): M29 S then G84 on the face, G88 radial, R relative to
+// the start (2 - 5 = -3, 42 - 50 = -8), F per minute.
+TEST(LiveTaps, M29G84AndG88OnFanuc0iTfLive) {
+  Posted p = post(kLiveTaps, load("fanuc-0i-tf-live"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 X60. Z5.\nM29 S1000\nG98 G84 X60. Z-10. R-3. F1500.\nG80\nM72\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("G0 X100. Z-10.\nM29 S800\nG98 G88 X64. Z-10. R-8. F1000.\nG80\n"),
+            std::string::npos)
+      << p.nc;
+}
+
+// A live tap is never written as moves (they would reverse the main spindle): without the
+// machine's template (or with an empty one, which would tap nothing), or turning left-hand, it
+// is a located error.
+TEST(LiveTaps, WithoutATemplateOrLeftHandIsALocatedError) {
+  Posted none = post(kLiveTaps, load("haas-st-20y", {"templates.hole_live_tap="}));
+  EXPECT_NE(none.diags.find("t.cl:6:1: error: CYCLE/TAP hole at CL line 6 with live tool 3: "
+                            "machine 'haas-st-20y' has no template 'hole_live_tap': a live "
+                            "tool's tap is synchronised with the live spindle by the control's "
+                            "own cycle, never written as moves"),
+            std::string::npos)
+      << none.diags;
+  std::string left = kLiveTaps;
+  left.replace(left.find("SPINDL/1000,RPM,CLW"), 19, "SPINDL/1000,RPM,CCLW");
+  Posted l = post(left, load("fanuc-0i-tf-live"));
+  EXPECT_NE(l.diags.find("t.cl:6:1: error: CYCLE/TAP hole at CL line 6 with live tool 3: a "
+                         "left-hand tap (the live tool turning counter-clockwise) is not "
+                         "written: the live tap templates tap right-hand"),
+            std::string::npos)
+      << l.diags;
+}
+
 // What stays a located error: a tool axis across Z that misses the centre line, one neither
 // along nor across Z, a feed per revolution without the live tool's rpm.
 TEST(LiveHoles, HolesThatCannotBeWrittenAreLocatedErrors) {

@@ -287,8 +287,8 @@ TEST(MillTurn, FaceHolesOnHaasSt20y) {
 }
 
 // What is not written is a located error naming what is missing, never a hole on the centre
-// line: C never indexed. (Fanuc's face G83, radial holes, holes off the X axis and a feed per
-// revolution are written now: hole_live_test.cc.)
+// line: C never indexed. (Fanuc's face G83, radial holes, holes off the X axis, a feed per
+// revolution and live taps are written now: hole_live_test.cc.)
 TEST(MillTurn, FaceHolesThatCannotBeWrittenAreLocatedErrors) {
   std::string no_c = kFaceHoles;
   no_c.erase(no_c.find("ROTABL/0,CAXIS\n"), 15);
@@ -298,13 +298,6 @@ TEST(MillTurn, FaceHolesThatCannotBeWrittenAreLocatedErrors) {
                                  "before it"),
             std::string::npos)
       << unindexed.diags;
-  Posted tap = post(std::string(kFaceHoles)
-                        .replace(std::string(kFaceHoles).find("CYCLE/DRILL,8"), 13, "CYCLE/TAP,8"),
-                    load("linuxcnc-lathe-c"));
-  EXPECT_NE(tap.diags.find("t.cl:7:1: error: CYCLE/TAP hole at CL line 7 with live tool 3: a tap "
-                           "needs the live tool's synchronised tapping, which is not written yet"),
-            std::string::npos)
-      << tap.diags;
 }
 
 }  // namespace

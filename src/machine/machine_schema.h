@@ -160,7 +160,9 @@ inline constexpr TemplateField kRadialHoleFields[] = {
     {"dwell", kText, "dwell at the bottom in seconds, format dwell"},
     {"dwell_ms", kWhole, "dwell at the bottom in milliseconds"},
     {"feed", kText, "feed, format F"},
-    {"feed_mode", kText, "codes.feed_per_rev or feed_per_min, as the feed"}};
+    {"feed_mode", kText, "codes.feed_per_rev or feed_per_min, as the feed"},
+    {"lead", kText, "tap lead per revolution, format F"},
+    {"rpm", kText, "live tool speed, format S"}};
 
 inline constexpr TemplateField kLiveSpindleFields[] = {
     {"rpm", kText, "live tool speed, format S"},
@@ -243,6 +245,17 @@ inline constexpr TemplateSpec kHoleTapRigid{
     {},
     {},
     "CYCLE/TAP"};
+// A tap of a live tool (docs/millturn.md): synchronised with the live spindle, never with the
+// main one, so there is no moves fallback (a machine without it refuses the tap).
+inline constexpr TemplateSpec kHoleLiveTap{
+    "hole_live_tap",
+    kHoleFields,
+    kOptional,
+    "face tapping of a live tool at X with C, synchronised with the live spindle (Haas G95, "
+    "Fanuc M29 G84, LinuxCNC G33.1 $1); without it a live tool's tap is an error",
+    {},
+    {},
+    "CYCLE/TAP with a live tool, tool axis along Z"};
 inline constexpr TemplateSpec kHoleBore{
     "hole_bore",
     kHoleFields,
@@ -294,6 +307,16 @@ inline constexpr TemplateSpec kHoleRadialBore{
     {},
     {},
     "CYCLE/BORE, REAM, tool axis through the centre line"};
+
+inline constexpr TemplateSpec kHoleRadialTap{
+    "hole_radial_tap",
+    kRadialHoleFields,
+    kOptional,
+    "radial tapping of a live tool along X at C, synchronised with the live spindle (Haas G195, "
+    "Fanuc M29 G88, LinuxCNC G33.1 $1); without it a live tool's radial tap is an error",
+    {},
+    {},
+    "CYCLE/TAP with a live tool, tool axis through the centre line"};
 
 inline constexpr TemplateSpec kLiveSpindleRpm{
     "live_spindle_rpm",

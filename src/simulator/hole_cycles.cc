@@ -26,6 +26,7 @@ namespace {
 struct HoleLine {
   HoleKind kind = HoleKind::kDrill;
   bool radial = false;                         // a hole_radial_* template: X is the drilling axis
+  bool live = false;                           // a live tool's tap: its feed per minute / live rpm
   std::string call;                            // a call's name ("CYCLE83"), else empty
   Code code;                                   // the cycle code of a word line
   std::map<std::string, std::string> by_addr;  // word lines: address -> field
@@ -55,8 +56,13 @@ struct HoleTemplate {
   const TemplateSpec* spec;
   HoleKind kind;
   bool radial = false;
+  bool live = false;  // synchronised with the live spindle (a live tool's tap)
 };
+// A live tool's taps first: Fanuc's face tap is the centre-line rigid tap's G84 line, read as the
+// live tool's (its lead F / the live rpm) when written per minute, F itself per revolution.
 constexpr HoleTemplate kHoleTemplates[] = {
+    {&tmpl::kHoleLiveTap, HoleKind::kTap, false, true},
+    {&tmpl::kHoleRadialTap, HoleKind::kTap, true, true},
     {&tmpl::kHoleDrill, HoleKind::kDrill},
     {&tmpl::kHoleDwell, HoleKind::kDrill},
     {&tmpl::kHolePeck, HoleKind::kDeep},
@@ -117,6 +123,7 @@ std::optional<HoleLine> hole_line(const Machine& m, const HoleTemplate& t) {
     HoleLine h;
     h.kind = t.kind;
     h.radial = t.radial;
+    h.live = t.live;
     h.plane = plane;
     const size_t open = line.find('(');
     const bool call = open != std::string::npos && open > 0 &&
@@ -154,7 +161,8 @@ double field_value(State& s, const HoleLine& h, const std::string& f, const NcWo
   if (f == "x") return s.radius(w);
   if (!h.radial) return s.value(w, format_of(f));
   if (f == "r" || f == "top" || f == "start") return s.radius(w);
-  if (f == "z" || f == "peck" || f == "dwell" || f == "feed") return s.value(w, format_of(f));
+  if (f == "z" || f == "peck" || f == "dwell" || f == "feed" || f == "lead" || f == "rpm")
+    return s.value(w, format_of(f));
   return s.value(w, "X");  // r_radius, r_inc, safety, depth: radii
 }
 
@@ -236,6 +244,14 @@ void hole_comment(State& s, const NcBlock& b) {
 }
 
 namespace {
+// How the machine writes the live tool's speed (live_spindle_rpm "{direction} $1 S{rpm}"): a
+// block with its direction code, its constant words and the {rpm} word.
+struct LiveRpmLine {
+  Code cw, ccw;
+  std::vector<Code> constants;  // "$1"
+  std::string rpm_address;      // "S", Haas "P"
+};
+
 // Every hole template's cycle line, taken apart once per program (State::hole_lines).
 struct HoleLines {
   std::optional<HoleLine> lines[std::size(kHoleTemplates)];
@@ -243,7 +259,21 @@ struct HoleLines {
   // address: a block without those letters and without a call is no hole cycle.
   uint32_t letters = 0;
   bool longer = false;
+  LiveRpmLine live;
 };
+
+LiveRpmLine live_rpm_line(const Machine& m) {
+  LiveRpmLine l;
+  auto it = m.templates.find(std::string(tmpl::kLiveSpindleRpm.name));
+  if (!m.live_tools || it == m.templates.end() || it->second.empty()) return l;
+  l.cw = parse_code(m.code("live_spindle_cw"));
+  l.ccw = parse_code(m.code("live_spindle_ccw"));
+  for (const TemplateToken& w : template_tokens(m, it->second.front())) {
+    if (!w.fields.empty() && w.fields.front().name == "rpm") l.rpm_address = w.address;
+    if (w.fields.empty() && !w.code.empty()) l.constants.push_back(w.code);
+  }
+  return l;
+}
 
 const HoleLines& hole_lines(State& s) {
   if (!s.hole_lines) {
@@ -255,9 +285,28 @@ const HoleLines& hole_lines(State& s) {
       h->letters |= bit;
       h->longer = h->longer || bit == 0;
     }
+    h->live = live_rpm_line(s.m);
     s.hole_lines = h;
   }
   return *static_cast<const HoleLines*>(s.hole_lines.get());
+}
+
+// The live tool's speed, when block `b` writes it.
+void read_live_rpm(State& s, const LiveRpmLine& l, const NcBlock& b) {
+  if (l.rpm_address.empty() || !(has_code(b, l.cw) || has_code(b, l.ccw))) return;
+  for (const Code& c : l.constants)
+    if (!has_code(b, c)) return;
+  if (const NcWord* w = b.find(l.rpm_address)) s.live_rpm = s.value(*w, "S");
+}
+
+// A live tool's tap written per minute (F = lead x the live tool's rpm): its lead is F over the
+// live tool's speed as the program last wrote it.
+std::optional<double> live_tap_lead(const State& s, const std::map<std::string, double>& v) {
+  if (v.count("lead")) return v.at("lead");
+  if (!v.count("feed")) return std::nullopt;
+  if (s.cut.per_rev != 0) return v.at("feed");
+  if (!s.live_rpm || !(*s.live_rpm > 0)) return std::nullopt;
+  return v.at("feed") / *s.live_rpm;
 }
 // A radial hole's moves at Z `z`: to the hole's Z at the tool's X, then along X.
 void radial_moves(State& s, SimHole& sh, const Hole& hole, double z) {
@@ -276,6 +325,7 @@ void radial_moves(State& s, SimHole& sh, const Hole& hole, double z) {
 bool hole_cycle_block(State& s, const NcBlock& b) {
   const HoleLines& lines = hole_lines(s);
   if (int p = plane_of(b); p != 0) s.plane = p;
+  read_live_rpm(s, lines.live, b);  // before the test: M133 P1000 is no hole cycle
   if (b.calls.empty() && !lines.longer && (b.letters & lines.letters) == 0) return false;
   for (const std::optional<HoleLine>& h : lines.lines) {
     if (!h || !matches(*h, b, s.plane)) continue;
@@ -298,6 +348,7 @@ bool hole_cycle_block(State& s, const NcBlock& b) {
     sh.left = true;
     sh.out = hole.r;
     if (hole.lead > 0) sh.lead = hole.lead;
+    if (h->live) sh.lead = live_tap_lead(s, v);
     sh.c = s.c;
     if (h->radial) {
       radial_moves(s, sh, hole, v.at("z"));

@@ -141,7 +141,8 @@ struct State {
   double y = 0;             // Y as last written (milling on a machine with Y)
   bool hole_open = false;   // out.holes.back() is followed move by move (a "hole at" comment)
   int plane = 18;           // the plane selected last (G17, G18, G19): which axis a hole drills
-  CutState cut;             // feed mode, spindle and tool as the program last stated them
+  std::optional<double> live_rpm;  // the live tool's speed as last written (live_spindle_rpm)
+  CutState cut;                    // feed mode, spindle and tool as the program last stated them
   // The machine's hole templates taken apart, once (hole_cycles.cc; null until the first block).
   std::shared_ptr<const void> hole_lines;
   // The codes of the machine's own positions (positions.cc), found at the first block.

@@ -49,6 +49,11 @@ std::vector<TemplateToken> template_tokens(const Machine& m, std::string_view li
         t.address += static_cast<char>(std::toupper(static_cast<unsigned char>(token[k])));
     } else if (token.find('{') == std::string_view::npos) {
       t.code = parse_code(token);
+      // LinuxCNC's spindle number `$1`: a word of address '$', as the NC lexer reads it.
+      if (token.size() > 1 && token[0] == '$' && t.code.address == token) {
+        const Code n = parse_code("N" + std::string(token.substr(1)));
+        if (n.number) t.code = Code{"$", n.number};
+      }
     } else {
       continue;
     }

@@ -65,6 +65,8 @@ std::string hole_difference(const Hole& h, const SimHole& p, double tol) {
   const double out_to = (h.retract - h.r) * h.dir > 0 ? h.retract : h.r;
   if (!p.left && !(p.out && (*p.out - out_to) * h.dir <= tol))
     return fmt::format("the tool does not come back out to {}", along_text(h, out_to));
+  if (h.kind == HoleKind::kTap && h.c && !p.lead)
+    return "the live tool's speed is not written before the tap: its lead is not known";
   if (h.kind == HoleKind::kTap && p.lead && std::fabs(*p.lead - h.lead) > 1e-6)
     return fmt::format("lead {:g}, CL {:g}", *p.lead, h.lead);
   return {};
