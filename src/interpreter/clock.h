@@ -18,6 +18,8 @@ void time_dwell(PostState& s, double seconds);
 void time_thread(PostState& s, const ThreadPlan& plan, double rpm);
 void time_sync(PostState& s, Vec2 to, double lead, double rpm);
 void time_hole(PostState& s, const Hole& h);
+// C turning `degrees` (at time.rapid_c) with `clamp_codes` C clamp or unclamp codes written.
+void time_c(PostState& s, double degrees, int clamp_codes);
 
 // The tool `t` reaches `p` after `seconds` more: its time and the extremes it reaches.
 inline void reach(ToolTime& t, Vec2 p, double seconds) {

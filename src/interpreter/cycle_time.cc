@@ -176,6 +176,11 @@ void time_dwell(PostState& s, double seconds) {
   add(s, seconds);
 }
 
+void time_c(PostState& s, double degrees, int clamp_codes) {
+  if (degrees > 0 && !(s.m.rapid_c > 0)) s.clock.c_untimed = true;
+  add(s, (s.m.rapid_c > 0 ? 60 * degrees / s.m.rapid_c : 0) + clamp_codes * s.m.c_clamp_time);
+}
+
 void time_sync(PostState& s, Vec2 to, double lead, double rpm) {
   if (s.clock_at && lead > 0 && rpm > 0) {
     const double travel =
@@ -220,6 +225,12 @@ void time_hole(PostState& s, const Hole& h) {
   time_rapid(s, at(h.retract));
 }
 
+std::string untimed_note(const CycleTime& t) {
+  std::string out = t.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : "";
+  if (t.c_untimed) out += "; C moves not timed: no time.rapid_c";
+  return out;
+}
+
 std::string time_text(double seconds) {
   constexpr double kLongest = 1e6 * 3600;  // a million hours: past it the text says "over"
   if (std::isnan(seconds)) return "not known";
@@ -262,8 +273,7 @@ std::vector<std::string> cycle_time_lines(const CycleTime& t, LengthUnit units, 
     out.push_back(std::move(line));
   }
   out.push_back(fmt::format("cycle time {}, {} tool change{}{}", time_text(t.total()), changes,
-                            changes == 1 ? "" : "s",
-                            t.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : ""));
+                            changes == 1 ? "" : "s", untimed_note(t)));
   return out;
 }
 

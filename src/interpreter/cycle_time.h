@@ -10,6 +10,9 @@
 //   threads          every pass of the plan: rapid to its approach and start, the cut and a
 //                    synchronized pull-out at lead x rpm (along the longer axis), rapid clear;
 //   holes            the hole's own moves (pecks, dwell, retract) whatever NC writes them;
+//   C moves        the angle each C index or hole's C turns over time.rapid_c (degrees per
+//                    minute; the first C after engaging, from an unknown angle, is not timed),
+//                    and time.c_clamp seconds for every C clamp or unclamp code written;
 //   dwells, and time.tool_change seconds for every tool change.
 // A rapid rate of 0 (not given) times rapids as 0 s and says so.
 #include <cstdint>
@@ -61,12 +64,16 @@ struct ToolTime {
 struct CycleTime {
   std::vector<ToolTime> tools;  // in the order they are used
   bool rapids_untimed = false;  // a rapid was met with a rapid rate of 0
+  bool c_untimed = false;       // a C move was met with time.rapid_c 0
   double total() const {
     double t = 0;
     for (const ToolTime& tt : tools) t += tt.seconds;
     return t;
   }
 };
+
+// What the cycle time leaves out ("; rapids not timed: no time.rapid_x/rapid_z"), or "".
+std::string untimed_note(const CycleTime& t);
 
 // "0:42.5" (minutes:seconds to 0.1 s), "1:02:03.0" past an hour; "over 1000000:00:00" for a
 // longer time (a CL with an absurd feed or distance), "not known" for one that is not a number.

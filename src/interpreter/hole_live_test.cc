@@ -37,13 +37,35 @@ TEST(LiveHoles, RadialHolesOnLinuxcncLatheCInG19) {
 // The cycle time of the radial holes, by hand on linuxcnc-lathe-c (rapids 10000 mm/min along X
 // as a radius, 15000 along Z; a tool change 1.5 s): each hole rapids from radius 50 to the R
 // plane at 42 (8 / 10000 min = 0.048 s), drills 12 mm at 100 mm/min (7.2 s) and rapids out to
-// 50 (20 / 10000 min = 0.12 s); holes 2 and 3 first move 10 mm along Z (0.04 s each).
+// 50 (20 / 10000 min = 0.12 s); holes 2 and 3 first move 10 mm along Z (0.04 s each). C turns
+// at time.rapid_c, 18000 degrees per minute: C0 (the first after engaging, from an unknown
+// angle: not timed), C90 and C180 turn 90 degrees each (90 / 18000 min = 0.3 s).
 TEST(LiveHoles, RadialHolesAreTimedAlongX) {
   PostedText r = post_text(kRadial, load("linuxcnc-lathe-c"), "t.cl");
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
   const double hole = 0.048 + 7.2 + 0.12;
   ASSERT_EQ(r.summary.cycle_time.tools.size(), 1u);
-  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 1.5 + 3 * hole + 2 * 0.04, 1e-6);
+  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 1.5 + 3 * hole + 2 * 0.04 + 2 * 0.3, 1e-6);
+  EXPECT_FALSE(r.summary.cycle_time.c_untimed);
+}
+
+// On haas-st-20y C is clamped (M14) after each index and unclamped (M15) before the next:
+// time.c_clamp 0.5 s each. The same holes as above: the first C0 clamps once (0.5 s), C90 and
+// C180 each unclamp, turn 90 degrees (0.3 s) and clamp (1 s): 3 * hole + 2 * 0.04 + 1.5 + 0.5
+// + 2 * 1.3 = 26.784 s. Without time.rapid_c the turns count nothing, and the cycle time says so.
+TEST(LiveHoles, CIndexAndClampsAreTimed) {
+  PostedText r = post_text(kRadial, load("haas-st-20y"), "t.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  const double hole = 0.048 + 7.2 + 0.12;
+  ASSERT_EQ(r.summary.cycle_time.tools.size(), 1u);
+  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.3,
+              1e-6);
+  PostedText untimed = post_text(kRadial, load("haas-st-20y", {"time.rapid_c=0"}), "t.cl");
+  EXPECT_NEAR(untimed.summary.cycle_time.tools[0].seconds,
+              3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.0, 1e-6);
+  EXPECT_TRUE(untimed.summary.cycle_time.c_untimed);
+  EXPECT_EQ(cycle_time_lines(untimed.summary.cycle_time, LengthUnit::kMm, true).back(),
+            "cycle time 0:26.2, 1 tool change; C moves not timed: no time.rapid_c");
 }
 
 // Haas G241 with R the R plane as a diameter (84 = 2 x 42), and Fanuc G87 with R relative to

@@ -103,6 +103,7 @@ void millturn_after_tool_change(PostState& s, const Statement& st) {
 void release_c(PostState& s) {
   if (!s.c.engaged) return;
   if (s.c.clamped) code_block(s, "c_unclamp");
+  time_c(s, 0, s.c.clamped ? 1 : 0);
   code_block(s, "c_disengage");
   s.c = CAxisState{};
 }
@@ -263,8 +264,15 @@ void rotabl_stmt(PostState& s, const Statement& st) {
 
 bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>& steps) {
   if (steps.empty()) return true;  // C is there: nothing moves, nothing unclamps
+  int clamps = s.c.clamped ? 1 : 0;
   if (s.c.clamped) code_block(s, "c_unclamp");
+  double turned = 0;  // degrees, the way the control turns (rollover: each step the short way)
+  std::optional<double> from = s.c.angle;
   for (double c : steps) {
+    if (from)
+      turned += std::fabs(s.m.c_rotation == CRotation::kRollover ? std::remainder(c - *from, 360.0)
+                                                                 : c - *from);
+    from = c;
     TemplateFill<tmpl::kCIndex> v;
     v.text<"c">(s.prog.num("C", c)).text<"address">(s.m.c_address);
     if (TemplateWrite r = s.prog.write_template(v); !r) {
@@ -275,6 +283,7 @@ bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>&
   s.c.angle = steps.back();
   code_block(s, "c_clamp");
   s.c.clamped = !s.m.code("c_clamp").empty();
+  time_c(s, turned, clamps + (s.c.clamped ? 1 : 0));
   s.prog.forget_modal();  // the motion code of c_index may not be the one in force
   return true;
 }

@@ -153,6 +153,8 @@ struct Machine : ControlSettings {
   double rapid_x = 0;           // per minute along X (as a radius), output units
   double rapid_z = 0;           // per minute along Z
   double tool_change_time = 0;  // seconds
+  double rapid_c = 0;           // degrees per minute of the C axis (0: C moves are not timed)
+  double c_clamp_time = 0;      // seconds each C clamp or unclamp code takes
 
   std::map<std::string, NumberFormat> formats;  // by address; "default" for the others
   std::map<std::string, std::string> codes;     // rapid, linear, arc_cw, ... -> "G0", ...

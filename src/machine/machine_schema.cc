@@ -253,6 +253,14 @@ constexpr KeySpec kLaterKeys[] = {
      "rapid rate along Z, per minute, output units; 0: rapids are not timed", 0, 1e7},
     {"time.tool_change", kTime, kNumber, &M::tool_change_time,
      "seconds a tool change takes (turret index), added for every LOADTL", 0, 3600},
+    {"time.rapid_c", kTime, kNumber, &M::rapid_c,
+     "rapid rate of the C axis, degrees per minute: each C index and each hole's C move takes "
+     "the angle turned over it; 0: C moves are not timed (and the cycle time says so)",
+     0, 1e8},
+    {"time.c_clamp", kTime, kNumber, &M::c_clamp_time,
+     "seconds each C clamp or unclamp (codes.c_clamp, c_unclamp) takes, added for every one "
+     "written",
+     0, 3600},
 };
 
 const FormatKeySpec kFormatKeys[] = {

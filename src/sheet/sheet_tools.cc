@@ -65,8 +65,7 @@ std::string tools_section(const SheetData& d) {
       "change{}{}. Times are estimates from the machine file's rapid rates and tool change "
       "time.</p>\n",
       esc(time_text(d.cycle_time.total())), tool_changes(d.cycle_time),
-      tool_changes(d.cycle_time) == 1 ? "" : "s",
-      d.cycle_time.rapids_untimed ? "; rapids not timed: no time.rapid_x/rapid_z" : "");
+      tool_changes(d.cycle_time) == 1 ? "" : "s", untimed_note(d.cycle_time));
   return o + "</section>\n";
 }
 
