@@ -4,10 +4,12 @@
 // nothing is dropped silently.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <utility>
 
 #include <cmath>
 
+#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -90,6 +92,8 @@ void selctl_stmt(PostState& s, const Statement& st) {
 }
 
 void clamp_stmt(PostState& s, const Statement& st) {
+  if (std::any_of(st.args.begin(), st.args.end(), [](const Arg& a) { return a.is("CAXIS"); }))
+    return clamp_c_stmt(s, st);
   const std::optional<bool> on = on_off(s, st);
   if (!on) return;
   const std::string& code = s.m.code(*on ? "clamp_on" : "clamp_off");

@@ -281,11 +281,67 @@ bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>&
     }
   }
   s.c.angle = steps.back();
-  code_block(s, "c_clamp");
-  s.c.clamped = !s.m.code("c_clamp").empty();
+  if (!s.c.cl_unclamped) code_block(s, "c_clamp");
+  s.c.clamped = !s.c.cl_unclamped && !s.m.code("c_clamp").empty();
   time_c(s, turned, clamps + (s.c.clamped ? 1 : 0));
   s.prog.forget_modal();  // the motion code of c_index may not be the one in force
   return true;
+}
+
+namespace {
+
+// The ON, OFF or AUTO of CLAMP/…,CAXIS (first or second word); null (reported) otherwise.
+const Arg* clamp_mode(PostState& s, const Statement& st) {
+  for (size_t i = 0; i < std::min<size_t>(2, st.args.size()); ++i)
+    if (st.args[i].is("ON") || st.args[i].is("OFF") || st.args[i].is("AUTO")) {
+      for (size_t k = 0; k < st.args.size(); ++k)
+        if (k != i && !st.args[k].is("CAXIS")) {
+          error(s, st, st.args[k].loc,
+                fmt::format("CLAMP/…,CAXIS: '{}' is not read (ICAM's CLAMP/OFF,axis,position "
+                            "moves the axis in a way no source states): position C with "
+                            "ROTABL/a,CAXIS",
+                            st.args[k].text));
+          return nullptr;
+        }
+      return &st.args[i];
+    }
+  error(s, st, st.loc, "expected CLAMP/ON|OFF|AUTO,CAXIS or CLAMP/CAXIS,ON|OFF");
+  return nullptr;
+}
+
+}  // namespace
+
+// CLAMP/ON,CAXIS clamps C now (when engaged and not clamped) and after each index as before;
+// CLAMP/OFF,CAXIS unclamps it and leaves it unclamped after the indexes until CLAMP/ON or AUTO
+// (or until C is released); CLAMP/AUTO,CAXIS gives the clamping back to the post.
+void clamp_c_stmt(PostState& s, const Statement& st) {
+  const Arg* mode = clamp_mode(s, st);
+  if (mode == nullptr) return;
+  if (!s.m.c_axis)
+    return error(s, st, st.loc,
+                 fmt::format("CLAMP/…,CAXIS clamps a C axis, and machine '{}' has none "
+                             "(millturn.c_axis: false)",
+                             s.m.name));
+  const bool on = !mode->is("OFF");
+  const std::string key = on ? "c_clamp" : "c_unclamp";
+  if (s.m.code(key).empty()) {
+    warning(s, st, st.loc,
+            fmt::format("CLAMP/: machine '{}' has no code '{}' (its C axis is not clamped): "
+                        "written as a comment",
+                        s.m.name, key));
+    ensure_started(s);
+    return s.prog.comment(st.source);
+  }
+  if (mode->is("ON") && !s.c.engaged)
+    return error(s, st, st.loc,
+                 "CLAMP/ON,CAXIS: C is not engaged (no milling tool since the main spindle "
+                 "last turned): nothing to clamp");
+  s.c.cl_unclamped = !on;
+  if (!s.c.engaged || s.c.clamped == on) return;
+  ensure_started(s);
+  code_block(s, key);
+  s.c.clamped = on;
+  time_c(s, 0, 1);
 }
 
 // SYNC/…: waits between channels of a multi-channel machine (CATIA's Swiss-type programs).

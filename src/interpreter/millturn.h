@@ -35,5 +35,7 @@ std::vector<double> c_steps(const Machine& m, std::optional<double> from, double
 // Writes C words `steps` (c_steps), unclamping before and clamping after as the machine does;
 // C is then at the last. False (reported at `st`) when the c_index template cannot be written.
 bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>& steps);
+// CLAMP/ON|OFF|AUTO,CAXIS (ICAM) and CLAMP/CAXIS,ON|OFF (NX-to-APT): the CL's own C clamp.
+void clamp_c_stmt(PostState& s, const Statement& st);
 
 }  // namespace clpost

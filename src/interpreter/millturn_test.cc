@@ -286,6 +286,61 @@ TEST(MillTurn, FaceHolesOnHaasSt20y) {
       << p.nc;
 }
 
+// The CL's own C clamp (ICAM CLAMP/ON|OFF|AUTO,CAXIS, NX-to-APT CLAMP/CAXIS,ON|OFF) on
+// haas-st-20y (M14 clamp, M15 unclamp): OFF unclamps and C stays unclamped after the next index
+// (C180 without M14); ON clamps; the NX form unclamps; AUTO clamps again and gives the clamping
+// back to the post (C0 unclamped, indexed, clamped). Each of the 9 clamps and unclamps takes
+// time.c_clamp (0.5 s); C90 (the first, from an unknown angle) is not timed, C180, C270 and C0
+// turn 90 degrees each at 18000 per minute (0.9 s in all); the tool change 1.5 s: 6.9 s.
+TEST(MillTurn, TheClsOwnCClampOnHaas) {
+  constexpr const char* kClamp =
+      "LOADTL/3,MILL\nSPINDL/1000,RPM,CLW\nROTABL/90,CAXIS\nCLAMP/OFF,CAXIS\n"
+      "ROTABL/180,CAXIS\nCLAMP/ON,CAXIS\nROTABL/270,CAXIS\nCLAMP/CAXIS,OFF\n"
+      "CLAMP/AUTO,CAXIS\nROTABL/0,CAXIS\nSPINDL/OFF\nFINI\n";
+  Posted p = post(kClamp, load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C90.\nM14\nM15\nG0 C180.\nM14\nM15\nG0 C270.\nM14\nM15\nM14\n"
+                      "M15\nG0 C0.\nM14\nM135\n"),
+            std::string::npos)
+      << p.nc;
+  PostedText r = post_text(kClamp, load("haas-st-20y"), "t.cl");
+  ASSERT_EQ(r.summary.cycle_time.tools.size(), 1u);
+  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 9 * 0.5 + 0.9 + 1.5, 1e-6);
+}
+
+// CLAMP/…,CAXIS on a machine without C, with ICAM's axis position (not read), before C is
+// engaged, or without an ON/OFF word: located errors; on linuxcnc-lathe-c, whose C has no
+// clamp code, a warning and the statement as a comment.
+TEST(MillTurn, CClampsThatCannotBeWritten) {
+  Posted none = post("CLAMP/ON,CAXIS\nFINI\n", load("fanuc-0i-t"));
+  EXPECT_NE(none.diags.find("t.cl:1:1: error: CLAMP/…,CAXIS clamps a C axis, and machine "
+                            "'fanuc-0i-t' has none (millturn.c_axis: false)"),
+            std::string::npos)
+      << none.diags;
+  Posted e = post("CLAMP/ON,CAXIS\nCLAMP/OFF,CAXIS,45\nCLAMP/CAXIS\nFINI\n", load("haas-st-20y"));
+  EXPECT_NE(e.diags.find("t.cl:1:1: error: CLAMP/ON,CAXIS: C is not engaged (no milling tool "
+                         "since the main spindle last turned): nothing to clamp"),
+            std::string::npos)
+      << e.diags;
+  EXPECT_NE(e.diags.find("t.cl:2:17: error: CLAMP/…,CAXIS: '45' is not read (ICAM's "
+                         "CLAMP/OFF,axis,position moves the axis in a way no source states): "
+                         "position C with ROTABL/a,CAXIS"),
+            std::string::npos)
+      << e.diags;
+  EXPECT_NE(e.diags.find("t.cl:3:1: error: expected CLAMP/ON|OFF|AUTO,CAXIS or "
+                         "CLAMP/CAXIS,ON|OFF"),
+            std::string::npos)
+      << e.diags;
+  Posted l =
+      post("LOADTL/3,MILL\nROTABL/90,CAXIS\nCLAMP/ON,CAXIS\nFINI\n", load("linuxcnc-lathe-c"));
+  EXPECT_EQ(l.errors, 0u) << l.diags;
+  EXPECT_NE(l.diags.find("t.cl:3:1: warning: CLAMP/: machine 'linuxcnc-lathe-c' has no code "
+                         "'c_clamp' (its C axis is not clamped): written as a comment"),
+            std::string::npos)
+      << l.diags;
+  EXPECT_NE(l.nc.find("G0 C90.\n(CLAMP/ON,CAXIS)\n"), std::string::npos) << l.nc;
+}
+
 // What is not written is a located error naming what is missing, never a hole on the centre
 // line: C never indexed. (Fanuc's face G83, radial holes, holes off the X axis, a feed per
 // revolution and live taps are written now: hole_live_test.cc.)

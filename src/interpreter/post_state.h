@@ -75,8 +75,10 @@ struct ToolKindWord {
 
 // The C axis as the program left it (millturn.cc).
 struct CAxisState {
-  bool engaged = false;         // the main spindle is the C axis (codes.c_engage written)
-  bool clamped = false;         // codes.c_clamp written since C last moved
+  bool engaged = false;  // the main spindle is the C axis (codes.c_engage written)
+  bool clamped = false;  // codes.c_clamp written since C last moved
+  bool cl_unclamped =
+      false;  // CLAMP/OFF,CAXIS in force: no clamp after an index (docs/millturn.md)
   std::optional<double> angle;  // C as last written (unknown after engaging)
   // The last ROTABL's angle: the part frame is turned by it (a hole off the X axis is at this
   // index plus its own angle, hole_live.cc), while C may have moved on to a hole.
