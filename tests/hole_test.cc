@@ -330,8 +330,9 @@ TEST(Holes, FaceAndRadialHolesInOneProgramVerify) {
 
 // Live taps (tests/data/millturn-live-taps.apt: two M10x1.5 face taps at 1000 rpm, C90 and
 // C180, one M10x1.25 radial tap at 800 rpm) verify on the three live machines. The lead is read
-// back as the control taps it: LinuxCNC's K; Haas's and Fanuc's F per minute over the live
-// tool's rpm as last written (M133 P1000: F1600. is a lead of 1.6, M70 S800 ... F1100. 1.375).
+// back as the control taps it (left-hand taps too): LinuxCNC's K; Haas's and Fanuc's F per minute
+// over the live tool's rpm as last written (M133 P1000: F1600. is a lead of 1.6, M70 S800 ...
+// F1100. 1.375).
 TEST(Holes, LiveTapsVerifyAndAWrongLeadFails) {
   const std::string cl = "tests/data/millturn-live-taps.apt", dir = temp_dir();
   for (const char* m : {"linuxcnc-lathe-c", "haas-st-20y", "fanuc-0i-tf-live"}) {
@@ -340,6 +341,20 @@ TEST(Holes, LiveTapsVerifyAndAWrongLeadFails) {
     EXPECT_EQ(ok.exit_code, 0) << m << ok.err;
     EXPECT_NE(ok.err.find("holes (2 on the face at their X and C, 1 radial at their Z and C): 3 "
                           "in the CL, 3 in the program"),
+              std::string::npos)
+        << m << ok.err;
+  }
+  // Left-hand (the live tools CCLW): Haas G186/G196, LinuxCNC G33.1 after M4 $1.
+  std::string left = read_file(source_dir() + "/" + cl);
+  for (size_t at; (at = left.find("RPM,CLW")) != std::string::npos;)
+    left.replace(at, 7, "RPM,CCLW");
+  write_file(dir + "/left.apt", left);
+  for (const char* m : {"linuxcnc-lathe-c", "haas-st-20y"}) {
+    RunResult ok = run(quote(clpost_bin()) + " --verify -m " + m + " -o " +
+                       quote(dir + "/left.nc") + " " + quote(dir + "/left.apt"));
+    EXPECT_EQ(ok.exit_code, 0) << m << ok.err;
+    EXPECT_NE(ok.err.find(std::string("left.apt:16  radial tapping to X32.0000 (radius)  ok  ") +
+                          (m[0] == 'h' ? "G196" : "G33.1")),
               std::string::npos)
         << m << ok.err;
   }

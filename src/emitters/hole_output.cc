@@ -95,7 +95,7 @@ const TemplateSpec& radial_hole_template(const Hole& h) {
     case HoleKind::kDrill:
       return h.dwell > 0 ? tmpl::kHoleRadialDwell : tmpl::kHoleRadialDrill;
     case HoleKind::kTap:
-      return tmpl::kHoleRadialTap;
+      return h.spindle == SpindleDir::kCcw ? tmpl::kHoleRadialTapLeft : tmpl::kHoleRadialTap;
     case HoleKind::kDeep:
       return tmpl::kHoleRadialPeck;
     case HoleKind::kChipBreak:
@@ -118,8 +118,9 @@ const TemplateSpec& hole_template(const Machine& m, const Hole& h) {
       return tmpl::kHolePeck;
     case HoleKind::kChipBreak:
       return tmpl::kHoleChipBreak;
-    case HoleKind::kTap:  // a live tool's (at a C) with its own spindle
-      return h.c ? tmpl::kHoleLiveTap : m.rigid_tapping ? tmpl::kHoleTapRigid : tmpl::kHoleTap;
+    case HoleKind::kTap:  // a live tool's (at a C) with its own spindle, right- or left-hand
+      if (h.c) return h.spindle == SpindleDir::kCcw ? tmpl::kHoleLiveTapLeft : tmpl::kHoleLiveTap;
+      return m.rigid_tapping ? tmpl::kHoleTapRigid : tmpl::kHoleTap;
     case HoleKind::kBore:
     case HoleKind::kReam:
       break;
@@ -137,7 +138,7 @@ std::string hole_misfit(const Machine& m, const Hole& h) {
   if ((h.kind == HoleKind::kDeep || h.kind == HoleKind::kChipBreak) && h.peck > 0 &&
       !template_has_field(m, t, "peck"))
     return fmt::format("template '{}' has no {{peck}}", t.name);
-  if (h.kind == HoleKind::kTap && h.spindle == SpindleDir::kCcw && m.tap_turns_cw)
+  if (h.kind == HoleKind::kTap && !h.c && h.spindle == SpindleDir::kCcw && m.tap_turns_cw)
     return fmt::format(
         "a left-hand tap, spindle counter-clockwise: '{}' turns the spindle "
         "clockwise, holes.tap_turns_cw",

@@ -45,7 +45,9 @@ double as_radius(const PostState& s, double v) {
 // would reverse the main spindle, so a machine without the template refuses it.
 template <typename Refuse>
 bool live_tap_writable(const PostState& s, bool radial, const Refuse& refuse) {
-  const TemplateSpec& t = radial ? tmpl::kHoleRadialTap : tmpl::kHoleLiveTap;
+  const bool left = s.live.dir == SpindleDir::kCcw;  // a left-hand tap: its own cycle
+  const TemplateSpec& t = radial ? (left ? tmpl::kHoleRadialTapLeft : tmpl::kHoleRadialTap)
+                                 : (left ? tmpl::kHoleLiveTapLeft : tmpl::kHoleLiveTap);
   auto it = s.m.templates.find(std::string(t.name));
   // An empty template would tap nothing, silently: it is no template here.
   if (it == s.m.templates.end() ||
@@ -54,10 +56,6 @@ bool live_tap_writable(const PostState& s, bool radial, const Refuse& refuse) {
         "machine '{}' has no template '{}': a live tool's tap is synchronised with the live "
         "spindle by the control's own cycle, never written as moves",
         s.m.name, t.name));
-  if (s.live.dir == SpindleDir::kCcw)
-    return refuse(
-        "a left-hand tap (the live tool turning counter-clockwise) is not written: the live tap "
-        "templates tap right-hand");
   return true;
 }
 

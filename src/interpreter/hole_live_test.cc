@@ -192,9 +192,8 @@ TEST(LiveTaps, M29G84AndG88OnFanuc0iTfLive) {
 }
 
 // A live tap is never written as moves (they would reverse the main spindle): without the
-// machine's template (or with an empty one, which would tap nothing), or turning left-hand, it
-// is a located error.
-TEST(LiveTaps, WithoutATemplateOrLeftHandIsALocatedError) {
+// machine's template (or with an empty one, which would tap nothing) it is a located error.
+TEST(LiveTaps, WithoutATemplateIsALocatedError) {
   Posted none = post(kLiveTaps, load("haas-st-20y", {"templates.hole_live_tap="}));
   EXPECT_NE(none.diags.find("t.cl:6:1: error: CYCLE/TAP hole at CL line 6 with live tool 3: "
                             "machine 'haas-st-20y' has no template 'hole_live_tap': a live "
@@ -202,14 +201,31 @@ TEST(LiveTaps, WithoutATemplateOrLeftHandIsALocatedError) {
                             "own cycle, never written as moves"),
             std::string::npos)
       << none.diags;
+}
+
+// Left-hand taps (the live tool CCLW): Haas G186 on the face and G196 radial (Fusion's Haas
+// lathe post for a left-hand tap); LinuxCNC the same G33.1 after M4 $1; the Takisawa/Fanuc
+// post's left-hand form is not explained, so fanuc-0i-tf-live has no template and refuses it.
+TEST(LiveTaps, LeftHandTaps) {
   std::string left = kLiveTaps;
   left.replace(left.find("SPINDL/1000,RPM,CLW"), 19, "SPINDL/1000,RPM,CCLW");
-  Posted l = post(left, load("fanuc-0i-tf-live"));
-  EXPECT_NE(l.diags.find("t.cl:6:1: error: CYCLE/TAP hole at CL line 6 with live tool 3: a "
-                         "left-hand tap (the live tool turning counter-clockwise) is not "
-                         "written: the live tap templates tap right-hand"),
+  left.replace(left.find("SPINDL/800,RPM,CLW"), 18, "SPINDL/800,RPM,CCLW");
+  Posted haas = post(left, load("haas-st-20y"));
+  EXPECT_EQ(haas.errors, 0u) << haas.diags;
+  EXPECT_NE(haas.nc.find("M134 P1000\n"), std::string::npos) << haas.nc;
+  EXPECT_NE(haas.nc.find("G0 X60. Z5.\nG98 G186 X60. Z-10. R2. F1500.\nG80\n"), std::string::npos)
+      << haas.nc;
+  EXPECT_NE(haas.nc.find("G19\nG0 X84.\nG98 G196 X64. Z-10. F1000.\nG80\n"), std::string::npos)
+      << haas.nc;
+  Posted lcnc = post(left, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(lcnc.errors, 0u) << lcnc.diags;
+  EXPECT_NE(lcnc.nc.find("M4 $1 S1000\n"), std::string::npos) << lcnc.nc;
+  EXPECT_NE(lcnc.nc.find("G0 X60. Z2.\nG33.1 Z-10. K1.5 $1\n"), std::string::npos) << lcnc.nc;
+  Posted fanuc = post(left, load("fanuc-0i-tf-live"));
+  EXPECT_NE(fanuc.diags.find("t.cl:6:1: error: CYCLE/TAP hole at CL line 6 with live tool 3: "
+                             "machine 'fanuc-0i-tf-live' has no template 'hole_live_tap_left'"),
             std::string::npos)
-      << l.diags;
+      << fanuc.diags;
 }
 
 // What stays a located error: a tool axis across Z that misses the centre line, one neither

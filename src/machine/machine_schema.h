@@ -256,6 +256,15 @@ inline constexpr TemplateSpec kHoleLiveTap{
     {},
     {},
     "CYCLE/TAP with a live tool, tool axis along Z"};
+inline constexpr TemplateSpec kHoleLiveTapLeft{
+    "hole_live_tap_left",
+    kHoleFields,
+    kOptional,
+    "left-hand face tapping of a live tool (the live spindle counter-clockwise: Haas G186, "
+    "LinuxCNC G33.1 $1 after M4 $1); without it a live tool's left-hand tap is an error",
+    {},
+    {},
+    "CYCLE/TAP with a live tool turning CCLW, tool axis along Z"};
 inline constexpr TemplateSpec kHoleBore{
     "hole_bore",
     kHoleFields,
@@ -317,6 +326,15 @@ inline constexpr TemplateSpec kHoleRadialTap{
     {},
     {},
     "CYCLE/TAP with a live tool, tool axis through the centre line"};
+inline constexpr TemplateSpec kHoleRadialTapLeft{
+    "hole_radial_tap_left",
+    kRadialHoleFields,
+    kOptional,
+    "left-hand radial tapping of a live tool (the live spindle counter-clockwise: Haas G196, "
+    "LinuxCNC G33.1 $1 after M4 $1); without it a live tool's left-hand radial tap is an error",
+    {},
+    {},
+    "CYCLE/TAP with a live tool turning CCLW, tool axis through the centre line"};
 
 inline constexpr TemplateSpec kLiveSpindleRpm{
     "live_spindle_rpm",

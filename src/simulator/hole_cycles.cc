@@ -63,6 +63,8 @@ struct HoleTemplate {
 constexpr HoleTemplate kHoleTemplates[] = {
     {&tmpl::kHoleLiveTap, HoleKind::kTap, false, true},
     {&tmpl::kHoleRadialTap, HoleKind::kTap, true, true},
+    {&tmpl::kHoleLiveTapLeft, HoleKind::kTap, false, true},
+    {&tmpl::kHoleRadialTapLeft, HoleKind::kTap, true, true},
     {&tmpl::kHoleDrill, HoleKind::kDrill},
     {&tmpl::kHoleDwell, HoleKind::kDrill},
     {&tmpl::kHolePeck, HoleKind::kDeep},
