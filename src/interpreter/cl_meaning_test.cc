@@ -60,6 +60,28 @@ TEST(ClMeaning, GohomeConsumesRapid) {
   expect_lines("linuxcnc-lathe", c, "G0 X200. Z100.\nG1 X20. Z-5.\n");
 }
 
+// An arc right after GOHOME on a machine whose home is its reference return (`G28 U0.`,
+// `G28 W0.`): the control starts the arc at the reference position, which the program does not
+// state, and I and K were measured from the point before GOHOME (found by the oracle's Fanuc
+// reader, seed 7: `G3 … I14.914 K13.674` after `G28 W0.`). Refused at the GOTO; on LinuxCNC,
+// where GOHOME/x,y,z is a rapid to the point, the arc starts there.
+TEST(ClMeaning, AnArcDoesNotStartAtTheMachinesHome) {
+  const std::string a = cl("GOTO/20,0,5\nGOHOME/30,0,10\nCIRCLE/30,0,0,0,1,0,10\nGOTO/20,0,0\n");
+  for (const char* machine : {"fanuc-0i-t", "haas-st"}) {
+    const Posted p = post(a, load(machine));
+    EXPECT_EQ(p.diags,
+              "t.cl:8:1: error: an arc cannot start at the machine's home (GOHOME at line 6 wrote "
+              "its home template, a position the program does not state): move to the arc's "
+              "start first\n  GOTO/20,0,0\n  ^\n")
+        << machine;
+  }
+  expect_lines("linuxcnc-lathe", a, "G0 X60. Z10.\nG3 X40. Z0. I0. K-10.\n");
+  expect_lines("fanuc-0i-t",
+               cl("GOTO/20,0,5\nGOHOME/30,0,10\nGOTO/30,0,10\nCIRCLE/30,0,0,0,1,0,10\n"
+                  "GOTO/20,0,0\n"),
+               "G28 W0.\nG1 X60. Z10. G99 F0.2\nG3 X40. Z0. I0. K-10.\n");
+}
+
 // D: LinuxCNC's M6 stops the spindle; the CL left it turning, so it turns again before the next
 // motion (and only then: a SPINDL/ after the LOADTL/ says it instead).
 TEST(ClMeaning, AToolChangeLeavesTheSpindleAsTheClLeftIt) {

@@ -184,6 +184,7 @@ void NcProgram::axes(LathePoint p, bool force_both) {
   last_x_ = x;
   last_z_ = z;
   pos_ = p;
+  at_machine_position_ = false;
 }
 
 void NcProgram::feed_words() {
@@ -282,6 +283,7 @@ std::string NcProgram::num(std::string_view format, double v) const {
 void NcProgram::cycle_ended_at(LathePoint p) {
   forget_modal();
   pos_ = p;
+  at_machine_position_ = false;
 }
 
 void NcProgram::units_changed(double factor, bool inch) {
