@@ -65,6 +65,7 @@ struct Event {
   double lead = 0;        // thread, mm/rev
   double seconds = 0;     // dwell
   Modal state;
+  bool home = false;     // a return to the machine's reference position (GOHOME, G28): x, z unsaid
   bool skipped = false;  // inside an OPSKIP range (model)
   bool inch = false;     // the units the numbers were read in (rs274: the program's)
   int line = 0;          // the CL line (model) or the canonical call's number (rs274)
