@@ -6,40 +6,18 @@
 //   [cl]    docs/cl-meaning.md (what the oracle compares; the inch least increments).
 // Where a meaning is a parameter or a setting of the control (a number without a decimal point,
 // the power-on modes), the reader refuses the program rather than guess.
-#include "fanuc_reader.h"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <optional>
 
-namespace oracle {
+#include "fanuc_reader_impl.h"
+
+namespace oracle::fanuc_detail {
 
 namespace {
 
 constexpr double kMPerFoot = 0.3048;
-
-struct Word {
-  char letter = 0;
-  double value = 0;
-  bool point = false;  // written with a decimal point
-};
-
-struct Block {
-  std::vector<Word> words;
-  bool optional = false;  // "/" first
-  const Word* find(char letter) const {
-    for (const Word& w : words)
-      if (w.letter == letter) return &w;
-    return nullptr;
-  }
-  bool has_g(int code) const {
-    for (const Word& w : words)
-      if (w.letter == 'G' && w.value == code) return true;
-    return false;
-  }
-};
 
 // [0i-T] "Program configuration": a block is words, each an address letter and a number; "%"
 // starts and ends the program, "O" numbers it, "( … )" is a comment, "/" first in a block is
@@ -75,47 +53,16 @@ std::string parse(std::string_view line, Block& b) {
   return "";
 }
 
-class Control {
- public:
-  explicit Control(Dialect d) : d_(d) {}
-  // False when the control stops here (error_).
-  bool block(const Block& b, int line, std::string_view text);
-  bool ended() const { return ended_; }
-  ControlRun run;
+// The words the reader knows; any other is refused, not ignored. Q (a start angle, G76's cut
+// depths) only in a threading cycle's block, D and A only in Haas's G76.
+bool known(char letter, const Block& b, bool cycle, Dialect d) {
+  static constexpr std::string_view kLetters = "GXZUWIKRFSTMP";
+  if (letter == 'Q') return cycle;
+  if (letter == 'D' || letter == 'A') return d == Dialect::kHaas && b.has_g(76);
+  return kLetters.find(letter) != std::string_view::npos;
+}
 
- private:
-  bool fail(const std::string& why) {
-    run.error = why;
-    return false;
-  }
-  double unit() const { return *inch_ ? kMmPerInch : 1; }
-  bool length(const Block& b, char letter, std::optional<double>& mm);
-  bool modes(const Block& b);
-  bool spindle_and_tool(const Block& b);
-  bool mcode(int m);
-  bool dwell(const Block& b);
-  bool home(const Block& b);
-  bool motion(const Block& b);
-  bool arc(const Block& b, Event& e);
-  void push(Event e);
-  Modal modal() const;
-
-  Dialect d_;
-  std::optional<bool> inch_;   // [0i-T] "Inch/metric conversion": power-on unit is a parameter
-  std::optional<int> motion_;  // group 01; its power-on code is parameter 3402#0
-  std::optional<bool> per_rev_;
-  std::optional<double> x_, z_;  // mm, X a radius; unknown after a reference return
-  double f_ = 0;
-  bool f_given_ = false;
-  double s_ = 0, clamp_ = 0;
-  bool css_ = false, s_css_ = false, on_ = false, ccw_ = false;
-  int tool_ = 0, offset_ = 0;
-  Coolant coolant_;
-  bool home_x_ = false, home_z_ = false;  // the axes the return the block before is part of
-  bool ended_ = false;
-  int line_ = 0;
-  std::string text_;
-};
+}  // namespace
 
 Modal Control::modal() const {
   Modal m;
@@ -163,8 +110,9 @@ bool Control::length(const Block& b, char letter, std::optional<double>& mm) {
 
 // The modal G codes of the block. Group 06 G20/G21 [0i-T] "Inch/metric conversion"; group 02
 // G96/G97 [0i-T] "Constant surface speed control"; group 05 G98/G99 [0i-T] "Feed per minute,
-// feed per revolution"; group 01 G0, G1, G2, G3, G32 [0i-T] "Positioning", "Linear
-// interpolation", "Circular interpolation", "Threading" [ctl] "G32". G18 (ZX plane), G40
+// feed per revolution"; group 01 G0, G1, G2, G3, G32, G92 [0i-T] "Positioning", "Linear
+// interpolation", "Circular interpolation", "Threading", "Single repetitive cycle" [ctl] "G32",
+// "G92"; G76 one-shot (group 00) [ctl] "G76 two-block". G18 (ZX plane), G40
 // (no tool-nose compensation) and G80 (no canned cycle) are the program's only state besides;
 // Haas G187 sets the smoothness of the path, not the path [Haas] "G187".
 bool Control::modes(const Block& b) {
@@ -178,11 +126,11 @@ bool Control::modes(const Block& b) {
       css_ = g == 96;
     else if (g == 98 || g == 99)
       per_rev_ = g == 99;
-    else if (g == 0 || g == 1 || g == 2 || g == 3 || g == 32)
+    else if (g == 0 || g == 1 || g == 2 || g == 3 || g == 32 || g == 92)
       motion_ = g;
     else if (g == 187 && d_ == Dialect::kHaas)
       continue;
-    else if (g != 4 && g != 18 && g != 28 && g != 40 && g != 50 && g != 80)
+    else if (g != 4 && g != 18 && g != 28 && g != 40 && g != 50 && g != 76 && g != 80)
       return fail("G" + std::to_string(g) + " is not read by the oracle");
   }
   for (const Word& w : b.words)
@@ -334,18 +282,14 @@ bool Control::motion(const Block& b) {
   return true;
 }
 
-// The words the reader knows; any other is refused, not ignored.
-bool known(char letter) {
-  static constexpr std::string_view kLetters = "GXZUWIKRFSTMP";
-  return kLetters.find(letter) != std::string_view::npos;
-}
-
 bool Control::block(const Block& b, int line, std::string_view text) {
   line_ = line, text_ = std::string(text);
   if (b.words.empty()) return true;
-  for (const Word& w : b.words)
-    if (!known(w.letter)) return fail(std::string("address ") + w.letter + " is not read");
   if (!modes(b)) return false;
+  const bool cycle = b.has_g(76) || motion_ == 92;
+  for (const Word& w : b.words)
+    if (!known(w.letter, b, cycle, d_))
+      return fail(std::string("address ") + w.letter + " is not read");
   if (const Word* f = b.find('F')) {
     if (!f->point) return fail("F without a decimal point");
     f_ = f->value, f_given_ = true;
@@ -355,19 +299,25 @@ bool Control::block(const Block& b, int line, std::string_view text) {
   home_x_ = home_z_ = false;
   if (b.has_g(4)) return dwell(b);
   if (b.has_g(50)) return true;
+  if (b.has_g(76)) return g76(b);
+  const bool moves = b.find('X') || b.find('U') || b.find('Z') || b.find('W');
+  if (motion_ == 92 && moves) return g92(b);  // a block without them cuts no pass
   return motion(b);
 }
 
-}  // namespace
+}  // namespace oracle::fanuc_detail
+
+namespace oracle {
 
 ControlRun fanuc_events(std::string_view program, Dialect dialect, bool block_delete) {
-  Control c(dialect);
+  using fanuc_detail::Block;
+  fanuc_detail::Control c(dialect);
   for (int line = 1; !program.empty() && !c.ended(); ++line) {
     const size_t nl = program.find('\n');
     const std::string_view text = program.substr(0, nl);
     program = nl == std::string_view::npos ? std::string_view() : program.substr(nl + 1);
     Block b;
-    std::string error = parse(text, b);
+    std::string error = fanuc_detail::parse(text, b);
     if (error.empty() && b.optional && block_delete) continue;
     if (error.empty() && c.block(b, line, text)) continue;
     c.run.error = error.empty() ? c.run.error : error;

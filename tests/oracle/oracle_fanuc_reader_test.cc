@@ -3,6 +3,9 @@
 // parameter or a setting.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <iterator>
+
 #include "compare.h"
 #include "fanuc_reader.h"
 #include "model.h"
@@ -126,6 +129,64 @@ TEST(OracleFanucReader, AnArcByRadius) {
   EXPECT_EQ(a.rotation, 1);
   EXPECT_NEAR(a.cx, 10, 1e-9);
   EXPECT_NEAR(a.cz, -8, 1e-9);
+}
+
+// G92: one pass per block from the start point (radius 10 at Z2), X modal Z: rapid in, the thread
+// cut, rapid out, rapid back.
+TEST(OracleFanucReader, G92CutsOnePassPerBlock) {
+  const ControlRun r =
+      fanuc_events(program("G92 X16. Z-20. F1.5\nX15. Q180000\n"), Dialect::kFanuc, false);
+  ASSERT_EQ(r.error, "");
+  ASSERT_EQ(r.events.size(), 9u);
+  const double want[8][2] = {{8, 2},   {8, -20},   {10, -20}, {10, 2},
+                             {7.5, 2}, {7.5, -20}, {10, -20}, {10, 2}};
+  for (int i = 0; i < 8; ++i) {
+    const Event& e = r.events[i + 1];
+    EXPECT_EQ(e.motion, i % 4 == 1 ? MotionKind::kThread : MotionKind::kRapid) << i;
+    EXPECT_DOUBLE_EQ(e.x, want[i][0]) << i;
+    EXPECT_DOUBLE_EQ(e.z, want[i][1]) << i;
+  }
+  EXPECT_DOUBLE_EQ(r.events[2].lead, 1.5);
+}
+
+// Fanuc G76 P010060 Q100 R0.05 / X16. Z-20. P1000 Q400: k 1, Δd 0.4, Δdmin 0.1, d 0.05. Depths
+// 0.4·√n: 0.4, 0.5657, 0.6928, 0.8; then 0.8944 would add 0.0944 < 0.1: 0.9, then 1.0 past
+// k - d: 0.95; then m = 1 pass at 1. Each shifted (1 - depth)·tan 30° toward the start.
+TEST(OracleFanucReader, G76ExpandsToItsPasses) {
+  const ControlRun r = fanuc_events(
+      program("G76 P010060 Q100 R0.05\nG76 X16. Z-20. P1000 Q400 F1.5\n"), Dialect::kFanuc, false);
+  ASSERT_EQ(r.error, "");
+  const double depths[] = {0.4, 0.4 * std::sqrt(2), 0.4 * std::sqrt(3), 0.8, 0.9, 0.95, 1};
+  ASSERT_EQ(r.events.size(), 1 + 4 * std::size(depths));
+  for (size_t i = 0; i < std::size(depths); ++i) {
+    const Event &in = r.events[1 + 4 * i], &cut = r.events[2 + 4 * i];
+    EXPECT_NEAR(in.x, 8 + 1 - depths[i], 1e-9) << i;
+    EXPECT_NEAR(in.z, 2 + (1 - depths[i]) * std::tan(M_PI / 6), 1e-9) << i;
+    EXPECT_EQ(cut.motion, MotionKind::kThread);
+    EXPECT_NEAR(cut.z, -20, 1e-9);
+  }
+  EXPECT_EQ(fanuc_events(program("G76 P011060 Q100 R0.05\nG76 X16. Z-20. P1000 Q400 F1.5\n"),
+                         Dialect::kFanuc, false)
+                .error,
+            "G76 with a chamfer (where it sits is not documented)");
+}
+
+// Haas G76 X16. Z-20. K1. D0.4 P1 (no A: straight in): 0.4·√N below K, then K: 7 passes; P3 with
+// D0.3: 0.3, 0.6, 0.9, then 1.
+TEST(OracleFanucReader, HaasG76IsOneBlock) {
+  const ControlRun r =
+      fanuc_events(program("G76 X16. Z-20. K1. D0.4 P1 F1.5\n"), Dialect::kHaas, false);
+  ASSERT_EQ(r.error, "");
+  ASSERT_EQ(r.events.size(), 1 + 4 * 7u);
+  EXPECT_NEAR(r.events[1 + 4 * 5].x, 8 + 1 - 0.4 * std::sqrt(6), 1e-9);
+  EXPECT_DOUBLE_EQ(r.events[1 + 4 * 5].z, 2);
+  const ControlRun c =
+      fanuc_events(program("G76 X16. Z-20. K1. D0.3 P3 F1.5\n"), Dialect::kHaas, false);
+  ASSERT_EQ(c.events.size(), 1 + 4 * 4u);
+  EXPECT_NEAR(c.events[1 + 4 * 2].x, 8.1, 1e-9);
+  EXPECT_EQ(
+      fanuc_events(program("G76 X16. Z-20. K1. D0.3 P3 F1.5\n"), Dialect::kFanuc, false).error,
+      "address D is not read");
 }
 
 // The reader against the model: the right program matches, a wrong word differs.

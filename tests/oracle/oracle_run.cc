@@ -2,6 +2,8 @@
 //   oracle_run --seed N               one program: its CL, NC, events and first difference
 //   oracle_run --seconds S [--from N] fresh seeds from N (default: the clock) for S seconds
 //   oracle_run --count C [--from N]   C programs from seed N (default 1)
+//   oracle_run --control fanuc|haas --read P.nc   a program's events as the oracle's reader
+//                                     reads them (block delete off), or where it stops
 //   … --control linuxcnc|fanuc|haas   the control (default linuxcnc): linuxcnc-lathe run by rs274,
 //                                     fanuc-0i-t or haas-st read by the oracle's reader
 // Prints the count, the classes of difference with their first seed and the first program that
@@ -12,6 +14,7 @@
 #include <string>
 
 #include "differential.h"
+#include "fanuc_reader.h"
 
 namespace {
 
@@ -35,12 +38,30 @@ int one(oracle::Differential& d, uint32_t seed) {
   return r.differs ? 1 : 0;
 }
 
+// The reader's events of the program in `path`.
+int read(oracle::Control control, const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f || control == oracle::Control::kLinuxcnc) return usage();
+  std::string text;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+  std::fclose(f);
+  const oracle::Dialect d =
+      control == oracle::Control::kHaas ? oracle::Dialect::kHaas : oracle::Dialect::kFanuc;
+  const oracle::ControlRun r = oracle::fanuc_events(text, d, false);
+  for (const oracle::Event& e : r.events) std::printf("%s\n", oracle::describe(e).c_str());
+  if (r.error.empty()) return 0;
+  std::printf("stops at line %d: %s\n", r.error_line, r.error.c_str());
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   double seconds = 0;
   int count = 0;
   long long seed = -1, from = -1;
+  std::string read_path;
   oracle::Control control = oracle::Control::kLinuxcnc;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -52,11 +73,14 @@ int main(int argc, char** argv) {
       count = std::atoi(argv[i + 1]);
     else if (a == "--from")
       from = std::atoll(argv[i + 1]);
+    else if (a == "--read")
+      read_path = argv[i + 1];
     else if (a == "--control" && oracle::control_named(argv[i + 1], control))
       continue;
     else
       return usage();
   }
+  if (!read_path.empty()) return read(control, read_path);
   if (argc % 2 == 0 || (seed < 0 && seconds <= 0 && count <= 0)) return usage();
   if (control == oracle::Control::kLinuxcnc && !oracle::rs274_installed()) {
     std::fprintf(stderr, "oracle_run: rs274 not installed (apt-get install linuxcnc-uspace)\n");
