@@ -82,6 +82,21 @@ TEST(ClMeaning, AnArcDoesNotStartAtTheMachinesHome) {
                "G28 W0.\nG1 X60. Z10. G99 F0.2\nG3 X40. Z0. I0. K-10.\n");
 }
 
+// A G32 block's start angle is in the control's unit, 0.001 degree without a decimal point, as
+// G92's (format thread_angle): the second start of a chained two-start thread is Q180000, not
+// Q180. (Fanuc: "for a shift angle of 180 degrees, specify Q180000"; a decimal point is not
+// allowed). Found by the oracle's Fanuc reader on samples/golden/fanuc-0i-t.
+TEST(ClMeaning, AThreadBlocksStartAngleIsInThousandthsOfADegree) {
+  const std::string t =
+      "UNITS/MM\nLOADTL/5\nSPINDL/400,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/20,0,6\n"
+      "THREAD/ON,MMPR,1.5,MULTRD,2,DEPTH,0.92,CUTS,4,OPTION,0,CHAIN\nGOTO/12,0,0\n"
+      "GOTO/12,0,-15\nGOTO/14,0,-25\nTHREAD/OFF\nFINI\n";
+  for (const char* machine : {"fanuc-0i-t", "haas-st"}) {
+    expect_lines(machine, t, "G32 Z-15. F3. Q0\n");
+    expect_lines(machine, t, "G32 Z-15. F3. Q180000\n");
+  }
+}
+
 // D: LinuxCNC's M6 stops the spindle; the CL left it turning, so it turns again before the next
 // motion (and only then: a SPINDL/ after the LOADTL/ says it instead).
 TEST(ClMeaning, AToolChangeLeavesTheSpindleAsTheClLeftIt) {
