@@ -54,7 +54,7 @@ std::string parse(std::string_view line, Block& b) {
 }
 
 // The words the reader knows; any other is refused, not ignored. Q (a start angle, G76's cut
-// depths) only in a threading cycle's block, D and A only in Haas's G76.
+// depths) only in a thread's or a threading cycle's block, D and A only in Haas's G76.
 bool known(char letter, const Block& b, bool cycle, Dialect d) {
   static constexpr std::string_view kLetters = "GXZUWIKRFSTMP";
   if (letter == 'Q') return cycle;
@@ -274,6 +274,8 @@ bool Control::motion(const Block& b) {
                        : MotionKind::kArc;
   if (g == 32 && !on_) return fail("G32 with the spindle stopped");
   if (g == 32) e.lead = f_ * unit();
+  // G32 Q: the start angle in 0.001 degree, a decimal point not allowed [0i-T] "Threading".
+  if (const Word* q = b.find('Q'); q && q->point) return fail("Q with a decimal point");
   if ((g == 1 || g == 2 || g == 3) && (!f_given_ || !per_rev_))
     return fail("a feed move before F, G98 or G99");
   if (e.motion == MotionKind::kArc && !arc(b, e)) return false;
@@ -286,7 +288,7 @@ bool Control::block(const Block& b, int line, std::string_view text) {
   line_ = line, text_ = std::string(text);
   if (b.words.empty()) return true;
   if (!modes(b)) return false;
-  const bool cycle = b.has_g(76) || motion_ == 92;
+  const bool cycle = b.has_g(76) || motion_ == 92 || motion_ == 32;
   for (const Word& w : b.words)
     if (!known(w.letter, b, cycle, d_))
       return fail(std::string("address ") + w.letter + " is not read");
