@@ -140,9 +140,11 @@ const char* machine_of(Control c) {
   return "?";
 }
 
-bool Differential::init(const std::string& source_dir, std::string& error, Control control) {
+bool Differential::init(const std::string& source_dir, std::string& error, Control control,
+                        const std::string& machine) {
   control_ = control;
-  if (!clpost::load_machine(machine_of(control), {source_dir}, {}, machine_, error)) return false;
+  const std::string name = machine.empty() ? machine_of(control) : machine;
+  if (!clpost::load_machine(name, {source_dir}, {}, machine_, error)) return false;
   // Fanuc and Haas: IS-B, 0.001 mm and 0.0001 in (docs/cl-meaning.md, "Inch output").
   if (control != Control::kLinuxcnc) resolution_ = {0.001, 0.0001};
   table_ = source_dir + "/tests/oracle/data/offsets.tbl";
@@ -246,6 +248,7 @@ ProgramResult Differential::check(uint32_t seed) {
   ProgramResult r;
   r.seed = seed;
   r.control = control_;
+  r.machine = machine_.name;
   r.cl = generate_program(seed);
   const bool home = machine_.templates.count("home") > 0;
   ModelResult m = model_events(r.cl, {machine_.default_units == "in", machine_.max_rpm, home});
@@ -290,6 +293,7 @@ ProgramResult Differential::check(uint32_t seed) {
 Summary Differential::run(uint32_t first, int count, double seconds) {
   Summary s;
   s.control = control_;
+  s.machine = machine_.name;
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

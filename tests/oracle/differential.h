@@ -32,6 +32,7 @@ struct RunDifference {
 struct ProgramResult {
   uint32_t seed = 0;
   Control control = Control::kLinuxcnc;
+  std::string machine;
   std::string cl, nc;
   std::vector<Event> model;
   bool differs = false;
@@ -49,6 +50,7 @@ struct ClassCount {
 
 struct Summary {
   Control control = Control::kLinuxcnc;
+  std::string machine;
   int programs = 0, differing = 0, refused = 0;
   double seconds = 0;
   std::map<std::string, ClassCount> classes;
@@ -60,8 +62,9 @@ class Differential {
  public:
   // `source_dir`: the source tree (machines, posts, tests/oracle/data/offsets.tbl). False (with
   // the reason in `error`) when the control's machine does not load.
-  bool init(const std::string& source_dir, std::string& error,
-            Control control = Control::kLinuxcnc);
+  // `machine`: another shipped machine of the control than machine_of(control).
+  bool init(const std::string& source_dir, std::string& error, Control control = Control::kLinuxcnc,
+            const std::string& machine = "");
   ~Differential();
 
   ProgramResult check(uint32_t seed);

@@ -4,6 +4,8 @@
 //   oracle_run --count C [--from N]   C programs from seed N (default 1)
 //   oracle_run --control fanuc|haas --read P.nc   a program's events as the oracle's reader
 //                                     reads them (block delete off), or where it stops
+//   … --machine M                     another shipped machine of the control (fanuc-0i-tf-live,
+//                                     haas-st-20y)
 //   … --control linuxcnc|fanuc|haas   the control (default linuxcnc): linuxcnc-lathe run by rs274,
 //                                     fanuc-0i-t or haas-st read by the oracle's reader
 // Prints the count, the classes of difference with their first seed and the first program that
@@ -21,7 +23,7 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: oracle_run --seed N | --seconds S [--from N] | --count C [--from N]"
-               " [--control linuxcnc|fanuc|haas]\n");
+               " [--control linuxcnc|fanuc|haas] [--machine M]\n");
   return 2;
 }
 
@@ -61,7 +63,7 @@ int main(int argc, char** argv) {
   double seconds = 0;
   int count = 0;
   long long seed = -1, from = -1;
-  std::string read_path;
+  std::string read_path, machine;
   oracle::Control control = oracle::Control::kLinuxcnc;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -73,6 +75,8 @@ int main(int argc, char** argv) {
       count = std::atoi(argv[i + 1]);
     else if (a == "--from")
       from = std::atoll(argv[i + 1]);
+    else if (a == "--machine")
+      machine = argv[i + 1];
     else if (a == "--read")
       read_path = argv[i + 1];
     else if (a == "--control" && oracle::control_named(argv[i + 1], control))
@@ -88,7 +92,7 @@ int main(int argc, char** argv) {
   }
   oracle::Differential d;
   std::string error;
-  if (!d.init(CLPOST_SOURCE_DIR, error, control)) {
+  if (!d.init(CLPOST_SOURCE_DIR, error, control, machine)) {
     std::fprintf(stderr, "oracle_run: %s\n", error.c_str());
     return 2;
   }

@@ -59,7 +59,7 @@ std::string report(const ProgramResult& r) {
   if (!r.message.empty()) t += "  " + r.message + (r.message.back() == '\n' ? "" : "\n");
   for (const RunDifference& run : r.runs) t += run_report(r, run);
   t += "--- CL (oracle_run --seed " + std::to_string(r.seed) + ")\n" + numbered(r.cl);
-  if (!r.nc.empty()) t += "--- NC (" + std::string(machine_of(r.control)) + ")\n" + numbered(r.nc);
+  if (!r.nc.empty()) t += "--- NC (" + r.machine + ")\n" + numbered(r.nc);
   return t;
 }
 
@@ -67,7 +67,7 @@ std::string summary_text(const Summary& s) {
   char head[160];
   std::snprintf(head, sizeof head,
                 "%s: %d programs in %.1f s: %d differ from the model, %d refused\n",
-                machine_of(s.control), s.programs, s.seconds, s.differing, s.refused);
+                s.machine.c_str(), s.programs, s.seconds, s.differing, s.refused);
   std::string t = head;
   for (const auto& [klass, c] : s.classes) {
     char line[64];
