@@ -296,13 +296,16 @@ bool Control::block(const Block& b, int line, std::string_view text) {
     if (!f->point) return fail("F without a decimal point");
     f_ = f->value, f_given_ = true;
   }
+  // Whether an M code in a block that moves acts before or after the move is the builder's
+  // [0i-T] "Miscellaneous function": refused.
+  const bool moves = b.find('X') || b.find('U') || b.find('Z') || b.find('W');
+  if (moves && b.find('M') && !b.has_g(4)) return fail("an M code in a block that moves");
   if (!spindle_and_tool(b)) return false;
   if (b.has_g(28)) return home(b);
   home_x_ = home_z_ = false;
   if (b.has_g(4)) return dwell(b);
   if (b.has_g(50)) return true;
   if (b.has_g(76)) return g76(b);
-  const bool moves = b.find('X') || b.find('U') || b.find('Z') || b.find('W');
   if (motion_ == 92 && moves) return g92(b);  // a block without them cuts no pass
   return motion(b);
 }

@@ -117,6 +117,8 @@ TEST(OracleFanucReader, ParameterDependentMeaningsAreRefused) {
             "G32 with the spindle stopped");
   EXPECT_EQ(fanuc_events(program("G41 X10.\n"), Dialect::kFanuc, false).error,
             "G41 is not read by the oracle");
+  EXPECT_EQ(fanuc_events(program("G1 X10. G98 F100. M8\n"), Dialect::kFanuc, false).error,
+            "an M code in a block that moves");
   // A start angle is in 0.001 degree: Q180000, never Q180.
   EXPECT_EQ(fanuc_events(program("G32 Z-5. F1. Q180000\n"), Dialect::kFanuc, false).error, "");
   EXPECT_EQ(fanuc_events(program("G32 Z-5. F1. Q180.\n"), Dialect::kFanuc, false).error,
