@@ -47,8 +47,13 @@ std::optional<Check> geometry(const Event& m, const Event& r, const Resolution& 
     return std::nullopt;
   }
   const char* kinds[] = {"rapid", "feed", "arc", "thread"};
-  if (m.home != r.home)
-    return differs("home return", m.home ? "a return" : "a move", r.home ? "a return" : "a move");
+  auto home = [](int h) {
+    return std::string(h == 0        ? "a move"
+                       : h == kHomeX ? "a return in X"
+                       : h == kHomeZ ? "a return in Z"
+                                     : "a return in X and Z");
+  };
+  if (m.home != r.home) return differs("home return", home(m.home), home(r.home));
   if (m.home) return std::nullopt;  // where the reference is, neither says
   if (m.motion != r.motion)
     return differs("motion", kinds[static_cast<int>(m.motion)], kinds[static_cast<int>(r.motion)]);

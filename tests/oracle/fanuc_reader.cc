@@ -216,10 +216,9 @@ bool Control::home(const Block& b) {
   if (!x && !z) return true;
   if ((x && home_x_) || (z && home_z_) || (!home_x_ && !home_z_)) {
     home_x_ = home_z_ = false;
-    Event e;
-    e.home = true;
-    push(e);
+    push(Event{});
   }
+  run.events.back().home |= (x ? kHomeX : 0) | (z ? kHomeZ : 0);
   if (x) x_.reset(), home_x_ = true;
   if (z) z_.reset(), home_z_ = true;
   return true;

@@ -92,7 +92,10 @@ TEST(OracleFanucReader, AReferenceReturnLeavesThePositionUnsaid) {
       fanuc_events(program("G28 U0.\nG28 W0.\nX30. Z1.\n"), Dialect::kFanuc, false);
   ASSERT_EQ(r.error, "");
   ASSERT_EQ(r.events.size(), 3u);
-  EXPECT_TRUE(r.events[1].home);
+  EXPECT_EQ(r.events[1].home, kHomeX | kHomeZ);
+  // X alone: a return the model's GOHOME (every axis) is not.
+  EXPECT_EQ(fanuc_events(program("G28 U0.\nX30. Z1.\n"), Dialect::kFanuc, false).events[1].home,
+            kHomeX);
   EXPECT_EQ(r.events[2].motion, MotionKind::kRapid);  // G28 is one-shot: G0 stays in force
   const ControlRun z = fanuc_events(program("G28 U0.\nG28 W0.\nZ1.\n"), Dialect::kFanuc, false);
   EXPECT_EQ(z.error, "a move from a reference position the program does not state");
