@@ -97,6 +97,22 @@ TEST(ClMeaning, AThreadBlocksStartAngleIsInThousandthsOfADegree) {
   }
 }
 
+// A hole cycle right after GOHOME on a machine whose home is its reference return: the cycle
+// starts where the tool is (Fanuc's R is measured from it: R-8. from the reference, not from
+// Z10), so the program moves to the hole's start first. Found by reading the Fanuc program
+// after the arc case; the cycle block was written straight after G28 W0.
+TEST(ClMeaning, AHoleCycleAfterTheMachinesHomeStartsFromItsStart) {
+  const std::string h =
+      "UNITS/MM\nLOADTL/2\nSPINDL/1500,RPM,CLW\nFEDRAT/0.1,MMPR\nRAPID\nGOTO/0,0,10\n"
+      "GOHOME/0,0,10\nCYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+  expect_lines("fanuc-0i-t", h,
+               "G28 W0.\n(HOLE AT CL LINE 9: DRILLING TO Z-3.)\nG0 X0. Z10.\n"
+               "G99 G83 X0. Z-3. R-8. F0.05\n");
+  expect_lines("haas-st", h,
+               "G28 W0.\n(HOLE AT CL LINE 9: DRILLING TO Z-3.)\nG0 X0. Z10.\n"
+               "G99 G81 X0. Z-3. R2. F0.05\n");
+}
+
 // D: LinuxCNC's M6 stops the spindle; the CL left it turning, so it turns again before the next
 // motion (and only then: a SPINDL/ after the LOADTL/ says it instead).
 TEST(ClMeaning, AToolChangeLeavesTheSpindleAsTheClLeftIt) {
