@@ -12,11 +12,13 @@
 #     against the CL; a clean post that does not verify stops the run (a bug in the post or in
 #     verify). Not in CI's smoke run: a hunt, run for as long as there is time.
 #   --oracle: the oracle's differential test (tests/oracle/, docs/cl-meaning.md) on fresh seeds
-#     for SECONDS (default 60): random lathe programs posted on linuxcnc-lathe, run through
-#     LinuxCNC's rs274 with block delete off and on, every event compared with the model of what
-#     the CL means. Builds build/ (Release, the tests' build) rather than build-fuzz/; prints the
-#     count, the classes of difference with their first seed, and the first program that differs
-#     in full (any other: build/tests/oracle_run --seed N). Exit status 1 when one differs.
+#     for SECONDS (default 60) on each control in turn: random lathe programs posted on
+#     linuxcnc-lathe and run through LinuxCNC's rs274, and posted on fanuc-0i-t and haas-st and
+#     read by the oracle's reader of their documented meanings, with block delete off and on,
+#     every event compared with the model of what the CL means. Builds build/ (Release, the tests'
+#     build) rather than build-fuzz/; prints for each control the count, the classes of
+#     difference with their first seed, the refusals, and the first program that differs in full
+#     (any other: build/tests/oracle_run --control C --seed N). Exit status 1 when one differs.
 #
 # ASan keeps 5 frames of allocation stack and a 32 MB quarantine unless ASAN_OPTIONS says
 # otherwise: the same checks, with shorter allocation stacks in reports and a fifth of the memory.
@@ -33,8 +35,12 @@ if [ "${1:-}" = --oracle ]; then
   scripts/deps.sh test
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build "$build" -j "$(nproc)" --target oracle_run
-  echo "== oracle: fresh seeds for $seconds s"
-  exec "$build/tests/oracle_run" --seconds "$seconds"
+  status=0
+  for control in linuxcnc fanuc haas; do
+    echo "== oracle on $control: fresh seeds for $seconds s"
+    "$build/tests/oracle_run" --control "$control" --seconds "$seconds" || status=1
+  done
+  exit "$status"
 fi
 if [ "${1:-}" = --round-trip ]; then
   export CLPOST_FUZZ_ROUND_TRIP=1

@@ -210,8 +210,11 @@ class HoleCycleOutput : public CycleOutput<Hole> {
     return f;
   }
   bool emit(const Hole& h, NcProgram& prog, const EmitContext& ctx) override {
+    // The cycle starts where the tool is (Fanuc's R is measured from there): at the hole's start,
+    // also after a home return, where the tool is at a position the program does not state.
     const LathePoint start = on_axis(h, h.start);
-    if (!prog.position() || std::fabs(prog.position()->r - start.r) > 1e-12 ||
+    if (!prog.position() || prog.is_at_machine_position() ||
+        std::fabs(prog.position()->r - start.r) > 1e-12 ||
         std::fabs(prog.position()->z - start.z) > 1e-12)
       prog.rapid(start);
     if (!template_written(write_cycle(prog, h, t_), prog.machine(), ctx)) return false;

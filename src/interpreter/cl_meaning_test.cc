@@ -60,6 +60,59 @@ TEST(ClMeaning, GohomeConsumesRapid) {
   expect_lines("linuxcnc-lathe", c, "G0 X200. Z100.\nG1 X20. Z-5.\n");
 }
 
+// An arc right after GOHOME on a machine whose home is its reference return (`G28 U0.`,
+// `G28 W0.`): the control starts the arc at the reference position, which the program does not
+// state, and I and K were measured from the point before GOHOME (found by the oracle's Fanuc
+// reader, seed 7: `G3 … I14.914 K13.674` after `G28 W0.`). Refused at the GOTO; on LinuxCNC,
+// where GOHOME/x,y,z is a rapid to the point, the arc starts there.
+TEST(ClMeaning, AnArcDoesNotStartAtTheMachinesHome) {
+  const std::string a = cl("GOTO/20,0,5\nGOHOME/30,0,10\nCIRCLE/30,0,0,0,1,0,10\nGOTO/20,0,0\n");
+  for (const char* machine : {"fanuc-0i-t", "haas-st"}) {
+    const Posted p = post(a, load(machine));
+    EXPECT_EQ(p.diags,
+              "t.cl:8:1: error: an arc cannot start at the machine's home (GOHOME at line 6 wrote "
+              "its home template, a position the program does not state): move to the arc's "
+              "start first\n  GOTO/20,0,0\n  ^\n")
+        << machine;
+  }
+  expect_lines("linuxcnc-lathe", a, "G0 X60. Z10.\nG3 X40. Z0. I0. K-10.\n");
+  expect_lines("fanuc-0i-t",
+               cl("GOTO/20,0,5\nGOHOME/30,0,10\nGOTO/30,0,10\nCIRCLE/30,0,0,0,1,0,10\n"
+                  "GOTO/20,0,0\n"),
+               "G28 W0.\nG1 X60. Z10. G99 F0.2\nG3 X40. Z0. I0. K-10.\n");
+}
+
+// A G32 block's start angle is in the control's unit, 0.001 degree without a decimal point, as
+// G92's (format thread_angle): the second start of a chained two-start thread is Q180000, not
+// Q180. (Fanuc: "for a shift angle of 180 degrees, specify Q180000"; a decimal point is not
+// allowed). Found by the oracle's Fanuc reader on samples/golden/fanuc-0i-t.
+TEST(ClMeaning, AThreadBlocksStartAngleIsInThousandthsOfADegree) {
+  const std::string t =
+      "UNITS/MM\nLOADTL/5\nSPINDL/400,RPM,CLW\nFEDRAT/0.2,MMPR\nRAPID\nGOTO/20,0,6\n"
+      "THREAD/ON,MMPR,1.5,MULTRD,2,DEPTH,0.92,CUTS,4,OPTION,0,CHAIN\nGOTO/12,0,0\n"
+      "GOTO/12,0,-15\nGOTO/14,0,-25\nTHREAD/OFF\nFINI\n";
+  for (const char* machine : {"fanuc-0i-t", "haas-st"}) {
+    expect_lines(machine, t, "G32 Z-15. F3. Q0\n");
+    expect_lines(machine, t, "G32 Z-15. F3. Q180000\n");
+  }
+}
+
+// A hole cycle right after GOHOME on a machine whose home is its reference return: the cycle
+// starts where the tool is (Fanuc's R is measured from it: R-8. from the reference, not from
+// Z10), so the program moves to the hole's start first. Found by reading the Fanuc program
+// after the arc case; the cycle block was written straight after G28 W0.
+TEST(ClMeaning, AHoleCycleAfterTheMachinesHomeStartsFromItsStart) {
+  const std::string h =
+      "UNITS/MM\nLOADTL/2\nSPINDL/1500,RPM,CLW\nFEDRAT/0.1,MMPR\nRAPID\nGOTO/0,0,10\n"
+      "GOHOME/0,0,10\nCYCLE/DRILL,DEPTH,3,MMPR,0.05,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n";
+  expect_lines("fanuc-0i-t", h,
+               "G28 W0.\n(HOLE AT CL LINE 9: DRILLING TO Z-3.)\nG0 X0. Z10.\n"
+               "G99 G83 X0. Z-3. R-8. F0.05\n");
+  expect_lines("haas-st", h,
+               "G28 W0.\n(HOLE AT CL LINE 9: DRILLING TO Z-3.)\nG0 X0. Z10.\n"
+               "G99 G81 X0. Z-3. R2. F0.05\n");
+}
+
 // D: LinuxCNC's M6 stops the spindle; the CL left it turning, so it turns again before the next
 // motion (and only then: a SPINDL/ after the LOADTL/ says it instead).
 TEST(ClMeaning, AToolChangeLeavesTheSpindleAsTheClLeftIt) {

@@ -12,12 +12,28 @@ namespace clpost {
 
 namespace {
 
-// The arc of CIRCLE/ `c` from where the tool is to `p`; false when it cannot be cut (reported).
-bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
+// Whether the program says where an arc starts; false (reported) when it does not.
+bool arc_start_known(PostState& s, const Statement& st) {
   if (!s.pos) {
     error(s, st, st.loc, "an arc needs a start point: no GOTO or FROM before CIRCLE/");
     return false;
   }
+  // GOHOME's point names the machine's home, but the control is at its reference position, which
+  // the program does not state: an arc from there would be measured from elsewhere.
+  if (s.prog.is_at_machine_position() && s.home_line > 0) {
+    error(s, st, st.loc,
+          fmt::format("an arc cannot start at the machine's home (GOHOME at line {} wrote its home "
+                      "template, a position the program does not state): move to the arc's start "
+                      "first",
+                      s.home_line));
+    return false;
+  }
+  return true;
+}
+
+// The arc of CIRCLE/ `c` from where the tool is to `p`; false when it cannot be cut (reported).
+bool arc_to(PostState& s, const Statement& st, const Circle& c, Point3 p) {
+  if (!arc_start_known(s, st)) return false;
   const LathePoint from = lathe(s, *s.pos), target = lathe(s, p);
   const LathePoint center = lathe(s, Point3{c.cx, c.cy, c.cz});
   const double r0 = std::hypot(from.r - center.r, from.z - center.z);

@@ -17,7 +17,7 @@ bool write_position(PostState& s, const Statement& st, const TemplateSpec& t) {
     return false;
   }
   // The tool is where the machine's position puts it: the next move writes both axes.
-  s.prog.forget_modal();
+  s.prog.to_machine_position();
   s.clock_at.reset();
   return true;
 }
@@ -38,6 +38,7 @@ void gohome_stmt(PostState& s, const Statement& st) {
   if (s.m.templates.count(std::string(tmpl::kHome.name)) > 0) {
     if (!write_position(s, st, tmpl::kHome)) return;
     s.pos = home;  // the CL's name for the home position, if it gave one
+    s.home_line = st.loc.line;
     return;
   }
   if (home) {

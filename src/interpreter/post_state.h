@@ -131,6 +131,7 @@ struct PostState {
   bool ended = false;    // FINI seen (or the end written)
   std::string partno;
   std::optional<Point3> pos;  // where the tool is, in the CL frame (unknown at first)
+  int home_line = 0;          // the CL line of the last GOHOME that wrote the home template
   bool rapid_next = false;    // RAPID: the next move only
   std::optional<Circle> circle;
   bool feed_given = false;

@@ -230,7 +230,7 @@ void thread_move(State& s, const NcBlock& b, Vec2 to, const Code& code) {
   }
   std::optional<double> angle;
   if (m.start_angle_word)
-    if (const NcWord* q = b.find(m.start_angle_address)) angle = s.value(*q);
+    if (const NcWord* q = b.find(m.start_angle_address)) angle = s.value(*q, "thread_angle");
   if (s.last_was_thread && !s.out.cuts.empty()) {
     NcCut& c = s.out.cuts.back();
     c.chain.push_back(to);

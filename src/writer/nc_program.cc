@@ -184,6 +184,7 @@ void NcProgram::axes(LathePoint p, bool force_both) {
   last_x_ = x;
   last_z_ = z;
   pos_ = p;
+  at_machine_position_ = false;
 }
 
 void NcProgram::feed_words() {
@@ -267,7 +268,10 @@ void NcProgram::thread(LathePoint p, const ThreadLead& l) {
     w_.word("F", std::fabs(l.lead_change));
     written_feed_.reset();
   }
-  if (l.start_angle && m_.start_angle_word) w_.word(m_.start_angle_address, *l.start_angle);
+  // The start angle in the control's unit (format thread_angle: Fanuc and Haas Q in 0.001 degree
+  // without a point, as G92's), else as the default format writes degrees (SINUMERIK SF=).
+  if (l.start_angle && m_.start_angle_word)
+    w_.word(m_.start_angle_address, *l.start_angle, m_.format_for("thread_angle"));
   w_.end_block();
 }
 
@@ -282,6 +286,7 @@ std::string NcProgram::num(std::string_view format, double v) const {
 void NcProgram::cycle_ended_at(LathePoint p) {
   forget_modal();
   pos_ = p;
+  at_machine_position_ = false;
 }
 
 void NcProgram::units_changed(double factor, bool inch) {

@@ -113,6 +113,14 @@ class NcProgram {
   // Forgets the modal motion code, feed and spindle words (after a cycle or raw insert whose
   // effect on them is unknown).
   void forget_modal();
+  // The blocks just written (a home return, G28 U0.) put the tool at a machine position the
+  // program does not state, until its next move: modal words forgotten, and no arc can start
+  // there (its I and K would be measured from a point the control is not at).
+  void to_machine_position() {
+    forget_modal();
+    at_machine_position_ = true;
+  }
+  bool is_at_machine_position() const { return at_machine_position_; }
   // After a units code (G20/G21): the control reads later numbers in the new units, so the
   // position and the feed are converted by `factor` (new units per old) and the next move writes
   // X, Z and F in full.
@@ -149,6 +157,7 @@ class NcProgram {
   const std::string& code_arc_ccw_;
   const std::string& code_thread_;
   std::optional<LathePoint> pos_;
+  bool at_machine_position_ = false;
   std::string motion_;                            // last motion code written
   std::optional<WrittenNumber> last_x_, last_z_;  // as last written
   double feed_ = 0;

@@ -31,7 +31,13 @@ bool near(double a, double b, double tol) {
   return std::abs(a - b) <= tol + kEps;
 }
 
-std::optional<Check> geometry(const Event& m, const Event& r) {
+// The tolerance of end points (`half`) or centres in the program's unit at `r`.
+double tolerance(const Resolution& res, const Event& r, bool half) {
+  const double inc = r.inch ? res.inch * kMmPerInch : res.mm;
+  return std::max(kPointTolerance, half ? inc / 2 : inc);
+}
+
+std::optional<Check> geometry(const Event& m, const Event& r, const Resolution& res) {
   if (m.kind != r.kind)
     return differs("event", m.kind == Event::Kind::kDwell ? "a dwell" : "a motion",
                    r.kind == Event::Kind::kDwell ? "a dwell" : "a motion");
@@ -41,17 +47,28 @@ std::optional<Check> geometry(const Event& m, const Event& r) {
     return std::nullopt;
   }
   const char* kinds[] = {"rapid", "feed", "arc", "thread"};
+  auto home = [](int h) {
+    return std::string(h == 0        ? "a move"
+                       : h == kHomeX ? "a return in X"
+                       : h == kHomeZ ? "a return in Z"
+                                     : "a return in X and Z");
+  };
+  if (m.home != r.home) return differs("home return", home(m.home), home(r.home));
+  if (m.home) return std::nullopt;  // where the reference is, neither says
   if (m.motion != r.motion)
     return differs("motion", kinds[static_cast<int>(m.motion)], kinds[static_cast<int>(r.motion)]);
-  if (!near(m.x, r.x, kPointTolerance) || !near(m.z, r.z, kPointTolerance))
+  const double end = tolerance(res, r, true), centre = tolerance(res, r, false);
+  if (!near(m.x, r.x, end) || !near(m.z, r.z, end))
     return differs("end point", "X" + num(m.x) + " Z" + num(m.z), "X" + num(r.x) + " Z" + num(r.z));
   if (m.motion == MotionKind::kArc) {
-    if (!near(m.cx, r.cx, kPointTolerance) || !near(m.cz, r.cz, kPointTolerance))
+    if (!near(m.cx, r.cx, centre) || !near(m.cz, r.cz, centre))
       return differs("arc centre", "X" + num(m.cx) + " Z" + num(m.cz),
                      "X" + num(r.cx) + " Z" + num(r.cz));
     if (m.rotation != r.rotation) return differs("arc sense", num(m.rotation), num(r.rotation));
   }
-  if (m.motion == MotionKind::kThread && !near(m.lead, r.lead, kPointTolerance))
+  // A lead is an F: half its last digit (4 decimals; in an inch program 0.00127 mm).
+  const double lead = r.inch ? (0.5e-4 + 0.5e-6) * kMmPerInch : kPointTolerance;
+  if (m.motion == MotionKind::kThread && !near(m.lead, r.lead, lead))
     return differs("lead", num(m.lead) + " mm", num(r.lead) + " mm");
   return std::nullopt;
 }
@@ -115,11 +132,16 @@ std::optional<Check> coolant(const Event& m, const Event& r) {
 
 namespace {
 
+// A run that stopped: "rs274 error: …", "fanuc error: …" (differential.cc).
+bool stops(const std::string& field) {
+  return field.find(" error: ") != std::string::npos;
+}
+
 // The cause a difference in the run with block delete on is due to: a statement inside a range
 // whose effect the program does not say again after it.
 std::string range_cause(const std::string& field, const Event& m) {
   const Provenance& w = m.why;
-  const bool stop = field.rfind("rs274 error", 0) == 0;
+  const bool stop = stops(field);
   const bool spindle = field.rfind("spindle", 0) == 0 || field == "CSS limit" ||
                        (stop && field.find("pindle") != std::string::npos);
   if ((field == "feed" || field == "feed mode" ||
@@ -145,8 +167,7 @@ std::string cause(const std::string& field, const Event& m) {
     return "after SPINDL/ON";
   if (field == "CSS limit" && w.spindle_by_on) return "after SPINDL/ON";
   const bool spindle_stop =
-      field == "spindle on/off" ||
-      (field.rfind("rs274 error", 0) == 0 && field.find("pindle") != std::string::npos);
+      field == "spindle on/off" || (stops(field) && field.find("pindle") != std::string::npos);
   if (spindle_stop && w.tool_change_since_spindle) return "after a tool change";
   if (field == "tool offset" && m.state.offset != m.state.tool) return "LOADTL ADJUST";
   if (field == "lead" && w.modal_pitch && w.units_since_pitch) return "PITCH before UNITS";
@@ -200,11 +221,11 @@ Difference count_difference(const std::vector<Event>& model, const std::vector<E
 }  // namespace
 
 Comparison compare_events(const std::vector<Event>& model, const std::vector<Event>& rs274,
-                          bool block_delete) {
+                          bool block_delete, const Resolution& resolution) {
   Comparison out;
   const size_t n = std::min(model.size(), rs274.size());
   for (size_t i = 0; i < n; ++i) {
-    if (std::optional<Check> g = geometry(model[i], rs274[i])) {
+    if (std::optional<Check> g = geometry(model[i], rs274[i], resolution)) {
       note(out, *g, i, model, rs274, block_delete);
       out.lined_up = i;
       return out;  // the events no longer line up

@@ -10,6 +10,14 @@ namespace oracle {
 
 constexpr double kPointTolerance = 1e-4;  // mm: end points, centres, leads
 
+// The least increment a program writes X, Z, I, K and R in (0: LinuxCNC's doubles, compared to
+// kPointTolerance). An end point is within half of it of the model's, a centre (a start point and
+// I, K, each rounded) within one.
+struct Resolution {
+  double mm = 0;    // in a G21 program, mm
+  double inch = 0;  // in a G20 program, in
+};
+
 struct Difference {
   bool found = false;
   size_t index = 0;    // in the run's event lists
@@ -37,7 +45,7 @@ struct Comparison {
 // themselves (after which the events no longer line up). `block_delete`: the run skips the
 // ranges, so "first after an OPSKIP range" is a context worth naming.
 Comparison compare_events(const std::vector<Event>& model, const std::vector<Event>& rs274,
-                          bool block_delete = false);
+                          bool block_delete = false, const Resolution& resolution = {});
 
 // The class a difference in `field` at the model's event `m` is counted under: the field and the
 // cause the model's provenance points at ("feed [after UNITS]"). With block delete on, the cause

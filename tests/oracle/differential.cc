@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "canon.h"
+#include "fanuc_reader.h"
 #include "generator.h"
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
@@ -109,8 +110,43 @@ bool rs274_installed() {
   return std::system("command -v rs274 >/dev/null 2>&1") == 0;
 }
 
-bool Differential::init(const std::string& source_dir, std::string& error) {
-  if (!clpost::load_machine("linuxcnc-lathe", {source_dir}, {}, machine_, error)) return false;
+bool control_named(const std::string& name, Control& c) {
+  for (Control k : {Control::kLinuxcnc, Control::kFanuc, Control::kHaas})
+    if (name == control_name(k)) return c = k, true;
+  return false;
+}
+
+const char* control_name(Control c) {
+  switch (c) {
+    case Control::kLinuxcnc:
+      return "linuxcnc";
+    case Control::kFanuc:
+      return "fanuc";
+    case Control::kHaas:
+      return "haas";
+  }
+  return "?";
+}
+
+const char* machine_of(Control c) {
+  switch (c) {
+    case Control::kLinuxcnc:
+      return "linuxcnc-lathe";
+    case Control::kFanuc:
+      return "fanuc-0i-t";
+    case Control::kHaas:
+      return "haas-st";
+  }
+  return "?";
+}
+
+bool Differential::init(const std::string& source_dir, std::string& error, Control control,
+                        const std::string& machine) {
+  control_ = control;
+  const std::string name = machine.empty() ? machine_of(control) : machine;
+  if (!clpost::load_machine(name, {source_dir}, {}, machine_, error)) return false;
+  // Fanuc and Haas: IS-B, 0.001 mm and 0.0001 in (docs/cl-meaning.md, "Inch output").
+  if (control != Control::kLinuxcnc) resolution_ = {0.001, 0.0001};
   table_ = source_dir + "/tests/oracle/data/offsets.tbl";
   std::string templ = (std::filesystem::temp_directory_path() / "clpost-oracle-XXXXXX").string();
   if (!::mkdtemp(templ.data())) {
@@ -127,24 +163,43 @@ Differential::~Differential() {
 
 Differential::Run Differential::run_rs274(const ProgramResult& r, bool block_delete) {
   const Output o = rs274(dir_, table_, "oracle.ngc", block_delete);
+  Run run = compare_run(r, block_delete, canon_events(o.out),
+                        o.exit_code == 0 ? "" : "rs274 error: " + first_error(o.err));
+  run.exit_code = o.exit_code;
+  run.err = o.err;
+  return run;
+}
+
+Differential::Run Differential::run_reader(const ProgramResult& r, bool block_delete) {
+  const Dialect d = control_ == Control::kHaas ? Dialect::kHaas : Dialect::kFanuc;
+  const ControlRun o = fanuc_events(r.nc, d, block_delete);
+  const std::string stop =
+      o.error.empty() ? "" : std::string(control_name(control_)) + " error: " + o.error;
+  Run run = compare_run(r, block_delete, o.events, stop);
+  run.exit_code = o.error.empty() ? 0 : 1;
+  if (!o.error.empty()) run.err = "NC line " + std::to_string(o.error_line) + ": " + o.error;
+  return run;
+}
+
+// The model's events against `got`; `stop`: why the run stopped before the program's end ("" when
+// it ran to it), the difference where the events stop lining up.
+Differential::Run Differential::compare_run(const ProgramResult& r, bool block_delete,
+                                            const std::vector<Event>& got,
+                                            const std::string& stop) {
   Run run;
   std::vector<Event> want;
   for (size_t i = 0; i < r.model.size(); ++i)
     if (!block_delete || !r.model[i].skipped) want.push_back(r.model[i]), run.to_model.push_back(i);
-  const std::vector<Event> got = canon_events(o.out);
-  run.c = compare_events(want, got, block_delete);
+  run.c = compare_events(want, got, block_delete, resolution_);
   run.events = got.size();
-  run.exit_code = o.exit_code;
-  run.err = o.err;
-  // rs274 stopped where the events stop lining up: its error is the difference there.
-  if (o.exit_code == 0 || run.c.lined_up != got.size()) return run;
+  if (stop.empty() || run.c.lined_up != got.size()) return run;
   std::vector<Found>& f = run.c.found;
   if (!f.empty() && f.back().d.field == "missing event") f.pop_back();
   Difference d;
   d.found = true;
   d.index = got.size();
-  d.field = "rs274 error: " + without_numbers(first_error(o.err));
-  d.detail = "rs274 stops after " + std::to_string(got.size()) + " events";
+  d.field = without_numbers(stop);
+  d.detail = "the run stops after " + std::to_string(got.size()) + " events";
   d.have_model = got.size() < want.size();
   if (d.have_model) d.model = want[got.size()];
   d.klass = d.have_model ? class_of(d.field, d.model, block_delete) : d.field;
@@ -181,7 +236,9 @@ void Differential::add(ProgramResult& r, const Run& run, bool block_delete, cons
   }
   if (d.klass.empty()) return;  // nothing of its own
   if (run.exit_code != 0)
-    d.message = "rs274 exit status " + std::to_string(run.exit_code) + ": " + run.err;
+    d.message = control_ == Control::kLinuxcnc
+                    ? "rs274 exit status " + std::to_string(run.exit_code) + ": " + run.err
+                    : run.err;
   if (!r.differs) r.klass = d.klass;
   r.differs = true;
   r.runs.push_back(std::move(d));
@@ -190,8 +247,11 @@ void Differential::add(ProgramResult& r, const Run& run, bool block_delete, cons
 ProgramResult Differential::check(uint32_t seed) {
   ProgramResult r;
   r.seed = seed;
+  r.control = control_;
+  r.machine = machine_.name;
   r.cl = generate_program(seed);
-  ModelResult m = model_events(r.cl, {machine_.default_units == "in", machine_.max_rpm});
+  const bool home = machine_.templates.count("home") > 0;
+  ModelResult m = model_events(r.cl, {machine_.default_units == "in", machine_.max_rpm, home});
   r.model = std::move(m.events);
   if (!m.error.empty()) {
     r.differs = true;
@@ -200,24 +260,40 @@ ProgramResult Differential::check(uint32_t seed) {
     r.message = m.error;
     return r;
   }
-  clpost::PostedText p = clpost::post_text(r.cl, machine_, "seed-" + std::to_string(seed) + ".cl");
+  const std::string name = "seed-" + std::to_string(seed) + ".cl";
+  clpost::PostedText p = clpost::post_text(r.cl, machine_, name);
   r.nc = p.program;
   if (p.diags.has_errors()) {
-    r.differs = true;
     r.message = p.diags.render_all();
+    // A located error ("seed-N.cl:line:col: error: …") is the control refusing what the CL
+    // asks; any other stop is a difference.
+    const size_t at = r.message.find(": error: ");
+    const size_t line = at == std::string::npos ? 0 : r.message.rfind('\n', at) + 1;
+    r.refused =
+        at != std::string::npos && r.message.compare(line, name.size() + 1, name + ":") == 0;
+    r.differs = !r.refused;
     r.klass = "clpost error: " + without_numbers(first_post_error(r.message));
     r.classes = {r.klass};
+    return r;
+  }
+  const bool optional = r.nc.find("\n/") != std::string::npos;
+  if (control_ != Control::kLinuxcnc) {
+    const Run off = run_reader(r, false);
+    add(r, off, false, nullptr);
+    if (optional) add(r, run_reader(r, true), true, &off);
     return r;
   }
   std::ofstream(dir_ + "/oracle.ngc", std::ios::binary) << r.nc;
   const Run off = run_rs274(r, false);
   add(r, off, false, nullptr);
-  if (r.nc.find("\n/") != std::string::npos) add(r, run_rs274(r, true), true, &off);
+  if (optional) add(r, run_rs274(r, true), true, &off);
   return r;
 }
 
 Summary Differential::run(uint32_t first, int count, double seconds) {
   Summary s;
+  s.control = control_;
+  s.machine = machine_.name;
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -226,6 +302,8 @@ Summary Differential::run(uint32_t first, int count, double seconds) {
        (count <= 0 || s.programs < count) && (seconds <= 0 || elapsed() < seconds); ++seed) {
     ProgramResult r = check(seed);
     ++s.programs;
+    if (r.refused && s.refusals[r.klass].programs++ == 0) s.refusals[r.klass].first_seed = seed;
+    s.refused += r.refused ? 1 : 0;
     if (!r.differs) continue;
     ++s.differing;
     for (const std::string& k : r.classes)

@@ -1,8 +1,9 @@
 #pragma once
-// The differential test: a generated CL program, posted by clpost on linuxcnc-lathe (through the
-// library, post_text()), run through LinuxCNC's interpreter (rs274) with block delete off and —
-// when the program has a block to delete — on, and rs274's events compared with the model's.
-// The only place where the oracle touches clpost.
+// The differential test: a generated CL program, posted by clpost on a control's machine (through
+// the library, post_text()), run with block delete off and — when the program has a block to
+// delete — on, and the run's events compared with the model's. LinuxCNC's programs run through
+// its own interpreter (rs274); Fanuc's and Haas's through the oracle's reader of their
+// documented meanings (fanuc_reader.h). The only place where the oracle touches clpost.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -14,7 +15,13 @@
 
 namespace oracle {
 
-// The first difference of one rs274 run.
+// The controls the oracle runs programs on, and the machine each posts for.
+enum class Control { kLinuxcnc, kFanuc, kHaas };
+bool control_named(const std::string& name, Control& c);  // "linuxcnc", "fanuc", "haas"
+const char* control_name(Control c);
+const char* machine_of(Control c);  // linuxcnc-lathe, fanuc-0i-t, haas-st
+
+// The first difference of one run.
 struct RunDifference {
   bool block_delete = false;
   std::string klass;
@@ -24,10 +31,13 @@ struct RunDifference {
 
 struct ProgramResult {
   uint32_t seed = 0;
+  Control control = Control::kLinuxcnc;
+  std::string machine;
   std::string cl, nc;
   std::vector<Event> model;
   bool differs = false;
-  std::string klass;                 // the class of its first difference
+  bool refused = false;              // clpost stopped with a located error (not a difference)
+  std::string klass;                 // the class of its first difference, or of the refusal
   std::vector<std::string> classes;  // every class of difference it shows
   std::string message;               // clpost's errors, or the model's
   std::vector<RunDifference> runs;   // the runs that differ, block delete off first
@@ -39,17 +49,22 @@ struct ClassCount {
 };
 
 struct Summary {
-  int programs = 0, differing = 0;
+  Control control = Control::kLinuxcnc;
+  std::string machine;
+  int programs = 0, differing = 0, refused = 0;
   double seconds = 0;
   std::map<std::string, ClassCount> classes;
+  std::map<std::string, ClassCount> refusals;  // by clpost's message
   std::vector<ProgramResult> firsts;  // the first program whose first difference is of a class
 };
 
 class Differential {
  public:
   // `source_dir`: the source tree (machines, posts, tests/oracle/data/offsets.tbl). False (with
-  // the reason in `error`) when linuxcnc-lathe does not load.
-  bool init(const std::string& source_dir, std::string& error);
+  // the reason in `error`) when the control's machine does not load.
+  // `machine`: another shipped machine of the control than machine_of(control).
+  bool init(const std::string& source_dir, std::string& error, Control control = Control::kLinuxcnc,
+            const std::string& machine = "");
   ~Differential();
 
   ProgramResult check(uint32_t seed);
@@ -67,8 +82,13 @@ class Differential {
 
  private:
   Run run_rs274(const ProgramResult& r, bool block_delete);
+  Run run_reader(const ProgramResult& r, bool block_delete);
+  Run compare_run(const ProgramResult& r, bool block_delete, const std::vector<Event>& got,
+                  const std::string& stop);
   void add(ProgramResult& r, const Run& run, bool block_delete, const Run* off);
 
+  Control control_ = Control::kLinuxcnc;
+  Resolution resolution_;
   clpost::Machine machine_;
   std::string table_, dir_;
 };

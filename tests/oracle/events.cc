@@ -54,6 +54,11 @@ std::string describe(const Event& e) {
   std::string t;
   if (e.kind == Event::Kind::kDwell) {
     t = "dwell " + fmt("%.4f s", e.seconds);
+  } else if (e.home) {
+    t = std::string("return to the reference position in ") + (e.home == (kHomeX | kHomeZ)
+                                                                   ? "X and Z"
+                                                               : e.home == kHomeX ? "X"
+                                                                                  : "Z");
   } else {
     t = std::string(kind_name(e.motion)) + " to X" + fmt("%.4f", e.x) + " Z" + fmt("%.4f", e.z) +
         " (mm, X radius)";

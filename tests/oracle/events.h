@@ -8,6 +8,7 @@
 namespace oracle {
 
 constexpr double kMmPerInch = 25.4;
+constexpr int kHomeX = 1, kHomeZ = 2;
 
 enum class MotionKind { kRapid, kFeed, kArc, kThread };
 enum class FeedMode { kPerMinute, kPerRev };
@@ -65,6 +66,9 @@ struct Event {
   double lead = 0;        // thread, mm/rev
   double seconds = 0;     // dwell
   Modal state;
+  // A return to the machine's reference position (GOHOME, G28): the axes it returns, kHomeX |
+  // kHomeZ (GOHOME: both); x and z unsaid.
+  int home = 0;
   bool skipped = false;  // inside an OPSKIP range (model)
   bool inch = false;     // the units the numbers were read in (rs274: the program's)
   int line = 0;          // the CL line (model) or the canonical call's number (rs274)

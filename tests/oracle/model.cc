@@ -135,6 +135,7 @@ bool Model::gohome(const ClStatement& st) {
   Event e;
   e.motion = MotionKind::kRapid;
   e.x = len(st.number(0)), e.z = len(st.number(2));
+  e.home = opts_.home_is_reference ? kHomeX | kHomeZ : 0;  // GOHOME: every axis
   rapid_next_ = false;  // GOHOME is the motion a pending RAPID applies to
   have_pos_ = true;
   x_ = e.x, z_ = e.z;

@@ -16,6 +16,9 @@ namespace oracle {
 struct ModelOptions {
   bool inch = false;
   double max_rpm = 3000;
+  // GOHOME/x,y,z is the machine's home return (its `home` template: Fanuc, Haas `G28 U0.`,
+  // `G28 W0.`; docs/machines.md), not a rapid to the point.
+  bool home_is_reference = false;
 };
 
 struct ModelResult {

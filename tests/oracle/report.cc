@@ -39,7 +39,8 @@ std::string run_report(const ProgramResult& r, const RunDifference& run) {
   if (d.found) {
     t += "    event " + std::to_string(d.index) + ": " + d.field + ": " + d.detail + "\n";
     t += "    model: " + (d.have_model ? describe(d.model) : "(no event)") + "\n";
-    t += "    rs274: " + (d.have_rs274 ? describe(d.rs274) : "(no event)") + "\n";
+    t += std::string(r.control == Control::kLinuxcnc ? "    rs274: " : "    read:  ") +
+         (d.have_rs274 ? describe(d.rs274) : "(no event)") + "\n";
   }
   if (!run.message.empty()) t += "    " + run.message + (run.message.back() == '\n' ? "" : "\n");
   std::vector<Event> events;
@@ -58,18 +59,24 @@ std::string report(const ProgramResult& r) {
   if (!r.message.empty()) t += "  " + r.message + (r.message.back() == '\n' ? "" : "\n");
   for (const RunDifference& run : r.runs) t += run_report(r, run);
   t += "--- CL (oracle_run --seed " + std::to_string(r.seed) + ")\n" + numbered(r.cl);
-  if (!r.nc.empty()) t += "--- NC (linuxcnc-lathe)\n" + numbered(r.nc);
+  if (!r.nc.empty()) t += "--- NC (" + r.machine + ")\n" + numbered(r.nc);
   return t;
 }
 
 std::string summary_text(const Summary& s) {
   char head[160];
-  std::snprintf(head, sizeof head, "%d programs in %.1f s: %d differ from the model\n", s.programs,
-                s.seconds, s.differing);
+  std::snprintf(head, sizeof head,
+                "%s: %d programs in %.1f s: %d differ from the model, %d refused\n",
+                s.machine.c_str(), s.programs, s.seconds, s.differing, s.refused);
   std::string t = head;
   for (const auto& [klass, c] : s.classes) {
     char line[64];
     std::snprintf(line, sizeof line, "  %5d programs, first seed %-10u ", c.programs, c.first_seed);
+    t += line + klass + "\n";
+  }
+  for (const auto& [klass, c] : s.refusals) {
+    char line[80];
+    std::snprintf(line, sizeof line, "  %5d refused, first seed %-10u ", c.programs, c.first_seed);
     t += line + klass + "\n";
   }
   return t;
