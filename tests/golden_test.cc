@@ -1,7 +1,8 @@
 // Every sample posts on every shipped machine exactly as its reviewed golden NC file says:
 // samples/*.{cls,ncl,apt,cl} and the shared thread set samples/threads/*.apt on every machine,
-// samples/machines/<machine>.* on its own machine. Goldens: samples/golden/<machine>/<name><ext>
-// (threads samples as threads-<stem>). scripts/update-goldens.sh rewrites them (review the diff
+// samples/machines/<machine>.* on its own machine, samples/millturn/*.apt on every machine with
+// live tools (millturn.live_tools). Goldens: samples/golden/<machine>/<name><ext> (thread samples
+// as threads-<stem>, mill-turn samples as millturn-<stem>). scripts/update-goldens.sh rewrites them (review the diff
 // line by line before committing).
 #include <gtest/gtest.h>
 
@@ -17,13 +18,16 @@ namespace fs = std::filesystem;
 
 struct ShippedMachine {
   std::string name, ext;
+  bool live_tools = false;
 };
 
 // Every shipped machine with its output extension.
 std::vector<ShippedMachine> shipped_machines() {
   std::vector<ShippedMachine> out;
-  for (const std::string& name : shipped_machine_names())
-    out.push_back({name, shipped_machine(name).extension});
+  for (const std::string& name : shipped_machine_names()) {
+    const Machine m = shipped_machine(name);
+    out.push_back({name, m.extension, m.live_tools});
+  }
   return out;
 }
 
@@ -45,14 +49,17 @@ struct Case {
   std::string golden_name;  // without extension
 };
 
-std::vector<Case> golden_cases(const std::string& machine) {
+std::vector<Case> golden_cases(const ShippedMachine& machine) {
   fs::path samples = source_dir() + "/samples";
   std::vector<Case> out;
   for (const fs::path& p : cl_files(samples)) out.push_back({p, p.stem().string()});
   for (const fs::path& p : cl_files(samples / "threads"))
     out.push_back({p, "threads-" + p.stem().string()});
   for (const fs::path& p : cl_files(samples / "machines"))
-    if (p.stem() == machine) out.push_back({p, p.stem().string()});
+    if (p.stem() == machine.name) out.push_back({p, p.stem().string()});
+  if (machine.live_tools)
+    for (const fs::path& p : cl_files(samples / "millturn"))
+      out.push_back({p, "millturn-" + p.stem().string()});
   return out;
 }
 
@@ -62,7 +69,7 @@ TEST(Golden, EverySamplePostsAsReviewedOnEveryMachine) {
   std::string dir = temp_dir();
   int compared = 0;
   for (const ShippedMachine& m : machines) {
-    std::vector<Case> cases = golden_cases(m.name);
+    std::vector<Case> cases = golden_cases(m);
     ASSERT_GE(cases.size(), 10u) << "four samples and the seven shared thread samples";
     for (const Case& c : cases) {
       fs::path golden =
@@ -85,7 +92,7 @@ TEST(Golden, EverySamplePostsAsReviewedOnEveryMachine) {
 TEST(Golden, EveryGoldenVerifiesAgainstItsSample) {
   int verified = 0;
   for (const ShippedMachine& m : shipped_machines()) {
-    for (const Case& c : golden_cases(m.name)) {
+    for (const Case& c : golden_cases(m)) {
       fs::path golden =
           fs::path(source_dir()) / "samples/golden" / m.name / (c.golden_name + m.ext);
       RunResult r = run(quote(clpost_bin()) + " verify -m " + m.name + " " +
@@ -105,7 +112,7 @@ TEST(Golden, EveryGoldenVerifiesAgainstItsSample) {
 TEST(Golden, EveryGoldenHasItsSample) {
   for (const ShippedMachine& m : shipped_machines()) {
     std::set<std::string> expected;
-    for (const Case& c : golden_cases(m.name)) expected.insert(c.golden_name + m.ext);
+    for (const Case& c : golden_cases(m)) expected.insert(c.golden_name + m.ext);
     for (const auto& e : fs::directory_iterator(source_dir() + "/samples/golden/" + m.name))
       EXPECT_TRUE(expected.count(e.path().filename().string()))
           << "stale golden " << e.path() << " (no sample posts to it)";

@@ -388,5 +388,93 @@ TEST(Rs274, MillTurnFaceMillingInXzcFollowsThePartPath) {
   fs::remove_all(dir);
 }
 
+// The mill-turn sample (samples/millturn/part.apt) as linuxcnc-lathe-c's reviewed program, run by
+// rs274: every live-tool feed, mapped back to the part (X the radius at angle C, less the C index
+// its CL frame is turned by), is where the CL puts it, within 0.01 mm. By hand from the CL:
+// - T3: four face holes at radius 20, C 0/90/180/270, bottom Z-10 (pecks of 3 from R Z2);
+// - T4: two radial holes at Z-25 down to radius 30 - 8 = 22, at C 45 and 225;
+// - T5: the stadium at Z-2, C index 30: every point at distance 4 from the segment (11,0)-(19,0),
+//   its four tangent points (11,+-4), (19,+-4) reached.
+struct Canon {
+  int tool = 0;
+  bool feed = false;
+  std::vector<double> from, to;  // x (radius), y, z, a, b, c
+};
+
+std::vector<Canon> canon_moves(const std::string& out_text) {
+  std::vector<Canon> out;
+  int tool = 0;
+  std::vector<double> at;
+  std::istringstream out_lines(out_text);
+  for (std::string line; std::getline(out_lines, line);) {
+    if (const size_t t = line.find("CHANGE_TOOL("); t != std::string::npos)
+      tool = static_cast<int>(canon_numbers(line.substr(t))[0]);
+    const size_t r = line.find("STRAIGHT_TRAVERSE("), f = line.find("STRAIGHT_FEED(");
+    if (r == std::string::npos && f == std::string::npos) continue;
+    const std::vector<double> v = canon_numbers(line.substr(r != std::string::npos ? r : f));
+    if (!at.empty()) out.push_back({tool, f != std::string::npos, at, v});
+    at = v;
+  }
+  return out;
+}
+
+// The part point of canonical position `v` sampled at t along from-to, in the CL frame of index
+// `index` degrees.
+std::pair<double, double> part_xy(const Canon& m, double t, double index) {
+  const double deg = std::acos(-1.0) / 180;
+  const double x = m.from[0] + (m.to[0] - m.from[0]) * t;
+  const double c = (m.from[5] + (m.to[5] - m.from[5]) * t - index) * deg;
+  return {x * std::cos(c), x * std::sin(c)};
+}
+
+TEST(Rs274, MillTurnPartIsWhereTheClSays) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string ngc = source_dir() + "/samples/golden/linuxcnc-lathe-c/millturn-part.ngc";
+  const std::string dir = temp_dir();
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  std::vector<std::pair<double, double>> face, radial;
+  const std::vector<std::pair<double, double>> tangents = {{11, -4}, {19, -4}, {19, 4}, {11, 4}};
+  std::vector<bool> reached(tangents.size(), false);
+  size_t stadium = 0;
+  for (const Canon& m : canon_moves(r.out)) {
+    if (!m.feed) continue;
+    if (m.tool == 3 && std::abs(m.to[2] + 10) < 1e-6) face.push_back(part_xy(m, 1, 0));
+    if (m.tool == 4 && std::abs(m.to[0] - 22) < 1e-6) {
+      EXPECT_NEAR(m.to[2], -25, 1e-6);
+      radial.push_back(part_xy(m, 1, 0));
+    }
+    if (m.tool != 5) continue;
+    ++stadium;
+    for (int k = 0; k <= 8; ++k) {
+      const auto [px, py] = part_xy(m, k / 8.0, 30);
+      const double along = std::hypot(px - std::clamp(px, 11.0, 19.0), py);
+      EXPECT_NEAR(along, 4, 0.01) << "T5 feed at " << k << "/8: part " << px << ", " << py;
+      for (size_t i = 0; i < tangents.size(); ++i)
+        reached[i] =
+            reached[i] || std::hypot(px - tangents[i].first, py - tangents[i].second) < 0.01;
+    }
+  }
+  const std::vector<std::pair<double, double>> face_cl = {{20, 0}, {0, 20}, {-20, 0}, {0, -20}};
+  const double h = 22 / std::sqrt(2.0);
+  const std::vector<std::pair<double, double>> radial_cl = {{h, h}, {-h, -h}};
+  ASSERT_EQ(face.size(), face_cl.size());
+  for (size_t i = 0; i < face.size(); ++i) {
+    EXPECT_NEAR(face[i].first, face_cl[i].first, 0.01) << "face hole " << i;
+    EXPECT_NEAR(face[i].second, face_cl[i].second, 0.01) << "face hole " << i;
+  }
+  ASSERT_EQ(radial.size(), radial_cl.size());
+  for (size_t i = 0; i < radial.size(); ++i) {
+    EXPECT_NEAR(radial[i].first, radial_cl[i].first, 0.01) << "radial hole " << i;
+    EXPECT_NEAR(radial[i].second, radial_cl[i].second, 0.01) << "radial hole " << i;
+  }
+  EXPECT_GT(stadium, 20u);
+  for (size_t i = 0; i < tangents.size(); ++i) EXPECT_TRUE(reached[i]) << "tangent point " << i;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace clpost::test

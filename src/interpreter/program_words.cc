@@ -170,8 +170,12 @@ void fini_stmt(PostState& s, const Statement&) {
 }
 
 void multax_stmt(PostState& s, const Statement& st) {
-  if (!st.args.empty() && st.args[0].is("ON"))
-    note_once(s, st, "MULTAX", "MULTAX/ON: tool axis vectors are ignored on a lathe");
+  if (st.args.empty() || !st.args[0].is("ON")) return;
+  // A machine with live tools reads a milling tool's axis: face or radial work (docs/millturn.md).
+  note_once(s, st, "MULTAX",
+            s.m.live_tools ? "MULTAX/ON: tool axis vectors are read for milling tools (face or "
+                             "radial work), ignored for turning tools"
+                           : "MULTAX/ON: tool axis vectors are ignored on a lathe");
 }
 
 void spline_stmt(PostState& s, const Statement& st) {
