@@ -94,6 +94,7 @@ void selctl_stmt(PostState& s, const Statement& st) {
 void clamp_stmt(PostState& s, const Statement& st) {
   if (std::any_of(st.args.begin(), st.args.end(), [](const Arg& a) { return a.is("CAXIS"); }))
     return clamp_c_stmt(s, st);
+  if (!st.args.empty() && st.args[0].is("TABLE")) return clamp_table_stmt(s, st);
   const std::optional<bool> on = on_off(s, st);
   if (!on) return;
   const std::string& code = s.m.code(*on ? "clamp_on" : "clamp_off");

@@ -314,9 +314,10 @@ const Arg* clamp_mode(PostState& s, const Statement& st) {
 // CLAMP/ON,CAXIS clamps C now (when engaged and not clamped) and after each index as before;
 // CLAMP/OFF,CAXIS unclamps it and leaves it unclamped after the indexes until CLAMP/ON or AUTO
 // (or until C is released); CLAMP/AUTO,CAXIS gives the clamping back to the post.
-void clamp_c_stmt(PostState& s, const Statement& st) {
-  const Arg* mode = clamp_mode(s, st);
-  if (mode == nullptr) return;
+namespace {
+
+// CLAMP/ON|OFF|AUTO for the C axis, `mode` the statement's word saying which.
+void clamp_c(PostState& s, const Statement& st, const Arg* mode) {
   if (!s.m.c_axis)
     return error(s, st, st.loc,
                  fmt::format("CLAMP/…,CAXIS clamps a C axis, and machine '{}' has none "
@@ -342,6 +343,32 @@ void clamp_c_stmt(PostState& s, const Statement& st) {
   code_block(s, key);
   s.c.clamped = on;
   time_c(s, 0, 1);
+}
+
+}  // namespace
+
+void clamp_c_stmt(PostState& s, const Statement& st) {
+  if (const Arg* mode = clamp_mode(s, st)) clamp_c(s, st, mode);
+}
+
+// CLAMP/TABLE,ALL,ON|OFF|AUTO (Fusion's APT post, ../shared/reference/millturn.md §1): every
+// rotary axis, which on a lathe is C. A machine without C has nothing to clamp: a note.
+void clamp_table_stmt(PostState& s, const Statement& st) {
+  const Arg* mode = nullptr;
+  for (const Arg& a : st.args) {
+    if (a.is("ON") || a.is("OFF") || a.is("AUTO")) {
+      mode = &a;
+    } else if (!a.is("TABLE") && !a.is("ALL")) {
+      return error(s, st, a.loc, unknown_word(st, a, st.major, "TABLE, ALL, ON, OFF, AUTO"));
+    }
+  }
+  if (mode == nullptr) return error(s, st, st.loc, "expected CLAMP/TABLE,ALL,ON|OFF|AUTO");
+  if (!s.m.c_axis)
+    return note_once(s, st, "CLAMP/TABLE",
+                     fmt::format("CLAMP/TABLE clamps rotary axes, and machine '{}' has none "
+                                 "(millturn.c_axis: false): nothing to clamp",
+                                 s.m.name));
+  clamp_c(s, st, mode);
 }
 
 // SYNC/…: waits between channels of a multi-channel machine (CATIA's Swiss-type programs).

@@ -37,5 +37,7 @@ std::vector<double> c_steps(const Machine& m, std::optional<double> from, double
 bool write_c_steps(PostState& s, const Statement& st, const std::vector<double>& steps);
 // CLAMP/ON|OFF|AUTO,CAXIS (ICAM) and CLAMP/CAXIS,ON|OFF (NX-to-APT): the CL's own C clamp.
 void clamp_c_stmt(PostState& s, const Statement& st);
+// CLAMP/TABLE,ALL,ON|OFF|AUTO (Fusion): every rotary axis, C on a lathe; a note without C.
+void clamp_table_stmt(PostState& s, const Statement& st);
 
 }  // namespace clpost

@@ -341,6 +341,31 @@ TEST(MillTurn, CClampsThatCannotBeWritten) {
   EXPECT_NE(l.nc.find("G0 C90.\n(CLAMP/ON,CAXIS)\n"), std::string::npos) << l.nc;
 }
 
+// Fusion's APT post writes CLAMP/TABLE,ALL,AUTO (reference millturn.md §1): on a lathe the
+// rotary axes are C. On haas-st-20y it is CLAMP/…,CAXIS: OFF unclamps the indexed C (M15) and
+// leaves C90 unclamped, AUTO clamps again (M14); on fanuc-0i-t, without C, a note and nothing
+// written; a word it does not know is a located error.
+TEST(MillTurn, FusionsTableClamp) {
+  Posted h = post(
+      "LOADTL/3,MILL\nSPINDL/1000,RPM,CLW\nROTABL/0,CAXIS\nCLAMP/TABLE,ALL,OFF\n"
+      "ROTABL/90,CAXIS\nCLAMP/TABLE,ALL,AUTO\nSPINDL/OFF\nFINI\n",
+      load("haas-st-20y"));
+  EXPECT_EQ(h.errors, 0u) << h.diags;
+  EXPECT_NE(h.nc.find("G0 C0.\nM14\nM15\nG0 C90.\nM14\nM135\n"), std::string::npos) << h.nc;
+  Posted f = post("CLAMP/TABLE,ALL,AUTO\nFINI\n", load("fanuc-0i-t"));
+  EXPECT_EQ(f.errors, 0u) << f.diags;
+  EXPECT_NE(f.diags.find("t.cl:1:1: note: CLAMP/TABLE clamps rotary axes, and machine "
+                         "'fanuc-0i-t' has none (millturn.c_axis: false): nothing to clamp"),
+            std::string::npos)
+      << f.diags;
+  EXPECT_EQ(f.nc.find("CLAMP"), std::string::npos) << f.nc;
+  Posted e = post("CLAMP/TABLE,ALL,TIGHT\nFINI\n", load("haas-st-20y"));
+  EXPECT_NE(e.diags.find("t.cl:1:17: error: unknown CLAMP word 'TIGHT': expected TABLE, ALL, "
+                         "ON, OFF, AUTO"),
+            std::string::npos)
+      << e.diags;
+}
+
 // What is not written is a located error naming what is missing, never a hole on the centre
 // line: C never indexed. (Fanuc's face G83, radial holes, holes off the X axis, a feed per
 // revolution and live taps are written now: hole_live_test.cc.)
