@@ -2,8 +2,8 @@
 // samples/*.{cls,ncl,apt,cl} and the shared thread set samples/threads/*.apt on every machine,
 // samples/machines/<machine>.* on its own machine, samples/millturn/*.apt on every machine with
 // live tools (millturn.live_tools). Goldens: samples/golden/<machine>/<name><ext> (thread samples
-// as threads-<stem>, mill-turn samples as millturn-<stem>). scripts/update-goldens.sh rewrites them (review the diff
-// line by line before committing).
+// as threads-<stem>, mill-turn samples as millturn-<stem>). scripts/update-goldens.sh rewrites them
+// (review the diff line by line before committing).
 #include <gtest/gtest.h>
 
 #include <filesystem>
