@@ -74,8 +74,11 @@ struct Simulation {
   size_t blocks = 0;        // NC lines read
   int calls = 0;            // cycle calls expanded
   std::vector<SimHole> holes;
-  std::vector<SimMillMove> mill_moves;  // a machine with C: every move in X, Y, Z or C
-  size_t deleted_blocks = 0;            // blocks marked optional ('/'), which block delete skips
+  // A machine with C: its moves in X, Y, Z or C from the last one before C is first written
+  // (mill_moves.cc says why no milling is before it), and how many there were in all.
+  std::vector<SimMillMove> mill_moves;
+  size_t mill_move_count = 0;
+  size_t deleted_blocks = 0;  // blocks marked optional ('/'), which block delete skips
   std::pair<uint32_t, std::string> first_optional;  // the first one's line and text
   // With SimOptions::block_delete_too and optional blocks: the run with block delete on (one).
   std::vector<Simulation> with_block_delete;

@@ -4,6 +4,12 @@
 
 namespace clpost::sim {
 
+// Only the moves from the last one before C is first written are kept: where C is before it is
+// written the control does not say, so no move before can be on a CL milling path (the part
+// frame turns with C), and clpost writes C before a live tool's first milling move (its C index
+// or the move's own C word; interpreter/milling_motion.cc). The last move before is kept for
+// the milling that starts where it ended. A program without milling, which never writes C,
+// keeps one move, not one per block (issue #26: memory does not depend on the file's length).
 void mill_move(State& s, const NcBlock& b) {
   const NcWord* x = b.find("X");
   const NcWord* y = b.find("Y");
@@ -12,9 +18,10 @@ void mill_move(State& s, const NcBlock& b) {
   if (x == nullptr && y == nullptr && z == nullptr && !c) return;
   const bool arc = s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw;
   if (s.motion != Motion::kRapid && s.motion != Motion::kLinear && !arc) return;
-  SimMillMove mv;
+  ++s.out.mill_move_count;
+  SimMillMove& mv = s.c ? s.out.mill_moves.emplace_back() : s.mill_before.emplace();
   mv.line = s.line;
-  mv.line_text = std::string(s.line_text);
+  mv.line_text.assign(s.line_text);
   mv.rapid = s.motion == Motion::kRapid;
   mv.arc = arc;
   mv.x = x ? s.radius(*x) : s.pos.x;
@@ -22,7 +29,10 @@ void mill_move(State& s, const NcBlock& b) {
   mv.y = s.y;
   mv.z = z ? s.value(*z) : s.pos.z;
   mv.c = s.c.value_or(0);
-  s.out.mill_moves.push_back(std::move(mv));
+  if (s.c && s.mill_before) {
+    s.out.mill_moves.insert(s.out.mill_moves.end() - 1, std::move(*s.mill_before));
+    s.mill_before.reset();
+  }
 }
 
 }  // namespace clpost::sim

@@ -143,6 +143,8 @@ struct State {
   int plane = 18;           // the plane selected last (G17, G18, G19): which axis a hole drills
   std::optional<double> live_rpm;  // the live tool's speed as last written (live_spindle_rpm)
   CutState cut;                    // feed mode, spindle and tool as the program last stated them
+  // Before C is first written: the last move in X, Y, Z or C (mill_moves.cc), not yet kept.
+  std::optional<SimMillMove> mill_before;
   // The machine's hole templates taken apart, once (hole_cycles.cc; null until the first block).
   std::shared_ptr<const void> hole_lines;
   // The codes of the machine's own positions (positions.cc), found at the first block.

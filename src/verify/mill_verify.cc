@@ -149,7 +149,8 @@ struct Walk {
 }  // namespace
 
 MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<SimMillMove>& nc,
-                          const Machine& m, const VerifyOptions& options, Diagnostics& nc_diags) {
+                          size_t nc_count, const Machine& m, const VerifyOptions& options,
+                          Diagnostics& nc_diags) {
   MillReport r;
   if (cl.empty()) return r;
   const double shown = std::max(options.tolerance > 0 ? options.tolerance : cut_tolerance(m),
@@ -170,7 +171,7 @@ MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<
     break;  // one cause: the moves after it are not where the CL's are
   }
   r.text = fmt::format("milling: {} CL motions, {} program moves in X, Y, Z and C\n{}{}\n",
-                       motions.size(), nc.size(), r.text,
+                       motions.size(), nc_count, r.text,
                        r.problems == 0
                            ? fmt::format("ok: every CL point reached in order and every feed move "
                                          "on the CL path, within {:g}",

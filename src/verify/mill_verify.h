@@ -21,7 +21,10 @@ struct MillReport {
 
 // The tolerance: the verify tolerance, and the machine's xzc_tolerance plus the written
 // numbers' rounding. Every problem is also an error in `nc_diags` at the program's line.
+// `nc_count`: the program's moves in X, Y, Z and C in all (Simulation::mill_move_count), of
+// which `nc` are those that can be milling.
 MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<SimMillMove>& nc,
-                          const Machine& m, const VerifyOptions& options, Diagnostics& nc_diags);
+                          size_t nc_count, const Machine& m, const VerifyOptions& options,
+                          Diagnostics& nc_diags);
 
 }  // namespace clpost

@@ -70,7 +70,7 @@ void compare(const Simulation& sim, const std::vector<Hole>* holes,
   out.ok = threads(out.report);
   if (holes != nullptr) {
     const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
-    const MillReport mr = verify_milling(*mill, sim.mill_moves, m, vo, diags);
+    const MillReport mr = verify_milling(*mill, sim.mill_moves, sim.mill_move_count, m, vo, diags);
     const PathReport pr = path();
     out.ok = out.ok && hr.problems == 0 && mr.problems == 0 && pr.problems == 0;
     out.report += hr.text + mr.text + pr.text;
