@@ -77,6 +77,30 @@ void threads_program(std::string& buf, Flush&& flush, std::string_view name, lon
   flush(buf);
 }
 
+// A live tool's face milling (docs/millturn.md), `gotos` GOTO lines: a square 20 x 20 around the
+// centre at C index 30, cut at depths that step down and start again, each pass from a rapid up
+// to above its corner (a real move: a RAPID to where the tool already is has no program move);
+// then a turning tool's rapid. For a machine with C (linuxcnc-lathe-c): verify's memory.
+template <typename Flush>
+void milling_program(std::string& buf, Flush&& flush, std::string_view name, long gotos) {
+  auto out = std::back_inserter(buf);
+  fmt::format_to(out, "$$ clpost benchmark: {} milling GOTO lines\nPARTNO {}\n", gotos, name);
+  buf += "UNITS/MM\nLOADTL/3,MILL\nSPINDL/3000,RPM,CLW\nROTABL/30,CAXIS\nFEDRAT/200,MMPM\n";
+  static constexpr double kCorners[4][2] = {{10, 10}, {-10, 10}, {-10, -10}, {10, -10}};
+  long written = 0;
+  for (long pass = 0; written < gotos; ++pass) {
+    const double z = -0.1 - 0.1 * static_cast<double>(pass % 20);
+    buf += "RAPID\nGOTO/10.0000,-10.0000,5.0000\n";
+    fmt::format_to(out, "GOTO/10.0000,-10.0000,{:.4f}\n", z);
+    written += 2;
+    for (long i = 0; i < 4 && written < gotos; ++i, ++written)
+      fmt::format_to(out, "GOTO/{:.4f},{:.4f},{:.4f}\n", kCorners[i][0], kCorners[i][1], z);
+    if (buf.size() > (1 << 20)) flush(buf);
+  }
+  buf += "SPINDL/OFF\nLOADTL/1,TURN\nSPINDL/1000,RPM,CLW\nRAPID\nGOTO/22,0,2\nEND\nFINI\n";
+  flush(buf);
+}
+
 // The whole program in memory (benchmarks of small inputs).
 inline std::string turning_program_text(long gotos, long thread_every) {
   std::string all, buf;

@@ -83,6 +83,7 @@ int usage() {
       "usage: gen_cl large OUT.cl [GOTOS [THREAD_EVERY]]\n"
       "       gen_cl small DIR [COUNT [GOTOS]]\n"
       "       gen_cl threads OUT.cl [COUNT]\n"
+      "       gen_cl milling OUT.cl [GOTOS]\n"
       "       gen_cl binary IN.cl OUT.cl\n",
       stderr);
   return 2;
@@ -116,6 +117,16 @@ int main(int argc, char** argv) {
     return write_file(argv[2],
                       [&](std::string& buf, auto&& flush) {
                         clpost::bench::threads_program(buf, flush, "BENCH-THREADS", count);
+                      })
+               ? 0
+               : 1;
+  }
+  if (mode == "milling") {
+    long gotos = 200000;
+    if (argc > 3 && !parse_long(argv[3], gotos)) return usage();
+    return write_file(argv[2],
+                      [&](std::string& buf, auto&& flush) {
+                        clpost::bench::milling_program(buf, flush, "BENCH-MILLING", gotos);
                       })
                ? 0
                : 1;
