@@ -66,11 +66,14 @@ void post_to(const PostRequest& req, std::FILE* input, Sink& sink, Diagnostics& 
   // The body waits for its header beside the output file (same file system, no name), else in
   // the system's temporary directory.
   if (!req.output.empty()) options.spool_dir = OutputFile::directory_beside(req.output);
-  if (verify != nullptr)
+  if (verify != nullptr) {
     options.on_motion = [verify](const ClMotion& c, const CutStateAt& state) {
       verify->cl_motion(c, state);
     };
+    options.on_mill = [verify](const MillSegment& g) { verify->mill_segment(g); };
+  }
   PostSummary summary = post(reader, *req.machine, sink, diags, options, on_thread);
+  if (verify != nullptr) verify->cl_ended();
   out.holes = std::move(summary.holes);
   out.mill = std::move(summary.mill);
   out.outputs = std::move(summary.outputs);

@@ -50,6 +50,7 @@ VerifyOutcome verify_against_cl(const std::string& program, const std::string& c
   options.on_motion = [&stream](const ClMotion& c, const CutStateAt& state) {
     stream.cl_motion(c, state);
   };
+  options.on_mill = [&stream](const MillSegment& g) { stream.mill_segment(g); };
   const PostRequest req{cl, "", &m, options, [&stream](const ThreadPlan& p) { stream.plan(p); }};
   const PostOutcome posted = post_file(req);
   if (!posted.ok) {
@@ -64,6 +65,7 @@ VerifyOutcome verify_against_cl(const std::string& program, const std::string& c
   std::string error;
   if (!f.open(program, error)) return not_opened(program, error);
   reader::LineSource src(f.get());
+  stream.cl_ended();
   stream.program_lines(src);
   // The CL file's own notes and warnings were shown when it was posted; verify is about the
   // program.

@@ -297,6 +297,12 @@ bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn
   return true;
 }
 
+// A milling piece to verify (PostOptions::on_mill), else kept (PostState::mill_path).
+void keep_mill(PostState& s, const MillSegment& g) {
+  if (s.opts.on_mill) return s.opts.on_mill(g);
+  s.mill_path.push_back(g);
+}
+
 // The arc `c` to `to`: G2/G3 in the machine's plane with Y, lines within the tolerance without.
 void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
               double index, double feed, double turn) {
@@ -315,7 +321,7 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
   const std::vector<Point3> points = arc_points(c, from, to, s.m.xzc_tolerance / 2);
   Point3 at = from;
   for (const Point3& p : points) {
-    s.mill_path.push_back({st.loc.line, part(at), part(p), index, false});
+    keep_mill(s, {st.loc.line, part(at), part(p), index, false});
     if (!s.m.y_axis) xzc_move(s, at, p, index, false, feed, s.m.xzc_tolerance / 2);
     at = p;
   }
@@ -378,7 +384,7 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                       circle->loc.line};
     return mill_arc(s, st, arc, from, p, ms.index, ms.feed, ms.turn);
   }
-  s.mill_path.push_back({st.loc.line, part(from), part(p), ms.index, rapid});
+  keep_mill(s, {st.loc.line, part(from), part(p), ms.index, rapid});
   if (!s.m.y_axis) return xzc_move(s, from, p, ms.index, rapid, ms.feed, s.m.xzc_tolerance);
   // The face's lines in G17; a radial tool's in the plane in force (its arcs choose theirs).
   xyz_move(s, machine_xyz(p, ms.turn), rapid, ms.feed, s.hole_axis_radial ? s.mill.plane : 17);

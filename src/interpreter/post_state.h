@@ -32,6 +32,9 @@ struct PostOptions {
   // With keep_motions: each motion, once finished, with its state, handed over and not kept
   // (ClPath then holds the last motion and state only): verify while the program is written.
   std::function<void(const ClMotion&, const CutStateAt&)> on_motion{};
+  // Each piece of a live tool's milling as it is written, handed over and not kept (PostSummary::
+  // mill then empty): verify of milling while the program is written.
+  std::function<void(const MillSegment&)> on_mill{};
 };
 
 struct PostStats {

@@ -395,6 +395,8 @@ struct BlockDeleteRun {
     SimOptions on;
     on.keep_moves = o.keep_moves;
     on.on_move = o.on_block_delete_move;
+    // Its milling is not compared: not kept either when the run with block delete off's is not.
+    if (o.on_mill_move) on.on_mill_move = [](const SimMillMove&) {};
     return on;
   }
   SimOptions options;

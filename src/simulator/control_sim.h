@@ -90,6 +90,8 @@ struct SimOptions {
   // position among them, in order, as Move{from == to}): verify of the path while the program
   // is read, with no moves kept.
   std::function<void(const Move&, const CutState&)> on_move;
+  // A machine with C: each move Simulation::mill_moves would keep, handed over and not kept.
+  std::function<void(const SimMillMove&)> on_mill_move;
   // Also runs the program with block delete on (its optional blocks skipped), beside the run
   // with it off: Simulation::with_block_delete. Its errors the other run has not are reported
   // too, marked "(block delete on)".

@@ -4,6 +4,15 @@
 
 namespace clpost::sim {
 
+namespace {
+
+void keep(State& s, SimMillMove&& mv) {
+  if (s.opt.on_mill_move) return s.opt.on_mill_move(mv);
+  s.out.mill_moves.push_back(std::move(mv));
+}
+
+}  // namespace
+
 // Only the moves from the last one before C is first written are kept: where C is before it is
 // written the control does not say, so no move before can be on a CL milling path (the part
 // frame turns with C), and clpost writes C before a live tool's first milling move (its C index
@@ -19,7 +28,7 @@ void mill_move(State& s, const NcBlock& b) {
   const bool arc = s.motion == Motion::kArcCw || s.motion == Motion::kArcCcw;
   if (s.motion != Motion::kRapid && s.motion != Motion::kLinear && !arc) return;
   ++s.out.mill_move_count;
-  SimMillMove& mv = s.c ? s.out.mill_moves.emplace_back() : s.mill_before.emplace();
+  SimMillMove mv;
   mv.line = s.line;
   mv.line_text.assign(s.line_text);
   mv.rapid = s.motion == Motion::kRapid;
@@ -29,10 +38,13 @@ void mill_move(State& s, const NcBlock& b) {
   mv.y = s.y;
   mv.z = z ? s.value(*z) : s.pos.z;
   mv.c = s.c.value_or(0);
-  if (s.c && s.mill_before) {
-    s.out.mill_moves.insert(s.out.mill_moves.end() - 1, std::move(*s.mill_before));
-    s.mill_before.reset();
+  if (!s.c) {
+    s.mill_before = std::move(mv);
+    return;
   }
+  if (s.mill_before) keep(s, std::move(*s.mill_before));
+  s.mill_before.reset();
+  keep(s, std::move(mv));
 }
 
 }  // namespace clpost::sim

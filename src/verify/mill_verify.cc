@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <optional>
 
 #include "laws/cut_pass.h"
 
@@ -12,7 +14,9 @@ namespace clpost {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kSamples = 8;  // each feed move is checked at eighths, as the control moves
+constexpr int kSamples = 8;
+constexpr size_t kWindow = 1 << 14;  // program moves held for CL motions not yet posted  // each
+                                     // feed move is checked at eighths, as the control moves
 
 // A CL motion: its points in the part frame at C0 (turned by its index), from its start.
 struct ClMill {
@@ -29,19 +33,6 @@ PartPoint turned(PartPoint p, double degrees) {
 double distance(PartPoint a, PartPoint b) {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) +
                    (a.z - b.z) * (a.z - b.z));
-}
-
-// The CL's milling as motions: the pieces of one CL line (an arc's chords) together.
-std::vector<ClMill> cl_motions(const std::vector<MillSegment>& cl) {
-  std::vector<ClMill> out;
-  for (const MillSegment& g : cl) {
-    const PartPoint from = turned(g.from, g.index), to = turned(g.to, g.index);
-    if (out.empty() || out.back().line != g.line || out.back().rapid != g.rapid ||
-        distance(out.back().points.back(), from) > 1e-9)
-      out.push_back({g.line, g.rapid, {from}});
-    out.back().points.push_back(to);
-  }
-  return out;
 }
 
 // A program position: X (a radius), Y, Z, C.
@@ -88,96 +79,198 @@ std::string difference(Axes a, PartPoint p, double tol) {
       a.x, a.y, a.z, a.c, distance(part(a), p), p.x, p.y, p.z);
 }
 
-// The first program move from `k` that ends at `p`, or nc.size().
-size_t reaching(const std::vector<SimMillMove>& nc, size_t k, PartPoint p, double tol) {
-  while (k < nc.size() && distance(part(axes(nc[k])), p) > tol) ++k;
-  return k;
-}
+}  // namespace
 
-struct Walk {
-  const std::vector<SimMillMove>& nc;
-  double tol;
-  bool rollover;  // millturn.c_rotation: the control turns C the shortest way to a C word
-  size_t k = 0;   // the next program move
+// The walk (docs/millturn.md), forward only: each CL motion in order, the program's moves as
+// they come. A rapid: the first move from where the walk is that ends at its end. A feed: from
+// its start (the move before, else the first move from where the walk is that ends there), each
+// move within the tolerance of the motion's path until one ends at its end. One cause is
+// reported: the walk stops at the first problem.
+struct MillStream::Impl {
+  enum class Phase { kIdle, kSeek, kFollow };
+  double tol = 0, shown = 0;
+  bool rollover = false;  // millturn.c_rotation: the control turns C the shortest way
+  std::string plan_name;
+  std::deque<ClMill> motions;                    // complete, not yet walked
+  ClMill open;                                   // the motion being received
+  size_t motion_count = 0;                       // CL motions in all
+  std::deque<SimMillMove> waiting;               // program moves no CL motion is there for yet
+  std::optional<SimMillMove> first, prev, last;  // nc[0], nc[k - 1], nc[size - 1]
+  std::optional<SimMillMove> scan_start;         // a seek's first move looked at (nc[k])
+  Phase phase = Phase::kIdle;
+  PartPoint target;
+  bool seek_feed = false;
+  bool failed = false;
+  bool cl_ended = false;
+  uint32_t failed_line = 0;
   std::string why;
-  const SimMillMove* at = nullptr;  // the program's move the difference is at
+  std::optional<SimMillMove> at;  // the program's move the difference is at
 
-  // The feed moves from k through the one that reaches the motion's end, each within the
-  // tolerance of the CL path; false (why, at) at the first that is not.
-  bool feed(const ClMill& mo) {
-    if (k == 0 || distance(part(axes(nc[k - 1])), mo.points.front()) > tol) {
-      k = reaching(nc, k, mo.points.front(), tol);
-      if (k == nc.size()) return missing(mo.points.front(), 0);
-      ++k;
+  const ClMill& current() const { return motions.front(); }
+  void begin() {
+    if (motions.empty()) return void(phase = Phase::kIdle);
+    const ClMill& mo = current();
+    scan_start.reset();
+    if (mo.rapid || !prev || distance(part(axes(*prev)), mo.points.front()) > tol) {
+      phase = Phase::kSeek;
+      seek_feed = !mo.rapid;
+      target = mo.rapid ? mo.points.back() : mo.points.front();
+    } else {
+      phase = Phase::kFollow;
     }
-    for (; k < nc.size(); ++k) {
-      const Axes a = axes(nc[k - 1]);
-      Axes b = axes(nc[k]);
-      if (rollover) b.c = a.c + std::remainder(b.c - a.c, 360.0);
-      // The end first (a C off at a point is said as such), then the way there.
-      for (int i = kSamples; i >= (nc[k].arc ? kSamples : 1); --i) {
-        const double t = static_cast<double>(i) / kSamples;
-        const Axes q{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t,
-                     a.c + (b.c - a.c) * t};
-        const PartPoint p = nearest(mo.points, part(q));
-        if (distance(p, part(q)) > tol) return off(nc[k], q, p);
-      }
-      if (distance(part(b), mo.points.back()) <= tol) return ++k, true;
+  }
+  void done() {
+    motions.pop_front();
+    begin();
+  }
+  void fail(const SimMillMove* m, std::string text) {
+    failed = true;
+    failed_line = current().line;
+    why = std::move(text);
+    if (m != nullptr) at = *m;
+    motions.clear();
+    waiting.clear();
+    phase = Phase::kIdle;
+  }
+  void missing(const std::optional<SimMillMove>& near, PartPoint p) {
+    if (!near) return fail(nullptr, "the program has no moves in X, Y, Z and C");
+    fail(&*near, fmt::format("not reached: the program's move here ends {}",
+                             difference(axes(*near), p, tol)));
+  }
+  void step(const SimMillMove& m) {
+    if (phase == Phase::kSeek) return seek(m);
+    follow(m);
+  }
+  void seek(const SimMillMove& m) {
+    if (distance(part(axes(m)), target) > tol) {
+      if (!scan_start) scan_start = m;
+      return;
     }
-    return missing(mo.points.back(), nc.size() - 1);
+    prev = m;
+    if (current().rapid) return done();
+    phase = Phase::kFollow;
   }
-  bool off(const SimMillMove& m, Axes q, PartPoint p) {
-    why = difference(q, p, tol);
-    at = &m;
-    return false;
+  void follow(const SimMillMove& m) {
+    const ClMill& mo = current();
+    const Axes a = axes(*prev);
+    Axes b = axes(m);
+    if (rollover) b.c = a.c + std::remainder(b.c - a.c, 360.0);
+    // The end first (a C off at a point is said as such), then the way there.
+    for (int i = kSamples; i >= (m.arc ? kSamples : 1); --i) {
+      const double t = static_cast<double>(i) / kSamples;
+      const Axes q{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t,
+                   a.c + (b.c - a.c) * t};
+      const PartPoint p = nearest(mo.points, part(q));
+      if (distance(p, part(q)) > tol) return fail(&m, difference(q, p, tol));
+    }
+    prev = m;
+    if (distance(part(b), mo.points.back()) <= tol) done();
   }
-  bool missing(PartPoint p, size_t near) {
-    at = nc.empty() ? nullptr : &nc[std::min(near, nc.size() - 1)];
-    why = at == nullptr ? std::string("the program has no moves in X, Y, Z and C")
-                        : fmt::format("not reached: the program's move here ends {}",
-                                      difference(axes(*at), p, tol));
-    return false;
+  // The program ended with the walk at a motion: it is not reached.
+  void ended() {
+    if (phase == Phase::kIdle) return;
+    const ClMill& mo = current();
+    if (phase == Phase::kFollow) return missing(last, mo.points.back());
+    if (seek_feed) return missing(first, target);
+    missing(scan_start ? scan_start : last, target);
   }
-  bool rapid(const ClMill& mo) {
-    const size_t j = reaching(nc, k, mo.points.back(), tol);
-    if (j == nc.size()) return missing(mo.points.back(), k);
-    k = j + 1;
-    return true;
+  void motion_complete() {
+    if (open.points.empty()) return;
+    ++motion_count;
+    if (failed) return void(open.points.clear());
+    motions.push_back(std::move(open));
+    open.points.clear();
+    if (phase != Phase::kIdle) return;
+    begin();
+    while (!waiting.empty() && phase != Phase::kIdle) {
+      const SimMillMove m = std::move(waiting.front());
+      waiting.pop_front();
+      step(m);
+    }
   }
 };
 
-}  // namespace
+MillStream::MillStream(const Machine& m, const VerifyOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& w = *impl_;
+  w.shown = std::max(options.tolerance > 0 ? options.tolerance : cut_tolerance(m),
+                     m.xzc_tolerance + 0.001);
+  w.tol = w.shown + 1e-9;
+  w.rollover = m.c_rotation == CRotation::kRollover;
+  w.plan_name = options.plan_name;
+}
 
-MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<SimMillMove>& nc,
-                          size_t nc_count, const Machine& m, const VerifyOptions& options,
-                          Diagnostics& nc_diags) {
+MillStream::~MillStream() = default;
+
+// The CL's milling as motions: the pieces of one CL line (an arc's chords) together.
+void MillStream::cl_segment(const MillSegment& g) {
+  Impl& w = *impl_;
+  const PartPoint from = turned(g.from, g.index), to = turned(g.to, g.index);
+  if (w.open.points.empty() || w.open.line != g.line || w.open.rapid != g.rapid ||
+      distance(w.open.points.back(), from) > 1e-9) {
+    w.motion_complete();
+    w.open = {g.line, g.rapid, {from}};
+  }
+  w.open.points.push_back(to);
+}
+
+void MillStream::cl_break() {
+  impl_->motion_complete();
+}
+
+void MillStream::cl_ended() {
+  impl_->motion_complete();
+  impl_->cl_ended = true;
+  impl_->waiting.clear();
+}
+
+void MillStream::program_move(const SimMillMove& m) {
+  Impl& w = *impl_;
+  if (!w.first) w.first = m;
+  w.last = m;
+  if (w.failed) return;
+  if (w.phase != Impl::Phase::kIdle) return w.step(m);
+  if (w.cl_ended) return;  // every CL motion walked: the rest is not milling the CL says
+  // No CL motion for it yet. The CL runs ahead of its program (clpost --verify) or comes whole
+  // before it: what waits is the moves after milling until the CL mills again, of which only a
+  // window is kept (as PathStream's).
+  if (w.waiting.size() == kWindow) w.waiting.pop_front();
+  w.waiting.push_back(m);
+}
+
+MillReport MillStream::finish(size_t nc_count, Diagnostics& nc_diags) {
+  Impl& w = *impl_;
+  w.motion_complete();
   MillReport r;
-  if (cl.empty()) return r;
-  const double shown = std::max(options.tolerance > 0 ? options.tolerance : cut_tolerance(m),
-                                m.xzc_tolerance + 0.001);
-  const std::vector<ClMill> motions = cl_motions(cl);
-  Walk w{nc, shown + 1e-9, m.c_rotation == CRotation::kRollover, 0, {}, nullptr};
-  for (const ClMill& mo : motions) {
-    if (mo.rapid ? w.rapid(mo) : w.feed(mo)) continue;
-    ++r.problems;
-    const std::string msg = fmt::format("milling at {}:{}: {}", options.plan_name, mo.line, w.why);
-    if (w.at != nullptr) {
+  if (w.motion_count == 0) return r;
+  if (!w.failed) w.ended();
+  if (w.failed) {
+    r.problems = 1;
+    const std::string msg = fmt::format("milling at {}:{}: {}", w.plan_name, w.failed_line, w.why);
+    if (w.at) {
       nc_diags.error(SourceLoc{w.at->line, 1}, w.at->line_text, msg);
     } else {
       nc_diags.error({}, {}, msg);
     }
-    r.text = fmt::format("  {}  DIFFERS: {}\n", options.plan_name + ":" + std::to_string(mo.line),
+    r.text = fmt::format("  {}  DIFFERS: {}\n", w.plan_name + ":" + std::to_string(w.failed_line),
                          w.why);
-    break;  // one cause: the moves after it are not where the CL's are
   }
   r.text = fmt::format("milling: {} CL motions, {} program moves in X, Y, Z and C\n{}{}\n",
-                       motions.size(), nc_count, r.text,
+                       w.motion_count, nc_count, r.text,
                        r.problems == 0
                            ? fmt::format("ok: every CL point reached in order and every feed move "
                                          "on the CL path, within {:g}",
-                                         shown)
+                                         w.shown)
                            : std::string("FAILED: the milling is not where the CL says"));
   return r;
 }
 
+MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<SimMillMove>& nc,
+                          size_t nc_count, const Machine& m, const VerifyOptions& options,
+                          Diagnostics& nc_diags) {
+  MillStream s(m, options);
+  for (const MillSegment& g : cl) s.cl_segment(g);
+  for (const SimMillMove& mv : nc) s.program_move(mv);
+  return s.finish(nc_count, nc_diags);
+}
 }  // namespace clpost

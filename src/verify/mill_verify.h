@@ -4,6 +4,7 @@
 // across: the point turned by C) against the CL's milling in the part frame turned by its C
 // index (laws/xzc_law.h MillSegment): every CL point reached in order, and every feed move,
 // sampled as the control moves (X, Y, Z and C linear), within the tolerance of the CL path.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,25 @@ struct MillReport {
 MillReport verify_milling(const std::vector<MillSegment>& cl, const std::vector<SimMillMove>& nc,
                           size_t nc_count, const Machine& m, const VerifyOptions& options,
                           Diagnostics& nc_diags);
+
+// The same as the moves come (clpost --verify, verify --cl): the CL's milling pieces as they are
+// posted, the program's moves as they are read, in either order; compared as they come, holding
+// only the CL motions and program moves the walk has not reached.
+class MillStream {
+ public:
+  MillStream(const Machine& m, const VerifyOptions& options);
+  ~MillStream();
+  void cl_segment(const MillSegment& g);
+  // A CL motion that is not milling (the milling before it is whole), and the CL's end.
+  void cl_break();
+  void cl_ended();
+  void program_move(const SimMillMove& m);
+  // Both ended: the report, as verify_milling's.
+  MillReport finish(size_t nc_count, Diagnostics& nc_diags);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace clpost

@@ -62,15 +62,16 @@ void report_block_delete(size_t on, VerifyOutcome& out) {
 }
 
 // The program, read: its thread cuts against the plans by `threads(report)` (true: as
-// planned); with `holes` (the CL's), its holes, then its path by `path()` (its problems last).
-template <typename Threads, typename Path>
-void compare(const Simulation& sim, const std::vector<Hole>* holes,
-             const std::vector<MillSegment>* mill, const Machine& m, const VerifyOptions& vo,
-             Diagnostics& diags, VerifyOutcome& out, Threads&& threads, Path&& path) {
+// planned); with `holes` (the CL's), its holes, its milling by `mill()`, then its path by
+// `path()` (its problems last).
+template <typename Threads, typename Mill, typename Path>
+void compare(const Simulation& sim, const std::vector<Hole>* holes, const Machine& m,
+             const VerifyOptions& vo, Diagnostics& diags, VerifyOutcome& out, Threads&& threads,
+             Mill&& mill, Path&& path) {
   out.ok = threads(out.report);
   if (holes != nullptr) {
     const HoleReport hr = verify_holes(*holes, sim.holes, m, vo, diags);
-    const MillReport mr = verify_milling(*mill, sim.mill_moves, sim.mill_move_count, m, vo, diags);
+    const MillReport mr = mill();
     const PathReport pr = path();
     out.ok = out.ok && hr.problems == 0 && mr.problems == 0 && pr.problems == 0;
     out.report += hr.text + mr.text + pr.text;
@@ -119,8 +120,10 @@ VerifyOutcome verify_program(reader::LineSource& src, const std::string& program
       text = verify_report_text(report, plans, program_name, m, vo);
       return ok;
     };
-    compare(sim, cl ? &cl->holes : nullptr, cl ? &cl->mill : nullptr, m, vo, diags, out, threads,
-            [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
+    compare(
+        sim, cl ? &cl->holes : nullptr, m, vo, diags, out, threads,
+        [&] { return verify_milling(cl->mill, sim.mill_moves, sim.mill_move_count, m, vo, diags); },
+        [&] { return verify_path(cl->path, sim.path, m, vo, diags); });
     if (cl != nullptr && std::none_of(cl->path.motions.begin(), cl->path.motions.end(),
                                       [](const ClMotion& c) { return c.optional; }))
       optional_without_opskip(sim, diags, out);
@@ -146,7 +149,8 @@ ProgramStream::ProgramStream(const std::string& program_name, const std::string&
       sim_(m, diags_, out_, options()),
       path_(m, vo_, sim_.readback(), out_.units, kWindow),
       path_on_(m, vo_, sim_.readback(), sim_.block_delete_units(), kWindow),
-      threads_(m, vo_) {}
+      threads_(m, vo_),
+      mill_(m, vo_) {}
 
 ProgramStream::~ProgramStream() = default;
 
@@ -158,6 +162,7 @@ const SimOptions& ProgramStream::options() {
     if (!on_follows_) path_on_.program_move(mv, &state);
   };
   so_.on_first_optional = [this] { part_on(); };
+  so_.on_mill_move = [this](const SimMillMove& mv) { mill_.program_move(mv); };
   return so_;
 }
 
@@ -235,6 +240,14 @@ void ProgramStream::cl_motion(const ClMotion& c, const CutStateAt& state) {
   if (!c.optional && !on_follows_) path_on_.cl_motion(c, &state);
 }
 
+void ProgramStream::mill_segment(const MillSegment& g) {
+  mill_.cl_segment(g);
+}
+
+void ProgramStream::cl_ended() {
+  mill_.cl_ended();
+}
+
 void ProgramStream::plan(const ThreadPlan& p) {
   threads_.plan(p, out_.cuts);
 }
@@ -244,9 +257,11 @@ VerifyOutcome ProgramStream::finish(const std::vector<Hole>& holes,
   if (!partial_.empty()) line(++number_, partial_);
   VerifyOutcome out;
   if (!stopped_ && sim_.finish()) {
+    for (const MillSegment& g : mill) mill_.cl_segment(g);
     compare(
-        out_, &holes, &mill, m_, vo_, diags_, out,
+        out_, &holes, m_, vo_, diags_, out,
         [&](std::string& text) { return threads_.finish(out_.cuts, name_, diags_, text); },
+        [&] { return mill_.finish(out_.mill_move_count, diags_); },
         [&] { return motions_ == 0 ? PathReport{} : path_.finish(cl_states, diags_); });
     if (motions_ > 0 && !optional_motions_) optional_without_opskip(out_, diags_, out);
     if (motions_ > 0 && !out_.with_block_delete.empty()) {

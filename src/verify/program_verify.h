@@ -11,6 +11,7 @@
 #include "planner/thread_plan.h"
 #include "reader/line_source.h"
 #include "simulator/control_sim.h"
+#include "verify/mill_verify.h"
 #include "verify/path_verify.h"
 
 namespace clpost {
@@ -47,9 +48,13 @@ class ProgramStream {
   // `clpost verify --cl`: the program read from `src` a line at a time, after every CL motion
   // and plan (as a program behind its header comes).
   void program_lines(reader::LineSource& src);
+  // A piece of a live tool's milling, as it is posted (PostOptions::on_mill); the CL's end.
+  void mill_segment(const MillSegment& g);
+  void cl_ended();
   // A thread's plan, as it is planned.
   void plan(const ThreadPlan& p);
-  // Both ended: the outcome. `cl_states`: the states the CL made (ClPath::state_count).
+  // Both ended: the outcome. `cl_states`: the states the CL made (ClPath::state_count); `mill`:
+  // the CL's milling not handed to mill_segment().
   VerifyOutcome finish(const std::vector<Hole>& holes, const std::vector<MillSegment>& mill,
                        size_t cl_states);
 
@@ -73,6 +78,7 @@ class ProgramStream {
   // when the program has optional blocks).
   PathStream path_on_;
   ThreadStream threads_;
+  MillStream mill_;  // milling compared as it comes (verify/mill_verify.h)
   // While the program with block delete on has had the same input as with it off (no optional
   // CL motion, no optional block yet), path_on_ is not fed: it would compare as path_ does, and
   // a program behind a header has every CL motion spilled to disk before its first line. Where
