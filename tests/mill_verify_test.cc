@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "test_util.h"
+#include "verify/mill_verify.h"
 
 namespace clpost::test {
 namespace {
@@ -79,6 +80,54 @@ TEST(MillVerify, AYOffFailsOnHaasSt20y) {
                        "CL path at (3.6603, 13.6603, -1.0000) (the part at C0)"),
             std::string::npos)
       << r.err;
+}
+
+}  // namespace
+}  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// MillStream (clpost --verify, verify --cl) compares as the moves come, in whichever order the
+// CL's pieces and the program's moves arrive: the same report and the same one error as
+// verify_milling over the whole of both. A rapid to (10, 0, 5), then a feed down to Z-1 at C
+// index 0; the program's feed ends at Z-1.5: 0.5 mm past the CL's end, said at its line.
+TEST(MillVerify, TheStreamSaysWhatTheWholeSays) {
+  const Machine m = shipped_machine("linuxcnc-lathe-c");
+  VerifyOptions vo;
+  vo.plan_name = "t.cl";
+  const std::vector<MillSegment> cl = {{1, {0, 0, 5}, {10, 0, 5}, 0, true},
+                                       {2, {10, 0, 5}, {10, 0, -1}, 0, false}};
+  std::vector<SimMillMove> nc = {{7, "G0 X20. Z5. C0.", true, false, 10, 0, 5, 0},
+                                 {8, "G1 Z-1.5", false, false, 10, 0, -1.5, 0}};
+  Diagnostics whole("t.nc");
+  const MillReport w = verify_milling(cl, nc, 2, m, vo, whole);
+  EXPECT_EQ(w.problems, 1u);
+  ASSERT_EQ(whole.kept().size(), 1u);
+  EXPECT_EQ(whole.kept()[0].loc.line, 8u);
+  EXPECT_EQ(whole.kept()[0].message,
+            "milling at t.cl:2: at X10.0000 (radius) Y0.0000 Z-1.5000 C0.0000, 0.5000 mm from "
+            "the CL path at (10.0000, 0.0000, -1.0000) (the part at C0)");
+  for (const bool moves_first : {true, false}) {
+    MillStream s(m, vo);
+    if (moves_first)
+      for (const SimMillMove& mv : nc) s.program_move(mv);
+    for (const MillSegment& g : cl) s.cl_segment(g);
+    s.cl_ended();
+    if (!moves_first)
+      for (const SimMillMove& mv : nc) s.program_move(mv);
+    Diagnostics d("t.nc");
+    const MillReport r = s.finish(2, d);
+    EXPECT_EQ(r.text, w.text) << moves_first;
+    ASSERT_EQ(d.kept().size(), 1u);
+    EXPECT_EQ(d.kept()[0].message, whole.kept()[0].message);
+    EXPECT_EQ(d.kept()[0].line_text, "G1 Z-1.5");
+  }
+  // Ending at Z-1 it is right, either way.
+  nc[1].z = -1;
+  Diagnostics ok("t.nc");
+  EXPECT_EQ(verify_milling(cl, nc, 2, m, vo, ok).problems, 0u);
+  EXPECT_EQ(ok.error_count(), 0u);
 }
 
 }  // namespace
