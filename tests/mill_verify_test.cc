@@ -34,6 +34,35 @@ TEST(MillVerify, FaceMillingVerifiesOnTheLiveMachines) {
   fs::remove_all(dir);
 }
 
+// Milling longer than the lathe path check's window (16 384 program moves) between two lathe
+// motions of the CL: 800 passes of the square (3200 lines, 115 169 XZC pieces), then the turning
+// tool's GOTO/22,0,2, the one lathe motion. The milling moves are the milling check's, so the
+// lathe's motion is still found in order (before: "motion at …:3214: X44.0000 Z2.0000 is not
+// reached by the program in order", and no program at all).
+TEST(MillVerify, MillingLongerThanThePathWindowVerifies) {
+  const std::string dir = temp_dir(), cl = dir + "/long.cl";
+  std::string text =
+      "UNITS/MM\nLOADTL/3,MILL\nSPINDL/3000,RPM,CLW\nROTABL/30,CAXIS\nRAPID\nGOTO/10,-10,5\n"
+      "FEDRAT/200,MMPM\n";
+  for (int i = 0; i < 800; ++i)
+    text += "GOTO/10,-10,-1\nGOTO/10,10,-1\nGOTO/-10,10,-1\nGOTO/-10,-10,-1\n";
+  text +=
+      "RAPID\nGOTO/10,-10,5\nSPINDL/OFF\nLOADTL/1,TURN\nSPINDL/1000,RPM,CLW\nRAPID\n"
+      "GOTO/22,0,2\nFINI\n";
+  std::ofstream(cl) << text;
+  RunResult r = run(quote(clpost_bin()) + " -m linuxcnc-lathe-c --verify -o " +
+                    quote(dir + "/p.ngc") + " " + quote(cl));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const size_t at = r.err.find(" program moves in X, Y, Z and C");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const size_t from = r.err.rfind(' ', at - 1) + 1;
+  EXPECT_EQ(r.err.substr(from, at - from), "115169") << r.err;  // the window is 16 384
+  EXPECT_NE(r.err.find("motions: 1 CL end points, every one reached in order"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/p.ngc"));
+  fs::remove_all(dir);
+}
+
 // The program `nc` with `from` replaced by `to` once, verified against the CL.
 RunResult verify_edited(const std::string& machine, const std::string& from,
                         const std::string& to) {

@@ -96,6 +96,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.center = pos_known ? center : Vec2{};
     mv.line = static_cast<int>(line);
     mv.lead = pos_known ? lead : 0;
+    mv.mill = mill_block && kind != MoveKind::kRapid;
     opt.on_move(mv, cut);
   }
   if (opt.keep_moves && pos_known) {
@@ -107,6 +108,7 @@ void State::move(MoveKind kind, Vec2 to, Vec2 center, double lead) {
     mv.line = static_cast<int>(line);
     mv.lead = lead;
     mv.state = state;
+    mv.mill = mill_block && kind != MoveKind::kRapid;
     out.path.moves.push_back(mv);
   }
   if (hole_open) sim::follow_hole(*this, kind, pos, to);
@@ -370,6 +372,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   const Code* motion_code = motion_of(s, b, c);
   if (const NcWord* f = b.find("F"); f && !is_thread(s.motion)) s.f_register = s.value(*f);
   if (s.m.c_axis) sim::mill_move(s, b);
+  s.mill_block = s.m.c_axis && (b.find(s.m.c_address) != nullptr || std::fabs(s.y) > 1e-9);
   const NcWord* x = b.find("X");
   const NcWord* z = b.find("Z");
   if (x == nullptr && z == nullptr) return;

@@ -139,6 +139,7 @@ struct State {
   G92Modal g92;
   std::optional<double> c;  // the C axis (millturn.c_axis) as last written, degrees
   double y = 0;             // Y as last written (milling on a machine with Y)
+  bool mill_block = false;  // the block writes C, or Y is off 0 (Move::mill)
   bool hole_open = false;   // out.holes.back() is followed move by move (a "hole at" comment)
   int plane = 18;           // the plane selected last (G17, G18, G19): which axis a hole drills
   std::optional<double> live_rpm;  // the live tool's speed as last written (live_spindle_rpm)

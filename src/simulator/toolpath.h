@@ -27,6 +27,10 @@ struct Move {
   int line = 0;        // NC (or CL) line the move comes from, 1-based; cycle moves: the call's line
   double lead = 0;     // kThread: lead per revolution along the dominant axis, program units
   uint32_t state = 0;  // the modal state it is made with: index into Toolpath::states
+  // A live tool's milling: a feed (not a rapid) whose block writes C, or with Y off 0. verify's
+  // lathe path check leaves it to the milling check (verify/mill_verify.h). The lathe's XZ feeds
+  // never write C or Y; a rapid may (a live tool's XZ approach back to its C index: G0 X Z C).
+  bool mill = false;
 };
 
 // Which parts of CutState the program states in words the simulation reads back (the machine's

@@ -383,6 +383,9 @@ void PathStream::cl_motion(const ClMotion& c, const CutStateAt* state) {
 }
 
 void PathStream::program_move(const Move& mv, const CutState* state) {
+  // A live tool's milling is the milling check's (MillStream): it would fill the window between
+  // two lathe motions of the CL however long the milling between them is.
+  if (mv.mill) return;
   k_->moves.moves.push_back({mv, state ? *state : CutState{}, state != nullptr});
   advance(false);
 }
