@@ -58,6 +58,11 @@ PartPoint part_point(XzcPoint q, double index) {
   return {q.r * std::cos(a), q.r * std::sin(a), q.z};
 }
 
+PartPoint part_of_machine(double x, double y, double z, double c) {
+  const double a = c * kDeg, cs = std::cos(a), sn = std::sin(a);
+  return {x * cs - y * sn, x * sn + y * cs, z};
+}
+
 double xzc_deviation(XzcPoint from, XzcPoint to, double index, int samples) {
   const PartPoint a = part_point(from, index), b = part_point(to, index);
   double worst = 0;

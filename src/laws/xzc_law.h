@@ -46,6 +46,10 @@ struct XzcPiece {
 XzcPoint xzc_point(PartPoint p, double index, double near);
 // The part point the machine position `q` is at C index `index`.
 PartPoint part_point(XzcPoint q, double index);
+// The part point (at C0) a machine position is at: X (a radius) and Y turned by C (degrees) about
+// Z, the tool standing still while C turns the part. What verify and plot map a program's X, Y, Z
+// and C back with (verify/mill_verify.h, plot/mill_views.h).
+PartPoint part_of_machine(double x, double y, double z, double c);
 
 // The pieces of the straight part-frame line from `a` to `b` at C index `index`, the machine at
 // C `c_from` at `a`, each within `tol` of the line (the distance, at the same fraction of the

@@ -26,8 +26,7 @@ struct ClMill {
 };
 
 PartPoint turned(PartPoint p, double degrees) {
-  const double a = degrees * kPi / 180, c = std::cos(a), s = std::sin(a);
-  return {p.x * c - p.y * s, p.x * s + p.y * c, p.z};
+  return part_of_machine(p.x, p.y, p.z, degrees);
 }
 
 double distance(PartPoint a, PartPoint b) {
@@ -43,7 +42,7 @@ Axes axes(const SimMillMove& m) {
   return {m.x, m.y, m.z, m.c};
 }
 PartPoint part(Axes a) {
-  return turned({a.x, a.y, a.z}, a.c);
+  return part_of_machine(a.x, a.y, a.z, a.c);
 }
 
 // The point of the polyline `pts` nearest to `q`.
