@@ -65,6 +65,12 @@ struct SimMillMove {
   bool arc = false;            // G2/G3: checked at its end
   double x = 0, y = 0, z = 0;  // X a radius
   double c = 0;                // degrees, as written (0 before any C)
+  bool c_known = false;        // a C word came before (or in) this block
+  bool at_known = false;       // X and Z are known at its end (not the first move's unknown start)
+  int plane = 18;              // the plane selected then (17, 18, 19)
+  bool ccw = false;            // G3
+  double i = 0, j = 0, k = 0;  // an arc's centre words, from its start (I a radius)
+  int tool = -1;               // the tool loaded then, as read back (-1: not known)
 };
 
 struct Simulation {

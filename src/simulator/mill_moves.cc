@@ -38,6 +38,16 @@ void mill_move(State& s, const NcBlock& b) {
   mv.y = s.y;
   mv.z = z ? s.value(*z) : s.pos.z;
   mv.c = s.c.value_or(0);
+  mv.c_known = s.c.has_value();
+  mv.at_known = s.pos_known || (x != nullptr && z != nullptr);
+  mv.plane = s.plane;
+  mv.ccw = s.motion == Motion::kArcCcw;
+  if (arc) {
+    if (const NcWord* w = b.find("I")) mv.i = s.value(*w);
+    if (const NcWord* w = b.find("J")) mv.j = s.value(*w);
+    if (const NcWord* w = b.find("K")) mv.k = s.value(*w);
+  }
+  mv.tool = s.cut.tool;
   if (!s.c) {
     s.mill_before = std::move(mv);
     return;
