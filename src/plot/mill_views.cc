@@ -1,0 +1,161 @@
+#include "plot/mill_views.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "laws/xzc_law.h"
+
+namespace clpost {
+namespace {
+
+constexpr double kStepDegrees = 5;  // a move turning C is drawn in steps of at most this
+
+double angle_near(double a, double near) {
+  return a + 2 * std::numbers::pi * std::round((near - a) / (2 * std::numbers::pi));
+}
+
+// A machine position in X (a radius), Y, Z, C.
+struct Axes {
+  double x = 0, y = 0, z = 0, c = 0;
+};
+
+// The points along a G2/G3 move from `a` to `b` (at b's C) in steps of at most kStepDegrees, in
+// its plane (G17 X/Y, G18 Z/X, G19 Y/Z; its centre words I, J, K from its start), turning
+// positively about the plane's normal for G3 (ISO 6983), the axis along the normal linear.
+std::vector<Axes> arc_points(const SimMillMove& a, const SimMillMove& b) {
+  const auto uvw = [&](const SimMillMove& m) -> std::array<double, 3> {
+    if (b.plane == 17) return {m.x, m.y, m.z};
+    if (b.plane == 19) return {m.y, m.z, m.x};
+    return {m.z, m.x, m.y};
+  };
+  const std::array<double, 3> p = uvw(a), q = uvw(b);
+  const double cu = p[0] + (b.plane == 17 ? b.i : b.plane == 19 ? b.j : b.k);
+  const double cv = p[1] + (b.plane == 17 ? b.j : b.plane == 19 ? b.k : b.i);
+  const double r = std::hypot(p[0] - cu, p[1] - cv);
+  const double a0 = std::atan2(p[1] - cv, p[0] - cu);
+  double sweep = std::atan2(q[1] - cv, q[0] - cu) - a0;
+  const double turn = 2 * std::numbers::pi;
+  if (!(r > 0)) return {};
+  if (b.ccw) {
+    while (sweep <= 1e-12) sweep += turn;
+  } else {
+    while (sweep >= -1e-12) sweep -= turn;
+  }
+  const int n = std::max(
+      1, static_cast<int>(std::ceil(std::fabs(sweep) / (kStepDegrees * std::numbers::pi / 180))));
+  std::vector<Axes> out;
+  for (int i = 1; i <= n; ++i) {
+    const double t = static_cast<double>(i) / n, g = a0 + sweep * t;
+    const std::array<double, 3> m = {cu + r * std::cos(g), cv + r * std::sin(g),
+                                     p[2] + (q[2] - p[2]) * t};
+    if (b.plane == 17)
+      out.push_back({m[0], m[1], m[2], b.c});
+    else if (b.plane == 19)
+      out.push_back({m[2], m[0], m[1], b.c});
+    else
+      out.push_back({m[1], m[2], m[0], b.c});
+  }
+  return out;
+}
+
+}  // namespace
+
+MillViews::MillViews(bool rollover, ThinOptions options)
+    : rollover_(rollover), face_(options), peripheral_(options) {}
+
+void MillViews::mill_move(const SimMillMove& m, const CutState& state) {
+  // The tool that writes C (a C word changing it, or the first) works on the C axis.
+  if (m.c_known && (!c_seen_ || m.c != last_c_)) c_tool_ = state.tool;
+  c_seen_ = c_seen_ || m.c_known;
+  last_c_ = m.c;
+  c_work_ = m.c_known && state.tool == c_tool_;
+  if (c_work_ && has_prev_ && prev_.c_known && m.at_known) draw(prev_, m);
+  if (m.at_known) {
+    prev_ = m;
+    prev_.line_text.clear();  // only its axes are needed
+    has_prev_ = true;
+  }
+}
+
+void MillViews::side_move(const Move& m, const CutState& state) {
+  if (m.kind == MoveKind::kRapid || (c_work_ && state.tool == c_tool_)) return;
+  stock_ = std::max({stock_, std::fabs(m.from.x), std::fabs(m.to.x)});
+}
+
+double MillViews::unrolled(PartPoint p) {
+  if (unroll_r_ == 0) unroll_r_ = std::max(std::hypot(p.x, p.y), 1e-6);
+  double a = std::atan2(p.y, p.x);
+  a = has_angle_ ? angle_near(a, last_angle_) : (a < 0 ? a + 2 * std::numbers::pi : a);
+  has_angle_ = true;
+  last_angle_ = a;
+  return unroll_r_ * a;
+}
+
+// The machine's motion from `a` to `b` in the part frame, in steps: X, Y, Z and C linear (C the
+// shortest way on a rollover control), or along the arc of a G2/G3.
+void MillViews::draw(const SimMillMove& a, const SimMillMove& b) {
+  const double c0 = a.c;
+  const double c1 = rollover_ ? c0 + std::remainder(b.c - c0, 360.0) : b.c;
+  std::vector<Axes> steps = b.arc ? arc_points(a, b) : std::vector<Axes>{};
+  if (steps.empty()) {
+    const int n = std::max(1, static_cast<int>(std::ceil(std::fabs(c1 - c0) / kStepDegrees)));
+    for (int i = 1; i <= n; ++i) {
+      const double t = static_cast<double>(i) / n;
+      steps.push_back({a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t,
+                       c0 + (c1 - c0) * t});
+    }
+  }
+  const bool side = b.plane == 19;
+  Move mv;
+  mv.kind = b.rapid ? MoveKind::kRapid : MoveKind::kFeed;
+  mv.line = static_cast<int>(b.line);
+  const auto at = [&](const Axes& q) {
+    const PartPoint p = part_of_machine(q.x, q.y, q.z, q.c);
+    if (side) return Vec2{unrolled(p), p.z};
+    if (!b.rapid) work_radius_ = std::max(work_radius_, std::hypot(p.x, p.y));
+    return Vec2{p.y, p.x};
+  };
+  Vec2 from = at({a.x, a.y, a.z, c0});
+  for (const Axes& q : steps) {
+    const Vec2 to = at(q);
+    if (to.x != from.x || to.z != from.z) {
+      mv.from = from;
+      mv.to = to;
+      (side ? peripheral_ : face_).add(mv);
+    }
+    from = to;
+  }
+}
+
+MillViewsDrawn MillViews::finish(const std::vector<SimHole>& holes, LengthUnit units) {
+  MillViewsDrawn out;
+  // Without peripheral milling: unrolled at the stock, else at the radial holes' tops.
+  if (unroll_r_ == 0 && stock_ > 0) unroll_r_ = stock_;
+  for (const SimHole& h : holes)
+    if (unroll_r_ == 0 && h.radial && h.c) unroll_r_ = std::fabs(h.r);
+  for (const SimHole& h : holes) {
+    if (!h.c) continue;  // C never written: not C work
+    if (out.face_holes.size() + out.radial_holes.size() >= kMaxHoleMarks) {
+      ++out.holes_not_drawn;
+      continue;
+    }
+    if (h.radial) {
+      const double deg = *h.c - 360 * std::floor(*h.c / 360);
+      out.radial_holes.push_back({unroll_r_ * deg * std::numbers::pi / 180, h.z});
+      continue;
+    }
+    const PartPoint p = part_of_machine(h.x, 0, 0, *h.c);
+    work_radius_ = std::max(work_radius_, std::fabs(h.x));
+    out.face_holes.push_back({p.y, p.x});
+  }
+  out.face = face_.finish(units);
+  out.peripheral = peripheral_.finish(units);
+  out.stock_turned = stock_ > 0;
+  out.stock_radius = stock_ > 0 ? stock_ : work_radius_;
+  out.unroll_radius = unroll_r_;
+  return out;
+}
+
+}  // namespace clpost
