@@ -132,6 +132,67 @@ TEST(Plot, ABigProgramMakesASmallPicture) {
   EXPECT_NE(svg.find(">path simplified: 300 001 moves drawn as "), std::string::npos);
 }
 
+// A face bolt circle (tests/data/millturn-face-holes.apt: 4 holes at radius 30, C0, 90, 180,
+// 270) on linuxcnc-lathe-c: the face view's frame holds the stock circle (radius 30, the work's:
+// nothing is turned) and its labels, +-30 * 1.08 * 1.04 = +-33.696, padded by 5 %: 74.1312 mm
+// in 640 px, k = 8.63337 px/mm, centred at x 78 + 1094 / 2 = 625 and at y 424 + 320 = 744 (the
+// frame's top: the side view's 352 px and the panel's head of 72). A hole at radius 30 is 30 k
+// = 259 px from the centre: right at C0, up at C90.
+TEST(Plot, FaceHolesAreMarksAtTheirCOnTheFaceView) {
+  RunResult r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-holes.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("<circle class=\"stock\" cx=\"625\" cy=\"744\" r=\"259\""),
+            std::string::npos);
+  EXPECT_NE(r.out.find("<circle class=\"hole\" cx=\"884\" cy=\"744\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"625\" cy=\"485\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"366\" cy=\"744\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"625\" cy=\"1003\" r=\"4.5\"/>"),
+            std::string::npos);
+  // The three C indexes of 90 degrees at radius 30, rapids swept in 54 steps of 5 degrees:
+  // 54 * 2 * 30 sin(2.5 deg) = 141.3 mm.
+  EXPECT_NE(r.out.find(">54 moves: 54 rapid (141.3 mm); 4 face holes (marks: the tool diameter "
+                       "is not in the program); dashed circle: radius 30, the work&apos;s "
+                       "largest</text>"),
+            std::string::npos);
+  EXPECT_EQ(r.out.find("Peripheral work"), std::string::npos);
+}
+
+// tests/data/millturn-face-mill.apt on haas-st-20y (G17 X Y at C30): the 20 x 20 square's corners
+// (10, -10), (10, 10), (-10, 10), (-10, -10) turned by 30 degrees are (13.6603, -3.6603),
+// (3.6603, 13.6603), (-13.6603, 3.6603), (-3.6603, -13.6603). The frame holds +-14.1421 (the
+// arc, the work's radius) * 1.1232 = +-15.8845, padded by 5 %: 34.9458 mm in 640 px, k =
+// 18.3141, left at 305 and top at 888, part (x, y) at (305 + (x + 17.4729) k, 1528 - (y +
+// 17.4729) k): (875.18, 1275.03), (692.03, 957.82), ... Its length is the CL path's: 80 of the
+// square, 270 degrees of the arc (66.6432) and the 24 of the slot, 170.6, on haas-st-20y as arcs
+// and on linuxcnc-lathe-c as the post's XZC pieces mapped back.
+TEST(Plot, FaceMillingIsDrawnInThePartFrame) {
+  RunResult r = clpost("plot -m haas-st-20y tests/data/millturn-face-mill.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.18 1275.03 L692.03 957.82 L374.82 1140.97 "
+                       "L557.97 1458.18 L875.18 1275.03 "),
+            std::string::npos);
+  EXPECT_NE(r.out.find(">61 moves: 2 rapid (24.2 mm), 59 feed (170.6 mm); 0 face holes"),
+            std::string::npos);
+  r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-mill.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(" feed (170.6 mm); 0 face holes"), std::string::npos);
+}
+
+// Radial holes (tests/data/millturn-radial-holes.apt: Z-10 C0, Z-20 C90, Z-30 C180) on the
+// unrolled peripheral view only, at radius 42 (their R plane: nothing is turned); a turning
+// program on a machine with C has neither view.
+TEST(Plot, RadialHolesAreOnThePeripheralViewOnly) {
+  RunResult r = clpost("plot -m haas-st-20y tests/data/millturn-radial-holes.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("Face work"), std::string::npos);
+  EXPECT_NE(r.out.find(">Peripheral work, unrolled at radius 42 mm:"), std::string::npos);
+  EXPECT_EQ(count(r.out, "<circle class=\"hole\""), 3u);
+  r = clpost("plot -m linuxcnc-lathe-c samples/thread-m20.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("Face work"), std::string::npos);
+  EXPECT_EQ(r.out.find("Peripheral work"), std::string::npos);
+}
+
 // The README shows docs/img: they must be what clpost draws (scripts/plot-samples.sh redraws).
 TEST(Plot, DocsPicturesAreCurrent) {
   namespace fs = std::filesystem;

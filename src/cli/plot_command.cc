@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 
 #include "cli/batch.h"
 #include "cli/post_file.h"
@@ -46,16 +47,30 @@ struct Drawing {
   std::string title;
   bool full = true;
   PathThinner thinner;
+  std::unique_ptr<MillViews> mill;  // a machine with C: its face and peripheral views
   // Unless --full: no moves kept; each that goes somewhere (not the entries from an unknown
-  // position, which are not drawn) streams into the thinner.
+  // position, which are not drawn) streams into the thinner. With C, the moves in X, Y, Z and C
+  // stream into `mill` (never kept), and the side view's moves too (the turned stock).
   SimOptions options() {
     SimOptions o;
-    if (full) return o;
+    if (mill) {
+      o.keep_mill_moves = false;
+      o.on_mill_move = [this](const SimMillMove& m, const CutState& s) { mill->mill_move(m, s); };
+    }
+    if (full) {
+      if (mill) o.on_move = [this](const Move& m, const CutState& s) { mill->side_move(m, s); };
+      return o;
+    }
     o.keep_moves = false;
-    o.on_move = [this](const Move& m, const CutState&) {
+    o.on_move = [this](const Move& m, const CutState& s) {
+      if (mill) mill->side_move(m, s);
       if (!(m.from.x == m.to.x && m.from.z == m.to.z)) thinner.add(m);
     };
     return o;
+  }
+  // The C-axis work's views (none without C).
+  MillViewsDrawn mill_views() {
+    return mill ? mill->finish(sim.holes, sim.units) : MillViewsDrawn{};
   }
 };
 
@@ -129,7 +144,7 @@ bool draw_cl(const PlotRequest& req, Drawing& d, std::string& diagnostics) {
   diagnostics += p.diagnostics;
   if (!p.ok) return false;
   if (!simulate_text(p.program, "<program of " + display_name(req.input) + ">", m, d.sim,
-                     diagnostics))
+                     diagnostics, d.options()))
     return false;
   for (const ThreadPlan& t : p.plans)
     for (ThreadSection& s : sections_from_plan(t)) d.sections.push_back(std::move(s));
@@ -189,13 +204,15 @@ std::string simplified_backplot(Drawing& d) {
       more += fmt::format(", {} more not drawn (--thread N)", groups.left_out());
     note += (note.empty() ? "" : "; ") + more;
   }
-  return backplot_svg(path, &drawn, d.title, note);
+  const MillViewsDrawn mill = d.mill_views();
+  return backplot_svg(path, &drawn, d.title, note, &mill);
 }
 
 // The picture: thread N's section (--thread N), else the backplot with every section.
 bool render_svg(const PlotRequest& req, Drawing& d, std::string& svg, std::string& diagnostics) {
   if (req.thread <= 0 && d.full) {
-    svg = backplot_svg(d.sim.path, &d.sections, d.title);
+    const MillViewsDrawn mill = d.mill_views();
+    svg = backplot_svg(d.sim.path, &d.sections, d.title, &mill);
     return true;
   }
   if (req.thread <= 0) {
@@ -242,6 +259,8 @@ PlotOutcome plot_file(const PlotRequest& req) {
   PlotOutcome out;
   Drawing d;
   d.full = req.full;
+  if (req.machine->c_axis)
+    d.mill = std::make_unique<MillViews>(req.machine->c_rotation == CRotation::kRollover);
   const bool cl = is_cl_file_name(req.input);
   const bool drawn = cl ? (req.full ? draw_cl(req, d, out.diagnostics)
                                     : draw_cl_streaming(req, d, out.diagnostics))

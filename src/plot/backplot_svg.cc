@@ -117,8 +117,15 @@ void draw_grid_lines(SvgWriter& w, const Frame& f, double step_z, double step_x)
   w.close();
 }
 
+// The names of a view's axes ("{}" the unit) and whether its X 0 line is the spindle axis.
+struct AxisTitles {
+  std::string_view across = "Z ({}) \u2192";
+  std::string_view up = "\u2191 X radius ({})";
+  bool spindle_axis = true;
+};
+
 // The plot's border and the names of its axes.
-void draw_border(SvgWriter& w, const Frame& f, const char* unit) {
+void draw_border(SvgWriter& w, const Frame& f, const char* unit, const AxisTitles& t) {
   w.empty("rect", {{"x", svg_num(f.ox)},
                    {"y", svg_num(f.oy)},
                    {"width", svg_num(f.w)},
@@ -131,10 +138,10 @@ void draw_border(SvgWriter& w, const Frame& f, const char* unit) {
           {"font-size", "13"},
           {"text-anchor", "end"},
           {"fill", "#333333"}},
-         fmt::format("Z ({}) \u2192", unit));
+         fmt::format(fmt::runtime(t.across), unit));
   w.text("text",
          {{"x", svg_num(f.ox)}, {"y", svg_num(f.oy - 8)}, {"font-size", "13"}, {"fill", "#333333"}},
-         fmt::format("\u2191 X radius ({})", unit));
+         fmt::format(fmt::runtime(t.up), unit));
 }
 
 // The spindle axis (X 0), drawn when the plot reaches across it.
@@ -156,15 +163,15 @@ void draw_spindle_axis(SvgWriter& w, const Frame& f) {
          "spindle axis");
 }
 
-void draw_grid(SvgWriter& w, const Frame& f, const char* unit) {
+void draw_grid(SvgWriter& w, const Frame& f, const char* unit, const AxisTitles& t = {}) {
   // One step on both axes (one scale), at most about 12 ticks and numbers at least 56 px apart;
   // a flat plot gets finer X ticks, still at least 24 px apart.
   const double step_z =
       nice_step(std::max({(f.z_hi - f.z_lo) / 12, (f.x_hi - f.x_lo) / 12, 56 / f.k}));
   const double step_x = std::min(step_z, nice_step(std::max((f.x_hi - f.x_lo) / 4, 24 / f.k)));
   draw_grid_lines(w, f, step_z, step_x);
-  draw_border(w, f, unit);
-  draw_spindle_axis(w, f);
+  draw_border(w, f, unit, t);
+  if (t.spindle_axis) draw_spindle_axis(w, f);
 }
 
 // The moves as one <path> per run of one drawing class.
@@ -381,6 +388,197 @@ void draw_insets(SvgWriter& w, const std::vector<Inset>& insets) {
   }
 }
 
+// A view of the C-axis work (plot/mill_views.h) under the side view: its frame and title line.
+struct MillPanel {
+  bool peripheral = false;
+  const ThinnedPath* path = nullptr;
+  const std::vector<Vec2>* holes = nullptr;
+  Frame f;
+  double top = 0;
+};
+
+constexpr double kPanelHead = 72;
+constexpr double kLabelAt = 1.08;  // the C0 and C90 directions' length, a part of the stock radius
+                                   // // a panel's title, caption and the axis title above its frame
+
+// What a panel's frame shows: its moves (fitted to the cutting ones), holes and stock circle.
+Bounds panel_bounds(const MillViewsDrawn& d, const MillPanel& p) {
+  Bounds all = p.path->measure.all, cut = p.path->measure.cut;
+  std::vector<Vec2> pts = *p.holes;
+  const double r = d.stock_radius * kLabelAt * 1.04;  // room for the C0 and C90 labels
+  if (!p.peripheral && d.stock_radius > 0) pts.insert(pts.end(), {{-r, -r}, {r, r}});
+  for (const Vec2& v : pts) {
+    all.add(v);
+    cut.add(v);
+  }
+  // The unrolled view at least half as wide as it is tall: holes at one Z stay readable.
+  const double wide = (cut.x_hi - cut.x_lo) / 2 - (cut.z_hi - cut.z_lo);
+  if (p.peripheral && !cut.empty && wide > 0) {
+    for (Bounds* b : {&all, &cut}) {
+      b->add({cut.x_lo, cut.z_lo - wide / 2});
+      b->add({cut.x_lo, cut.z_hi + wide / 2});
+    }
+  }
+  bool clipped = false;
+  return plot_bounds(all, cut, clipped);
+}
+
+// The face view, then the peripheral view, each where there is such work, from `height`,
+// which grows by them.
+std::vector<MillPanel> mill_panels(const MillViewsDrawn* d, double& height) {
+  std::vector<MillPanel> out;
+  if (d == nullptr) return out;
+  for (const bool peripheral : {false, true}) {
+    if (peripheral ? !d->has_peripheral() : !d->has_face()) continue;
+    MillPanel p;
+    p.peripheral = peripheral;
+    p.path = peripheral ? &d->peripheral : &d->face;
+    p.holes = peripheral ? &d->radial_holes : &d->face_holes;
+    p.top = height + 8;
+    p.f = frame_of(panel_bounds(*d, p), p.top + kPanelHead);
+    height = p.f.oy + p.f.h + kBelow;
+    out.push_back(p);
+  }
+  return out;
+}
+
+// Each hole a circle with a cross (the tool's diameter is not in the program).
+void draw_hole_marks(SvgWriter& w, const std::vector<Vec2>& holes, const Frame& f) {
+  if (holes.empty()) return;
+  w.open("g",
+         {{"class", "holes"}, {"fill", "none"}, {"stroke", "#c0392b"}, {"stroke-width", "1.6"}});
+  SvgPath cross;
+  for (const Vec2& h : holes) {
+    const double x = f.px(h.z), y = f.py(h.x);
+    w.empty("circle", {{"class", "hole"}, {"cx", svg_num(x)}, {"cy", svg_num(y)}, {"r", "4.5"}});
+    cross.move_to(x - 7, y);
+    cross.line_to(x + 7, y);
+    cross.move_to(x, y - 7);
+    cross.line_to(x, y + 7);
+  }
+  w.empty("path", {{"d", cross.data()}, {"stroke-width", "1"}});
+  w.close();
+}
+
+// The face view's stock circle and the directions C0 and C90 from the centre.
+void draw_face_marks(SvgWriter& w, const MillViewsDrawn& d, const Frame& f) {
+  const double r = d.stock_radius > 0 ? d.stock_radius : 10 / f.k;
+  if (d.stock_radius > 0)
+    w.empty("circle", {{"class", "stock"},
+                       {"cx", svg_num(f.px(0))},
+                       {"cy", svg_num(f.py(0))},
+                       {"r", svg_num(r * f.k)},
+                       {"fill", "none"},
+                       {"stroke", "#555555"},
+                       {"stroke-width", "1.2"},
+                       {"stroke-dasharray", "10 4"}});
+  SvgPath dirs;
+  dirs.move_to(f.px(0), f.py(0));
+  dirs.line_to(f.px(r * kLabelAt), f.py(0));
+  dirs.move_to(f.px(0), f.py(0));
+  dirs.line_to(f.px(0), f.py(r * kLabelAt));
+  w.empty("path", {{"class", "c-directions"},
+                   {"d", dirs.data()},
+                   {"stroke", "#555555"},
+                   {"stroke-dasharray", "14 3 3 3"}});
+  const SvgAttrs label = {{"font-size", "12"}, {"fill", "#333333"}};
+  SvgAttrs a = label;
+  a.insert(a.end(), {{"x", svg_num(f.px(r * kLabelAt) + 4)}, {"y", svg_num(f.py(0) + 4)}});
+  w.text("text", a, "C0");
+  a = label;
+  a.insert(a.end(), {{"x", svg_num(f.px(0) + 4)}, {"y", svg_num(f.py(r * kLabelAt) - 4)}});
+  w.text("text", a, "C90");
+}
+
+// The peripheral view's lines at C0, C90, ... (R * angle), labelled at the left.
+void draw_c_lines(SvgWriter& w, double radius, const Frame& f) {
+  const double step = radius * std::numbers::pi / 2;
+  if (!(step > 0)) return;
+  SvgPath lines;
+  for (double k = std::ceil(f.x_lo / step); k * step <= f.x_hi; ++k) {
+    lines.move_to(f.ox, f.py(k * step));
+    lines.line_to(f.ox + f.w, f.py(k * step));
+    w.text("text",
+           {{"x", svg_num(f.ox + 4)},
+            {"y", svg_num(f.py(k * step) - 4)},
+            {"font-size", "12"},
+            {"fill", "#333333"}},
+           fmt::format("C{}", svg_num(k * 90)));
+  }
+  w.empty("path", {{"class", "c-lines"},
+                   {"d", lines.data()},
+                   {"stroke", "#555555"},
+                   {"stroke-dasharray", "14 3 3 3"}});
+}
+
+// The panel's title and its line of counts.
+void draw_panel_head(SvgWriter& w, const MillPanel& p, const MillViewsDrawn& d, const char* unit) {
+  w.text("text",
+         {{"class", "view-title"},
+          {"x", "16"},
+          {"y", svg_num(p.top + 22)},
+          {"font-size", "16"},
+          {"font-weight", "bold"}},
+         p.peripheral ? fmt::format("Peripheral work, unrolled at radius {} {}: Z across, the arc "
+                                    "length at that radius from C0 up",
+                                    svg_num(d.unroll_radius, 3), unit)
+                      : std::string("Face work, looking along \u2212Z at the part face: the part "
+                                    "at C0, X across, Y up"));
+  const size_t n = p.holes->size();
+  std::string s = p.path->measure.total() > 0
+                      ? summary(p.path->measure, p.path->measure.total(), unit) + "; "
+                      : std::string();
+  s += fmt::format("{} {} hole{} (marks: the tool diameter is not in the program)", n,
+                   p.peripheral ? "radial" : "face", n == 1 ? "" : "s");
+  if (!p.peripheral && d.stock_radius > 0)
+    s += fmt::format("; dashed circle: radius {}, {}", svg_num(d.stock_radius, 3),
+                     d.stock_turned ? "the largest turned" : "the work's largest");
+  if (p.path->simplified()) s += "; " + simplified_note(*p.path);
+  if (d.holes_not_drawn > 0)
+    s += fmt::format("; {} holes past the marks' budget not drawn", d.holes_not_drawn);
+  w.text("text",
+         {{"class", "view-summary"},
+          {"x", "16"},
+          {"y", svg_num(p.top + 42)},
+          {"font-size", "13"},
+          {"fill", "#444444"}},
+         s);
+}
+
+void draw_mill_panels(SvgWriter& w, const std::vector<MillPanel>& panels, const MillViewsDrawn* d,
+                      const char* unit) {
+  for (const MillPanel& p : panels) {
+    const std::string up =
+        fmt::format("\u2191 R\u00b7C at radius {} ({{}})", svg_num(d->unroll_radius, 3));
+    const AxisTitles t = p.peripheral
+                             ? AxisTitles{"Z ({}) \u2192", up, false}
+                             : AxisTitles{"part X ({}) \u2192", "\u2191 part Y ({})", false};
+    w.empty("line", {{"x1", "16"},
+                     {"y1", svg_num(p.top)},
+                     {"x2", svg_num(kWidth - 16)},
+                     {"y2", svg_num(p.top)},
+                     {"stroke", "#cccccc"}});
+    draw_panel_head(w, p, *d, unit);
+    draw_grid(w, p.f, unit, t);
+    const std::string clip = p.peripheral ? "peripheral-clip" : "face-clip";
+    w.open("clipPath", {{"id", clip}});
+    w.empty("rect", {{"x", svg_num(p.f.ox)},
+                     {"y", svg_num(p.f.oy)},
+                     {"width", svg_num(p.f.w)},
+                     {"height", svg_num(p.f.h)}});
+    w.close();
+    w.open("g", {{"class", p.peripheral ? "peripheral-view" : "face-view"},
+                 {"clip-path", fmt::format("url(#{})", clip)}});
+    if (p.peripheral)
+      draw_c_lines(w, d->unroll_radius, p.f);
+    else
+      draw_face_marks(w, *d, p.f);
+    draw_moves(w, p.path->path.moves, p.f);
+    draw_hole_marks(w, *p.holes, p.f);
+    w.close();
+  }
+}
+
 // What one backplot shows: the moves drawn, what all the program's moves measure, a note.
 struct View {
   const std::vector<Move>& moves;
@@ -388,7 +586,8 @@ struct View {
   LengthUnit units;
   const std::vector<ThreadSection>* sections;
   std::string_view title;
-  std::string_view note;  // under the legend, when not empty
+  std::string_view note;                 // under the legend, when not empty
+  const MillViewsDrawn* mill = nullptr;  // the C-axis work's views, when there is any
 };
 
 void draw_header(SvgWriter& w, const View& v, const char* unit, bool clipped, bool lead) {
@@ -414,6 +613,7 @@ std::string render(const View& v) {
   Frame f = frame_of(plot_bounds(v.measure.all, v.measure.cut, clipped),
                      v.note.empty() ? kTop : kTop + kNoteH);
   double height = f.oy + f.h + kBelow;
+  const std::vector<MillPanel> panels = mill_panels(v.mill, height);
   const std::vector<Inset> insets = section_insets(v.sections, height);
   SvgWriter w(kWidth, height);
   draw_style(w);
@@ -437,6 +637,7 @@ std::string render(const View& v) {
   draw_start(w, v.measure, f);
   w.close();
   draw_header(w, v, unit, clipped, lead);
+  draw_mill_panels(w, panels, v.mill, unit);
   draw_insets(w, insets);
   return w.finish();
 }
@@ -449,15 +650,23 @@ double backplot_scale(const Bounds& all, const Bounds& cut) {
 }
 
 std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
-                         std::string_view title) {
+                         std::string_view title, const MillViewsDrawn* mill) {
   PathMeasure pm;
   for (const Move& m : tp.moves) pm.add(m);
-  return render({tp.moves, pm, tp.units, sections, title, {}});
+  return render({tp.moves,
+                 pm,
+                 tp.units,
+                 sections,
+                 title,
+                 {},
+                 mill != nullptr && mill->any() ? mill : nullptr});
 }
 
 std::string backplot_svg(const ThinnedPath& path, const std::vector<ThreadSection>* sections,
-                         std::string_view title, std::string_view note) {
-  return render({path.path.moves, path.measure, path.path.units, sections, title, note});
+                         std::string_view title, std::string_view note,
+                         const MillViewsDrawn* mill) {
+  return render({path.path.moves, path.measure, path.path.units, sections, title, note,
+                 mill != nullptr && mill->any() ? mill : nullptr});
 }
 
 }  // namespace clpost

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "plot/mill_views.h"
 #include "plot/move_geometry.h"
 #include "plot/path_thinner.h"
 #include "simulator/toolpath.h"
@@ -27,17 +28,23 @@ namespace clpost {
 //    shows without colour; the legend names the hatch;
 //  - `title` (escaped) at the top; empty: "Backplot";
 //  - when `sections` is given and not empty, each thread's section picture
-//    (thread_section_svg.h) under the plot, scaled to the width.
+//    (thread_section_svg.h) under the plot, scaled to the width;
+//  - when `mill` has C-axis work (plot/mill_views.h), under the plot and above the sections:
+//    the face view (the part face seen along -Z at C0, with the stock circle, C0 and C90 marked,
+//    face holes as marks) and the unrolled peripheral view (Z across, the arc length up, lines
+//    at C0, C90, ..., radial holes as marks), each only when there is such work; without it the
+//    document is the lathe's side view alone, as it always was.
 // An empty toolpath gives a valid document with an empty grid and the words "no moves".
 std::string backplot_svg(const Toolpath& toolpath,
                          const std::vector<ThreadSection>* sections = nullptr,
-                         std::string_view title = {});
+                         std::string_view title = {}, const MillViewsDrawn* mill = nullptr);
 
 // The same picture of a thinned path (path_thinner.h): its moves drawn, the line of move counts
 // and lengths and the frame from what every move of the program measures; `note`, when not
 // empty, in italics on a line of its own under the legend (the plot moves down by that line).
 std::string backplot_svg(const ThinnedPath& path, const std::vector<ThreadSection>* sections,
-                         std::string_view title, std::string_view note);
+                         std::string_view title, std::string_view note,
+                         const MillViewsDrawn* mill = nullptr);
 
 // The scale (px per program unit) backplot_svg draws at, for a program whose moves cover `all`
 // and whose cutting moves cover `cut`. It only shrinks as the boxes grow.
