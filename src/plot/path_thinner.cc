@@ -82,6 +82,12 @@ void PathThinner::add(const Move& m) {
   if (!finite_move(m)) return;
   out_.measure.add(m);
   if (scale_ == 0 || out_.measure.total() % kRescaleEvery == 0) note_scale();
+  // Full: counted, not drawn (before the budget's test, which a full path may still fail: moves
+  // that merge at no tolerance would be thinned again at every move).
+  if (full_) {
+    ++out_.dropped;
+    return;
+  }
   if (out_.path.moves.size() > opt_.budget) {
     flush();
     note_scale();
