@@ -260,7 +260,8 @@ PlotOutcome plot_file(const PlotRequest& req) {
   Drawing d;
   d.full = req.full;
   if (req.machine->c_axis)
-    d.mill = std::make_unique<MillViews>(req.machine->c_rotation == CRotation::kRollover);
+    d.mill = std::make_unique<MillViews>(req.machine->c_rotation == CRotation::kRollover,
+                                         req.machine->y_axis);
   const bool cl = is_cl_file_name(req.input);
   const bool drawn = cl ? (req.full ? draw_cl(req, d, out.diagnostics)
                                     : draw_cl_streaming(req, d, out.diagnostics))

@@ -62,8 +62,8 @@ std::vector<Axes> arc_points(const SimMillMove& a, const SimMillMove& b) {
 
 }  // namespace
 
-MillViews::MillViews(bool rollover, ThinOptions options)
-    : rollover_(rollover), face_(options), peripheral_(options) {}
+MillViews::MillViews(bool rollover, bool y_axis, ThinOptions options)
+    : rollover_(rollover), y_axis_(y_axis), face_(options), peripheral_(options) {}
 
 void MillViews::mill_move(const SimMillMove& m, const CutState& state) {
   // The tool that writes C (a C word changing it, or the first) works on the C axis.
@@ -107,7 +107,10 @@ void MillViews::draw(const SimMillMove& a, const SimMillMove& b) {
                        c0 + (c1 - c0) * t});
     }
   }
-  const bool side = b.plane == 19;
+  const bool side = b.plane == 19 || (y_axis_ && b.plane == 18);
+  // The peripheral view's radius is its first feed's: the rapids before it (approaches from
+  // far off) are not drawn.
+  if (side && b.rapid && unroll_r_ == 0) return;
   Move mv;
   mv.kind = b.rapid ? MoveKind::kRapid : MoveKind::kFeed;
   mv.line = static_cast<int>(b.line);

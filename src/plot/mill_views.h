@@ -7,10 +7,12 @@
 //    with part X to the right and part Y up, so C0 points right;
 //  - the unrolled peripheral view has Z to the right and the arc length R * angle up, the angle
 //    the part point's about Z from C0; R, the radius it is unrolled at, is the first peripheral
-//    milling point's, else the stock's (the largest turned radius), else the first radial hole's
-//    top (its R plane).
+//    feed's start (the rapids before it are not drawn), else the stock's (the largest turned
+//    radius), else the first radial hole's top (its R plane).
 // A move of the machine's X, Y, Z or C is C work while the tool that last wrote C is loaded; it
-// goes to the peripheral view in G19 (the side plane, a radial tool), else to the face view. A
+// goes to the peripheral view in G19 (the side plane, a radial tool), and on a machine with Y in
+// G18 too (haas-st-20y's radial tool moves X Y Z there), else to the face view (G17; without Y
+// all milling is face work). A
 // move that turns C is drawn in steps of at most 5 degrees, so a C index at a radius shows as the
 // arc the tool describes on the part; a G2/G3 is drawn along its arc in its plane (G17, G18,
 // G19, centre words I J K from its start) the same way. Holes: a face hole (drilled along Z) is a
@@ -44,8 +46,9 @@ inline constexpr size_t kMaxHoleMarks = 20000;
 
 class MillViews {
  public:
-  // `rollover`: the control turns C the shortest way to a C word (millturn.c_rotation).
-  explicit MillViews(bool rollover, ThinOptions options = {});
+  // `rollover`: the control turns C the shortest way to a C word (millturn.c_rotation);
+  // `y_axis`: the machine has Y (millturn.y_axis), whose radial tool mills in G18 too.
+  explicit MillViews(bool rollover, bool y_axis = false, ThinOptions options = {});
   // Each move in X, Y, Z, C as the simulation reads it (SimOptions::on_mill_move).
   void mill_move(const SimMillMove& m, const CutState& state);
   // Each move of the side view (SimOptions::on_move): the feeds of other tools turn the stock.
@@ -58,6 +61,7 @@ class MillViews {
   double unrolled(PartPoint p);
 
   bool rollover_;
+  bool y_axis_;
   PathThinner face_, peripheral_;
   bool has_prev_ = false;
   SimMillMove prev_;
