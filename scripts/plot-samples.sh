@@ -22,3 +22,5 @@ mkdir -p "$out"
 # The Fanuc program's backplot (G92 and G76 expanded).
 "$bin" plot -m fanuc-0i-t samples/golden/fanuc-0i-t/threads-options.nc \
   -o "$out"/fanuc-options-backplot.svg
+# Face milling with a live tool on linuxcnc-lathe-c (XZC): the face view in the part frame.
+"$bin" plot -m linuxcnc-lathe-c tests/data/millturn-face-mill.apt -o "$out"/millturn-face-mill.svg

@@ -135,18 +135,18 @@ TEST(Plot, ABigProgramMakesASmallPicture) {
 // A face bolt circle (tests/data/millturn-face-holes.apt: 4 holes at radius 30, C0, 90, 180,
 // 270) on linuxcnc-lathe-c: the face view's frame holds the stock circle (radius 30, the work's:
 // nothing is turned) and its labels, +-30 * 1.08 * 1.04 = +-33.696, padded by 5 %: 74.1312 mm
-// in 640 px, k = 8.63337 px/mm, centred at x 78 + 1094 / 2 = 625 and at y 424 + 320 = 744 (the
-// frame's top: the side view's 352 px and the panel's head of 72). A hole at radius 30 is 30 k
+// in 640 px, k = 8.63337 px/mm, centred at x 78 + 1094 / 2 = 625 and at y 438 + 320 = 758 (the
+// frame's top: the side view's 352 px and the panel's head of 86). A hole at radius 30 is 30 k
 // = 259 px from the centre: right at C0, up at C90.
 TEST(Plot, FaceHolesAreMarksAtTheirCOnTheFaceView) {
   RunResult r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-holes.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("<circle class=\"stock\" cx=\"625\" cy=\"744\" r=\"259\""),
+  EXPECT_NE(r.out.find("<circle class=\"stock\" cx=\"625\" cy=\"758\" r=\"259\""),
             std::string::npos);
-  EXPECT_NE(r.out.find("<circle class=\"hole\" cx=\"884\" cy=\"744\" r=\"4.5\"/>\n"
-                       "<circle class=\"hole\" cx=\"625\" cy=\"485\" r=\"4.5\"/>\n"
-                       "<circle class=\"hole\" cx=\"366\" cy=\"744\" r=\"4.5\"/>\n"
-                       "<circle class=\"hole\" cx=\"625\" cy=\"1003\" r=\"4.5\"/>"),
+  EXPECT_NE(r.out.find("<circle class=\"hole\" cx=\"884\" cy=\"758\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"625\" cy=\"499\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"366\" cy=\"758\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"625\" cy=\"1017\" r=\"4.5\"/>"),
             std::string::npos);
   // The three C indexes of 90 degrees at radius 30, rapids swept in 54 steps of 5 degrees:
   // 54 * 2 * 30 sin(2.5 deg) = 141.3 mm.
@@ -161,15 +161,15 @@ TEST(Plot, FaceHolesAreMarksAtTheirCOnTheFaceView) {
 // (10, -10), (10, 10), (-10, 10), (-10, -10) turned by 30 degrees are (13.6603, -3.6603),
 // (3.6603, 13.6603), (-13.6603, 3.6603), (-3.6603, -13.6603). The frame holds +-14.1421 (the
 // arc, the work's radius) * 1.1232 = +-15.8845, padded by 5 %: 34.9458 mm in 640 px, k =
-// 18.3141, left at 305 and top at 888, part (x, y) at (305 + (x + 17.4729) k, 1528 - (y +
-// 17.4729) k): (875.18, 1275.03), (692.03, 957.82), ... Its length is the CL path's: 80 of the
+// 18.3141, left at 305 and top at 902, part (x, y) at (305 + (x + 17.4729) k, 1542 - (y +
+// 17.4729) k): (875.18, 1289.03), (692.03, 971.82), ... Its length is the CL path's: 80 of the
 // square, 270 degrees of the arc (66.6432) and the 24 of the slot, 170.6, on haas-st-20y as arcs
 // and on linuxcnc-lathe-c as the post's XZC pieces mapped back.
 TEST(Plot, FaceMillingIsDrawnInThePartFrame) {
   RunResult r = clpost("plot -m haas-st-20y tests/data/millturn-face-mill.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.18 1275.03 L692.03 957.82 L374.82 1140.97 "
-                       "L557.97 1458.18 L875.18 1275.03 "),
+  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.18 1289.03 L692.03 971.82 L374.82 1154.97 "
+                       "L557.97 1472.18 L875.18 1289.03 "),
             std::string::npos);
   EXPECT_NE(r.out.find(">61 moves: 2 rapid (24.2 mm), 59 feed (170.6 mm); 0 face holes"),
             std::string::npos);
@@ -208,7 +208,7 @@ TEST(Plot, DocsPicturesAreCurrent) {
         << committed << " is stale: run scripts/plot-samples.sh and look at it";
     ++compared;
   }
-  EXPECT_EQ(compared, 5u);
+  EXPECT_EQ(compared, 6u);
 }
 
 }  // namespace

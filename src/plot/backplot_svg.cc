@@ -397,9 +397,9 @@ struct MillPanel {
   double top = 0;
 };
 
-constexpr double kPanelHead = 72;
+// A panel's title, its two lines (counts; what was simplified) and the axis title above its frame.
+constexpr double kPanelHead = 86;
 constexpr double kLabelAt = 1.08;  // the C0 and C90 directions' length, a part of the stock radius
-                                   // // a panel's title, caption and the axis title above its frame
 
 // What a panel's frame shows: its moves (fitted to the cutting ones), holes and stock circle.
 Bounds panel_bounds(const MillViewsDrawn& d, const MillPanel& p) {
@@ -533,9 +533,10 @@ void draw_panel_head(SvgWriter& w, const MillPanel& p, const MillViewsDrawn& d, 
   if (!p.peripheral && d.stock_radius > 0)
     s += fmt::format("; dashed circle: radius {}, {}", svg_num(d.stock_radius, 3),
                      d.stock_turned ? "the largest turned" : "the work's largest");
-  if (p.path->simplified()) s += "; " + simplified_note(*p.path);
+  std::string note = p.path->simplified() ? simplified_note(*p.path) : std::string();
   if (d.holes_not_drawn > 0)
-    s += fmt::format("; {} holes past the marks' budget not drawn", d.holes_not_drawn);
+    note += fmt::format("{}{} holes past the marks' budget not drawn", note.empty() ? "" : "; ",
+                        d.holes_not_drawn);
   w.text("text",
          {{"class", "view-summary"},
           {"x", "16"},
@@ -543,6 +544,15 @@ void draw_panel_head(SvgWriter& w, const MillPanel& p, const MillViewsDrawn& d, 
           {"font-size", "13"},
           {"fill", "#444444"}},
          s);
+  if (!note.empty())
+    w.text("text",
+           {{"class", "note"},
+            {"x", "16"},
+            {"y", svg_num(p.top + 60)},
+            {"font-size", "13"},
+            {"font-style", "italic"},
+            {"fill", "#444444"}},
+           note);
 }
 
 void draw_mill_panels(SvgWriter& w, const std::vector<MillPanel>& panels, const MillViewsDrawn* d,
