@@ -50,13 +50,10 @@ struct Drawing {
   std::unique_ptr<MillViews> mill;  // a machine with C: its face and peripheral views
   // Unless --full: no moves kept; each that goes somewhere (not the entries from an unknown
   // position, which are not drawn) streams into the thinner. With C, the moves in X, Y, Z and C
-  // stream into `mill` (never kept), and the side view's moves too (the turned stock).
+  // stream into `mill` (not kept), and the side view's moves too (the turned stock).
   SimOptions options() {
     SimOptions o;
-    if (mill) {
-      o.keep_mill_moves = false;
-      o.on_mill_move = [this](const SimMillMove& m, const CutState& s) { mill->mill_move(m, s); };
-    }
+    if (mill) o.on_mill_move = [this](const SimMillMove& m) { mill->mill_move(m); };
     if (full) {
       if (mill) o.on_move = [this](const Move& m, const CutState& s) { mill->side_move(m, s); };
       return o;

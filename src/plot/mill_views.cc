@@ -65,12 +65,12 @@ std::vector<Axes> arc_points(const SimMillMove& a, const SimMillMove& b) {
 MillViews::MillViews(bool rollover, bool y_axis, ThinOptions options)
     : rollover_(rollover), y_axis_(y_axis), face_(options), peripheral_(options) {}
 
-void MillViews::mill_move(const SimMillMove& m, const CutState& state) {
+void MillViews::mill_move(const SimMillMove& m) {
   // The tool that writes C (a C word changing it, or the first) works on the C axis.
-  if (m.c_known && (!c_seen_ || m.c != last_c_)) c_tool_ = state.tool;
+  if (m.c_known && (!c_seen_ || m.c != last_c_)) c_tool_ = m.tool;
   c_seen_ = c_seen_ || m.c_known;
   last_c_ = m.c;
-  c_work_ = m.c_known && state.tool == c_tool_;
+  c_work_ = m.c_known && m.tool == c_tool_;
   if (c_work_ && has_prev_ && prev_.c_known && m.at_known) draw(prev_, m);
   if (m.at_known) {
     prev_ = m;

@@ -49,8 +49,8 @@ class MillViews {
   // `rollover`: the control turns C the shortest way to a C word (millturn.c_rotation);
   // `y_axis`: the machine has Y (millturn.y_axis), whose radial tool mills in G18 too.
   explicit MillViews(bool rollover, bool y_axis = false, ThinOptions options = {});
-  // Each move in X, Y, Z, C as the simulation reads it (SimOptions::on_mill_move).
-  void mill_move(const SimMillMove& m, const CutState& state);
+  // Each move in X, Y, Z, C as the simulation hands it over (SimOptions::on_mill_move).
+  void mill_move(const SimMillMove& m);
   // Each move of the side view (SimOptions::on_move): the feeds of other tools turn the stock.
   void side_move(const Move& m, const CutState& state);
   // The program's holes (Simulation::holes), at the end; then the views.

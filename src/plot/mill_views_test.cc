@@ -23,6 +23,11 @@ SimMillMove at(double x, double y, double z, double c, bool rapid = false, int p
   return m;
 }
 
+SimMillMove with_tool(SimMillMove m, int n) {
+  m.tool = n;
+  return m;
+}
+
 CutState tool(int n) {
   CutState s;
   s.tool = n;
@@ -34,8 +39,8 @@ CutState tool(int n) {
 // 10 sin 30 + 10 cos 30) = (3.6603, 13.6603): across part X, up part Y.
 TEST(MillViews, AFaceLineAtACIndexIsThePartsLine) {
   MillViews v(true);
-  v.mill_move(at(10, -10, -1, 30, true), tool(3));
-  v.mill_move(at(10, 10, -1, 30), tool(3));
+  v.mill_move(with_tool(at(10, -10, -1, 30, true), 3));
+  v.mill_move(with_tool(at(10, 10, -1, 30), 3));
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   ASSERT_EQ(d.face.path.moves.size(), 1u);
   const Move& m = d.face.path.moves[0];
@@ -55,11 +60,11 @@ TEST(MillViews, AFaceLineAtACIndexIsThePartsLine) {
 // rollover control is 10 degrees the short way (2 chords), never below part Y 30 sin(-10 deg).
 TEST(MillViews, ACIndexIsTheArcItSweepsOnThePart) {
   MillViews v(true);
-  v.mill_move(at(30, 0, 5, 0, true, 18), tool(3));
-  v.mill_move(at(30, 0, 5, 90, true, 18), tool(3));
-  v.mill_move(at(30, 0, 5, 0, true, 18), tool(3));
-  v.mill_move(at(30, 0, 5, 350, true, 18), tool(3));
-  v.mill_move(at(20, 0, 5, 350, false, 18), tool(3));  // a feed, so that the view is drawn
+  v.mill_move(with_tool(at(30, 0, 5, 0, true, 18), 3));
+  v.mill_move(with_tool(at(30, 0, 5, 90, true, 18), 3));
+  v.mill_move(with_tool(at(30, 0, 5, 0, true, 18), 3));
+  v.mill_move(with_tool(at(30, 0, 5, 350, true, 18), 3));
+  v.mill_move(with_tool(at(20, 0, 5, 350, false, 18), 3));  // a feed, so that the view is drawn
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   EXPECT_EQ(d.face.measure.moves[0], 38u);
   EXPECT_NEAR(d.face.measure.length[0], 38 * 2 * 30 * std::sin(2.5 * std::numbers::pi / 180), 1e-9);
@@ -73,12 +78,12 @@ TEST(MillViews, ACIndexIsTheArcItSweepsOnThePart) {
 // through +90 to 225, drawn in steps of at most 5 degrees (270 / 5 = 54 chords).
 TEST(MillViews, AG3InG17IsDrawnAlongItsArc) {
   MillViews v(true);
-  v.mill_move(at(10, -10, -1, 0, true), tool(3));
+  v.mill_move(with_tool(at(10, -10, -1, 0, true), 3));
   SimMillMove g3 = at(-10, -10, -1, 0);
   g3.arc = g3.ccw = true;
   g3.i = -10;
   g3.j = 10;
-  v.mill_move(g3, tool(3));
+  v.mill_move(with_tool(g3, 3));
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   EXPECT_EQ(d.face.measure.moves[1], 54u);
   EXPECT_NEAR(d.face.measure.length[1],
@@ -90,8 +95,8 @@ TEST(MillViews, AG3InG17IsDrawnAlongItsArc) {
 // (its own), the arc length 40 * pi / 2 = 62.8319 up, Z across.
 TEST(MillViews, AG19MoveIsUnrolledOnThePeriphery) {
   MillViews v(true);
-  v.mill_move(at(40, 0, -10, 90, true, 19), tool(4));
-  v.mill_move(at(40, 0, -20, 90, false, 19), tool(4));
+  v.mill_move(with_tool(at(40, 0, -10, 90, true, 19), 4));
+  v.mill_move(with_tool(at(40, 0, -20, 90, false, 19), 4));
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   ASSERT_EQ(d.peripheral.path.moves.size(), 1u);
   const Move& m = d.peripheral.path.moves[0];
@@ -113,7 +118,7 @@ TEST(MillViews, HolesAreMarksAtTheirC) {
   turn.from = {40, 0};
   turn.to = {40, -30};
   v.side_move(turn, tool(1));
-  v.mill_move(at(30, 0, 5, 90, true, 18), tool(3));
+  v.mill_move(with_tool(at(30, 0, 5, 90, true, 18), 3));
   turn.from = {30, 5};
   turn.to = {30, -8};
   v.side_move(turn, tool(3));  // the face hole's feed: C work
@@ -145,10 +150,10 @@ TEST(MillViews, OnlyTheToolThatWroteCDrawsInTheViews) {
   MillViews v(true);
   SimMillMove before = at(20, 0, 2, 0, false, 18);
   before.c_known = false;
-  v.mill_move(before, tool(1));
-  v.mill_move(at(10, 0, 2, 45, true, 18), tool(3));
-  v.mill_move(at(20, 0, 2, 45, false, 18), tool(3));
-  v.mill_move(at(30, 0, 2, 45, false, 18), tool(5));
+  v.mill_move(with_tool(before, 1));
+  v.mill_move(with_tool(at(10, 0, 2, 45, true, 18), 3));
+  v.mill_move(with_tool(at(20, 0, 2, 45, false, 18), 3));
+  v.mill_move(with_tool(at(30, 0, 2, 45, false, 18), 5));
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   EXPECT_EQ(d.face.measure.total(), 1u);
   EXPECT_EQ(d.face.measure.moves[1], 1u);
