@@ -51,7 +51,8 @@ void round_trip(std::string_view text, const clpost::Machine& m, bool strict) {
   PostSummary summary =
       post(reader, m, sink, diags, opts, [&](const ThreadPlan& p) { plans.push_back(p); });
   if (diags.has_errors()) return;
-  const ClExpected expected{std::move(summary.holes), std::move(summary.path)};
+  const ClExpected expected{std::move(summary.holes), std::move(summary.path),
+                            std::move(summary.mill)};
   reader::LineSource src{std::string_view(sink.out)};
   const VerifyOutcome v = verify_program(src, "fuzz.nc", plans, &expected, "fuzz.cl", m, 0);
   if (v.ok) return;
