@@ -95,7 +95,9 @@ void PostRun::write_with_header(PostSummary& summary) {
       header_text(m_, summary, program_name(summary.partno, diags_.file()), diags_);
   shift_nc_lines(summary.cycle_time,
                  static_cast<size_t>(std::count(header.begin(), header.end(), '\n')));
-  const size_t lines = m_.templates.at(std::string(tmpl::kProgramStart.name)).size();
+  // A machine file without a program_start has the header at the top.
+  const auto start = m_.templates.find(std::string(tmpl::kProgramStart.name));
+  const size_t lines = start == m_.templates.end() ? 0 : start->second.size();
   std::string error = spool_error_;
   if (error.empty() && body_.copy_to(out_, lines, header, error)) return;
   diags_.error({}, {}, error);
