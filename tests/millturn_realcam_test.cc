@@ -1,7 +1,7 @@
 // CATIA's mill-turn programs of a Swiss-type lathe (../shared/realcam/catia_toussaint, read in
 // place) on haas-st-20y (docs/millturn.md): linear_3x_PATH2 posts and verifies with the speed
-// limits raised to its 60 000 rpm turning and 15 000 rpm milling; MillTurn3x_PATH1's SYNC/ lines
-// are warnings naming the missing second channel.
+// limits raised to its 60 000 rpm turning and 15 000 rpm milling, and so does MillTurn3x_PATH1,
+// its SYNC/ lines warnings naming the missing second channel.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -53,58 +53,68 @@ TEST(MillTurnRealcam, Linear3xPath2PostsAndVerifiesOnHaasSt20y) {
 namespace clpost::test {
 namespace {
 
-// MillTurn3x_PATH1 on haas-st-20y (17 500 rpm allowed for its tool 4): its SYNC/ lines are
-// warnings naming the missing second channel; its last operation, a live tool facing +Z from
-// the -Z side (tool axis 0,0,-1, line 870), is the one located error: the back face is no work
-// for a one-turret lathe's main spindle. Up to that operation (its first 832 lines, in a
-// temporary copy) it posts and verifies: the horizontal tool's TLON,GOFWD/(CYLNDR/…) and
-// HELICAL/ are G19 G3 arcs.
-TEST(MillTurnRealcam, MillTurn3xPath1PostsUpToItsBackFaceTool) {
+// MillTurn3x_PATH1 on haas-st-20y (17 500 rpm allowed for its tool 4), the whole file in place:
+// its SYNC/ lines are warnings naming the missing second channel, the only ones of their kind;
+// its last operation (line 870), tool 5 with the tool axis 0,0,-1, is the face tool on the -Z
+// side of the part's front face (the file's turning puts the part at Z >= 0): written in the
+// CL's frame as every point of the file, G17 X Y Z at C0, CUTCOM/LEFT as G42 (seen from +Z).
+// It posts and verifies; a face-op value moved by 0.01 fails verify at its line.
+TEST(MillTurnRealcam, MillTurn3xPath1PostsAndVerifiesOnHaasSt20y) {
   const std::string cl = realcam_dir() + "/catia_toussaint/MillTurn3x_PATH1.aptsource";
   if (!fs::exists(cl)) GTEST_SKIP() << cl << " not found";
   const std::string raised =
       " -m haas-st-20y --set limits.max_rpm=60000 --set millturn.live_max_rpm=17500 ";
   const std::string dir = temp_dir(), nc = dir + "/p1.nc";
-  RunResult whole = run(quote(clpost_bin()) + raised + "-o " + quote(nc) + " " + quote(cl));
-  EXPECT_NE(whole.exit_code, 0);
-  EXPECT_NE(whole.err.find("MillTurn3x_PATH1.aptsource:291:1: warning: SYNC/ synchronises this "
-                           "program with another channel, and machine 'haas-st-20y' has one "
-                           "channel (no second channel to wait for)"),
-            std::string::npos)
-      << whole.err;
-  EXPECT_NE(whole.err.find("MillTurn3x_PATH1.aptsource:870:1: error: milling motion with live "
-                           "tool 5 (loaded at line 845): the tool axis (0, 0, -1) is neither the "
-                           "face's (0,0,1) nor radial (k 0)"),
-            std::string::npos)
-      << whole.err;
-  size_t errors = 0;
-  for (size_t at = whole.err.find(": error: "); at != std::string::npos;
-       at = whole.err.find(": error: ", at + 1))
-    ++errors;
-  EXPECT_EQ(errors, 1u) << whole.err;
-  // The first 832 lines (up to the back-face tool's change), then FINI.
-  std::string text = read_file(cl), head;
-  size_t at = 0;
-  for (int n = 0; n < 832 && at != std::string::npos; ++n) {
-    const size_t end = text.find('\n', at);
-    head += text.substr(at, end == std::string::npos ? end : end - at + 1);
-    at = end == std::string::npos ? end : end + 1;
-  }
-  std::ofstream(dir + "/p1.apt", std::ios::binary) << head << "FINI\n";
-  RunResult r =
-      run(quote(clpost_bin()) + raised + "--verify -o " + quote(nc) + " " + quote(dir + "/p1.apt"));
+  RunResult r = run(quote(clpost_bin()) + raised + "--verify -o " + quote(nc) + " " + quote(cl));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find(": error: "), std::string::npos) << r.err;
+  for (const char* line : {":291:1: ", ":292:1: "})
+    EXPECT_NE(r.err.find(std::string("MillTurn3x_PATH1.aptsource") + line +
+                         "warning: SYNC/ synchronises this program with another channel, and "
+                         "machine 'haas-st-20y' has one channel (no second channel to wait for)"),
+              std::string::npos)
+        << r.err;
   EXPECT_NE((r.out + r.err)
                 .find("ok: every CL point reached in order and every feed move on the "
                       "CL path, within 0.006"),
             std::string::npos)
       << r.out << r.err;
+  const std::string out = read_file(nc);
   // Line 75: around the cylinder of radius 0.6 about X from (3.92906, 0.15, 1.77946), INDIRV +Y,
   // ON the plane z 2.37946: a quarter turn, positive about +X (G3 in G19), K0.6 from the start.
   // Line 84: HELICAL/ half a turn about X, X 0.00737 deeper.
-  const std::string out = read_file(nc);
   EXPECT_NE(out.find("G19\nG3 X7.858 Y0.75 Z2.379 J0. K0.6 F300.\n"), std::string::npos) << out;
   EXPECT_NE(out.find("G3 X7.832 Y-0.75 Z3. J-0.75 K0. F150.\n"), std::string::npos) << out;
+  // Tool 5 (lines 870-881): C back to 0 from tool 4's C90, G17; GOTO/-0.1,0.05,-5.5 is
+  // (diameter) Y0.05 Z-5.5; CUTCOM/LEFT seen from the tool on the -Z side is G42 from +Z; the
+  // lead-in (CIRCLE/0,0.15,0,0.6) from (-0.6, 0.15), INDIRV +Y, to the line x 0: clockwise
+  // seen from +Z to (0, 0.75), I0.6 J0. Line 884: HELICAL/ about (1.5, 0) from (1.5, 0.75)
+  // INDIRV +X to (1.5, -0.75), Z 0.00991 -> 0.01509: G2, J-0.75.
+  EXPECT_NE(out.find("M15\nG0 C0.\nM14\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("T0501\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("M133 P15000\nG17\nG0 X-0.2 Y0.05 Z-5.5\nG0 X-0.2 Y0.05 Z-0.5\n"
+                     "G98 G1 X-0.2 Y0.05 Z0. F300.\nG42\nG1 X-1.2 Y0.15 Z0. F300.\n"
+                     "G2 X0. Y0.75 Z0. I0.6 J0. F300.\nG1 X3. Y0.75 Z0.01 F150.\n"
+                     "G2 X3. Y-0.75 Z0.015 I0. J-0.75 F150.\n"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("G2 X1.2 Y0.15 Z0.5 I0. J-0.6 F500.\nG40\nG1 X0.2 Y0.05 Z0.5 F500.\n"
+                     "G1 X0.2 Y0.05 Z0. F500.\nG0 X0.2 Y0.05 Z-5.\n(END_OP/MILL)\nM30\n"),
+            std::string::npos)
+      << out;
+  // verify can fail on this operation: Y0.75 moved to Y0.76 at CL line 886.
+  std::string bad = out;
+  const std::string line = "G1 X3. Y0.75 Z0.01 F150.\n";
+  ASSERT_NE(bad.find(line), std::string::npos);
+  bad.replace(bad.find(line), line.size(), "G1 X3. Y0.76 Z0.01 F150.\n");
+  std::ofstream(dir + "/bad.nc", std::ios::binary) << bad;
+  RunResult v = run(quote(clpost_bin()) + " verify" + raised + "--cl " + quote(cl) + " " +
+                    quote(dir + "/bad.nc"));
+  EXPECT_NE(v.exit_code, 0);
+  EXPECT_NE(v.err.find("MillTurn3x_PATH1.aptsource:886: at X1.5000 (radius) Y0.7600 Z0.0100 "
+                       "C0.0000, 0.0100 mm from the CL path"),
+            std::string::npos)
+      << v.out << v.err;
   fs::remove_all(dir);
 }
 

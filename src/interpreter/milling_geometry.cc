@@ -88,9 +88,12 @@ void milling_go(PostState& s, const Statement& st) {
   int nth = 1;
   if (!on_cond(s, st, check, nth)) return;
   GeoReader rd{s, st};
-  const std::optional<Geo> drive = read_geo(rd, st.args[0]);
+  std::optional<Geo> drive = read_geo(rd, st.args[0]);
   std::optional<Geo> plane = drive ? read_geo(rd, st.args[check]) : std::nullopt;
   if (!plane) return;
+  // CIRCLE/x,y,z,r (CATIA, after AUTOPS: the part surface through the tool's end, normal to its
+  // axis) lies in that plane: its axis is the tool's.
+  if (drive->kind == Geo::Kind::kCircle && !drive->axis_given) drive->v = s.tool_axis;
   if (drive->kind == Geo::Kind::kCircle && plane->kind == Geo::Kind::kLine) {
     // A check line in the circle's plane: the plane through it along the circle's axis.
     plane->kind = Geo::Kind::kPlane;

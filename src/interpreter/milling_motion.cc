@@ -64,16 +64,24 @@ bool can_mill(PostState& s, const Statement& st) {
 }
 
 // The side of the part the tool works on, as the turn of C from the index that brings its axis
-// onto the machine's (degrees): 0 for the face (tool axis 0,0,1), the axis's angle for a radial
-// tool (k 0: C turns it to +X, X its depth, Y across). None (reported) for another axis.
+// onto the machine's (degrees): 0 for a face tool (tool axis 0,0,1 or 0,0,-1), the axis's
+// angle for a radial tool (k 0: C turns it to +X, X its depth, Y across). None (reported) for
+// another axis.
+//
+// Tool axis 0,0,-1 (docs/millturn.md, "A face tool on the -Z side"): the tool axis points from
+// the part to the tool, so the tool stands on the -Z side of the face it works, and that face
+// looks toward -Z: the part lies at +Z of it, as the CL's turning has it (CATIA's
+// MillTurn3x_PATH1, whose frame runs Z into the part). clpost writes every CL point of a file in
+// the CL's frame, the turning too, so the face's X, Y, Z and C are written as for 0,0,1; only
+// the side CUTCOM names is seen from the other side of the plane (cutcom_stmt).
 std::optional<double> side_turn(PostState& s, const Statement& st) {
   const Point3 t = s.tool_axis;
   const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
-  if (len > 0 && std::abs(t.z / len - 1) < 1e-6) return 0.0;
+  if (len > 0 && std::abs(std::abs(t.z / len) - 1) < 1e-6) return 0.0;
   if (len > 0 && std::abs(t.z / len) < 1e-6) return std::atan2(t.y, t.x) * 180 / kPi;
   refuse(s, st,
-         fmt::format("the tool axis ({}, {}, {}) is neither the face's (0,0,1) nor radial (k 0): "
-                     "a tilted or back-face live tool is not written",
+         fmt::format("the tool axis ({}, {}, {}) is neither along Z (a face tool, 0,0,1 or "
+                     "0,0,-1) nor radial (k 0): a tilted live tool is not written",
                      t.x, t.y, t.z));
   return std::nullopt;
 }

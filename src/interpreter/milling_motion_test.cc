@@ -1,5 +1,6 @@
 // A live tool's face milling (milling_motion.cc, docs/millturn.md): X Z C computed by the post
 // on machines without Y, X Y Z in G17 at the C index on haas-st-20y.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "interpreter/post_test_util.h"
@@ -190,6 +191,69 @@ TEST(MillingMotion, GeometricMotionAroundACylinderOnHaasSt20y) {
                           "written (TO, PAST and TANTO need the tool's radius in 3D)"),
             std::string::npos)
       << to.diags;
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// A face tool on the -Z side (tool axis 0,0,-1: MillTurn3x_PATH1's tool 5, line 870, whose
+// turning has the part at Z >= 0): the CL frame is written as it is, so X (diameter) Y Z and C
+// are those a 0,0,1 tool gets, and only CUTCOM's side differs: APT's LEFT is seen from the tool
+// (from -Z), G41/G42 in G17 from +Z, so LEFT is G42. CATIA's (CIRCLE/0,0.15,0,0.6) after AUTOPS
+// lies in the plane normal to the tool axis: from (-0.6, 0.15), INDIRV +Y, ON the plane through
+// the line x 0: a quarter turn to (0, 0.75), clockwise seen from +Z (G2), I0.6 J0 from the
+// start.
+std::string face_tool_cl(const std::string& k) {
+  const std::string axis = ",0,0," + k + "\n";
+  return "LOADTL/5,MILL\nSPINDL/3000,RPM,CLW\nROTABL/30,CAXIS\nFEDRAT/150,MMPM\nRAPID\n"
+         "GOTO/-0.1,0.05,-5.5" +
+         axis + "GOTO/-0.1,0.05,0" + axis + "CUTCOM/LEFT,1\nGOTO/-0.6,0.15,0" + axis +
+         "AUTOPS\nINDIRV/0,1,0\n"
+         "TLON,GOFWD/(CIRCLE/0,0.15,0,0.6),ON,(LINE/0,0.15,0,0,0.75,0)\n"
+         "GOTO/1.5,0.75,0.01\nCUTCOM/OFF\nGOTO/0.1,0.05,0.01\nFINI\n";
+}
+
+TEST(MillingMotion, FaceToolFromMinusZOnHaasSt20y) {
+  const std::string path =
+      "G0 C30.\nM14\nG17\nG0 X-0.2 Y0.05 Z-5.5\nG98 G1 X-0.2 Y0.05 Z0. F150.\n{}\n"
+      "G1 X-1.2 Y0.15 Z0. F150.\nG2 X0. Y0.75 Z0. I0.6 J0. F150.\nG1 X3. Y0.75 Z0.01 F150.\n"
+      "G40\nG1 X0.2 Y0.05 Z0.01 F150.\n";
+  Posted minus = post(face_tool_cl("-1"), load("haas-st-20y"));
+  EXPECT_EQ(minus.errors, 0u) << minus.diags;
+  EXPECT_NE(minus.nc.find(fmt::format(fmt::runtime(path), "G42")), std::string::npos) << minus.nc;
+  EXPECT_NE(minus.diags.find("t.cl:8:1: note: CUTCOM/ with a live tool whose axis is 0,0,-1: the "
+                             "CL's side is seen from the tool, on the -Z side; the control's "
+                             "G41/G42 from +Z: written as the other side"),
+            std::string::npos)
+      << minus.diags;
+  Posted plus = post(face_tool_cl("1"), load("haas-st-20y"));
+  EXPECT_EQ(plus.errors, 0u) << plus.diags;
+  EXPECT_NE(plus.nc.find(fmt::format(fmt::runtime(path), "G41")), std::string::npos) << plus.nc;
+}
+
+// Still refused: a tilted tool axis; a live tool's cutter compensation on a machine without Y
+// (its X Z C are the post's: G41/G42 would offset the lathe's X and Z).
+TEST(MillingMotion, TiltedAxisAndCompensationWithoutYAreLocatedErrors) {
+  Posted tilted =
+      post("LOADTL/5,MILL\nSPINDL/3000,RPM,CLW\nFEDRAT/150,MMPM\nGOTO/0,0,1,0,0.6,0.8\nFINI\n",
+           load("haas-st-20y"));
+  EXPECT_NE(tilted.diags.find("t.cl:4:1: error: milling motion with live tool 5 (loaded at line "
+                              "1): the tool axis (0, 0.6, 0.8) is neither along Z (a face tool, "
+                              "0,0,1 or 0,0,-1) nor radial (k 0): a tilted live tool is not "
+                              "written"),
+            std::string::npos)
+      << tilted.diags;
+  Posted xzc = post(face_tool_cl("-1"), load("linuxcnc-lathe-c"));
+  EXPECT_EQ(xzc.errors, 1u) << xzc.diags;
+  EXPECT_NE(xzc.diags.find("t.cl:8:8: error: CUTCOM/LEFT with live tool 5: machine "
+                           "'linuxcnc-lathe-c' has no Y axis, and its milling is X Z C computed "
+                           "by the post, where the control's cutter compensation does not "
+                           "offset the path on the part"),
+            std::string::npos)
+      << xzc.diags;
 }
 
 }  // namespace

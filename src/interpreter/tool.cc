@@ -70,6 +70,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   s.tool.number = static_cast<int>(tool);
   s.tool_line = st.loc.line;
   s.hole_axis_radial = false;  // a tool axis the CL gave the last tool is not the new one's
+  s.tool_axis = Point3{0, 0, 1};
   s.tool.offset = offset;
   time_tool_change(s);
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
