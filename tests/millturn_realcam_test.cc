@@ -79,6 +79,10 @@ TEST(MillTurnRealcam, MillTurn3xPath1PostsAndVerifiesOnHaasSt20y) {
                       "CL path, within 0.006"),
             std::string::npos)
       << r.out << r.err;
+  EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:870:1: note: tool axis 0,0,-1: a face tool "
+                       "on the -Z side, working a face that looks toward -Z"),
+            std::string::npos)
+      << r.err;
   const std::string out = read_file(nc);
   // Line 75: around the cylinder of radius 0.6 about X from (3.92906, 0.15, 1.77946), INDIRV +Y,
   // ON the plane z 2.37946: a quarter turn, positive about +X (G3 in G19), K0.6 from the start.

@@ -344,6 +344,11 @@ struct MotionStart {
 };
 bool start_motion(PostState& s, const Statement& st, bool rapid, MotionStart& ms) {
   if (s.dntcut || !can_mill(s, st)) return false;
+  if (s.tool_axis.z < -1 + 1e-6)
+    note_once(s, st, "mill-minus-z",
+              "tool axis 0,0,-1: a face tool on the -Z side, working a face that looks toward -Z "
+              "(the part at +Z of it, as this CL's frame has it); written in the CL's frame, as "
+              "the turning is (docs/millturn.md, \"A face tool on the -Z side\")");
   ensure_started(s);
   ++s.stats.motions;
   const std::optional<double> feed = rapid ? std::optional<double>(0) : mill_feed(s, st);

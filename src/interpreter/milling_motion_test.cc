@@ -229,6 +229,11 @@ TEST(MillingMotion, FaceToolFromMinusZOnHaasSt20y) {
                              "G41/G42 from +Z: written as the other side"),
             std::string::npos)
       << minus.diags;
+  EXPECT_NE(minus.diags.find("t.cl:6:1: note: tool axis 0,0,-1: a face tool on the -Z side, "
+                             "working a face that looks toward -Z (the part at +Z of it, as this "
+                             "CL's frame has it); written in the CL's frame, as the turning is"),
+            std::string::npos)
+      << minus.diags;
   Posted plus = post(face_tool_cl("1"), load("haas-st-20y"));
   EXPECT_EQ(plus.errors, 0u) << plus.diags;
   EXPECT_NE(plus.nc.find(fmt::format(fmt::runtime(path), "G41")), std::string::npos) << plus.nc;
