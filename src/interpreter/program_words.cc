@@ -154,13 +154,18 @@ void cutcom_stmt(PostState& s, const Statement& st) {
   }
   // Without Y (nor polar interpolation) the post computes X Z C itself: the control's G41/G42
   // would offset the lathe's X and Z, not the path on the face.
-  if (s.tool.mills() && !s.m.y_axis && !s.m.polar_interpolation && c != CutterComp::kOff)
+  // One cause per tool (milling_motion.cc): after this, or after its motion was refused, the
+  // tool's milling is not reported again.
+  if (s.tool.mills() && !s.m.y_axis && !s.m.polar_interpolation && c != CutterComp::kOff) {
+    if (s.mill_motion_reported) return;
+    s.mill_motion_reported = true;
     return error(s, st, a.loc,
                  fmt::format("CUTCOM/{} with live tool {}: machine '{}' has no Y axis, and its "
                              "milling is X Z C computed by the post, where the control's cutter "
                              "compensation does not offset the path on the part: give the tool "
                              "centre's path (CUTCOM/OFF) (docs/millturn.md)",
                              a.text, s.tool.number, s.m.name));
+  }
   ensure_started(s);
   s.prog.cutter_comp(face_tool_from_minus_z(s) ? opposite_side(s, st, c) : c);
 }
