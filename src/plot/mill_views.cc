@@ -66,8 +66,10 @@ MillViews::MillViews(bool rollover, bool y_axis, ThinOptions options)
     : rollover_(rollover), y_axis_(y_axis), face_(options), peripheral_(options) {}
 
 void MillViews::mill_move(const SimMillMove& m) {
-  // The tool that writes C (a C word changing it, or the first) works on the C axis.
-  if (m.c_known && (!c_seen_ || m.c != last_c_)) c_tool_ = m.tool;
+  // The tool that writes C (a C word changing it, or the first) works on the C axis, and so does
+  // one that moves in a milling plane (G17, G19: the lathe turns in G18) at the C the last left
+  // (MillTurn3x_PATH1's face tool 5 after tool 4 put C back to its index).
+  if (m.c_known && (!c_seen_ || m.c != last_c_ || m.plane != 18)) c_tool_ = m.tool;
   c_seen_ = c_seen_ || m.c_known;
   last_c_ = m.c;
   c_work_ = m.c_known && m.tool == c_tool_;

@@ -9,7 +9,8 @@
 //    the part point's about Z from C0; R, the radius it is unrolled at, is the first peripheral
 //    feed's start (the rapids before it are not drawn), else the stock's (the largest turned
 //    radius), else the first radial hole's top (its R plane).
-// A move of the machine's X, Y, Z or C is C work while the tool that last wrote C is loaded; it
+// A move of the machine's X, Y, Z or C is C work while the tool that last wrote C (or last moved
+// in G17 or G19 once C was written) is loaded; it
 // goes to the peripheral view in G19 (the side plane, a radial tool), and on a machine with Y in
 // G18 too (haas-st-20y's radial tool moves X Y Z there), else to the face view (G17; without Y
 // all milling is face work). A

@@ -161,5 +161,21 @@ TEST(MillViews, OnlyTheToolThatWroteCDrawsInTheViews) {
   EXPECT_NEAR(d.face.measure.all.x_hi, 20 * std::sin(std::numbers::pi / 4), 1e-9);
 }
 
+// A face tool after a radial one on a machine with Y (MillTurn3x_PATH1's tool 5 after tool 4):
+// tool 4 puts C back to 0 before the tool change, tool 5 writes no C and moves in G17 (a rapid,
+// then a feed): its feed
+// from X0.1 Y0.05 to X1.5 Y0.75 (radius X, at C0: the part's line, hypot(1.4, 0.7) = 1.565248)
+// is C work, drawn in the face view.
+TEST(MillViews, AFaceToolAtTheCTheLastToolLeftDrawsInTheFaceView) {
+  MillViews v(true, true);
+  v.mill_move(with_tool(at(7, 0.1, 2, 90, false, 19), 4));
+  v.mill_move(with_tool(at(7, 0.1, 2, 0, true, 19), 4));
+  v.mill_move(with_tool(at(0.1, 0.05, 0, 0, true, 17), 5));
+  v.mill_move(with_tool(at(1.5, 0.75, 0, 0, false, 17), 5));
+  const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
+  EXPECT_TRUE(d.has_face());
+  EXPECT_NEAR(d.face.measure.length[1], std::hypot(1.4, 0.7), 1e-9);
+}
+
 }  // namespace
 }  // namespace clpost
