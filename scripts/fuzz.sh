@@ -13,8 +13,9 @@
 #     verify). Not in CI's smoke run: a hunt, run for as long as there is time.
 #   --oracle: the oracle's differential test (tests/oracle/, docs/cl-meaning.md) on fresh seeds
 #     for SECONDS (default 60) on each control in turn: random lathe programs posted on
-#     linuxcnc-lathe and run through LinuxCNC's rs274, and posted on fanuc-0i-t and haas-st and
-#     read by the oracle's reader of their documented meanings, with block delete off and on,
+#     linuxcnc-lathe and run through LinuxCNC's rs274, and posted on fanuc-0i-t, haas-st and
+#     heidenhain-pilot and read by the oracle's readers of their documented meanings, with block
+#     delete off and on,
 #     every event compared with the model of what the CL means. Builds build/ (Release, the tests'
 #     build) rather than build-fuzz/; prints for each control the count, the classes of
 #     difference with their first seed, the refusals, and the first program that differs in full
@@ -36,7 +37,7 @@ if [ "${1:-}" = --oracle ]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build "$build" -j "$(nproc)" --target oracle_run
   status=0
-  for control in linuxcnc fanuc haas; do
+  for control in linuxcnc fanuc haas heidenhain; do
     echo "== oracle on $control: fresh seeds for $seconds s"
     "$build/tests/oracle_run" --control "$control" --seconds "$seconds" || status=1
   done

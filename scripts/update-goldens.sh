@@ -2,7 +2,8 @@
 # Rewrites the golden NC files (samples/golden/<machine>/<name><ext>) from the current build:
 # every sample in samples/ and samples/threads/ on every shipped machine, and
 # samples/machines/<machine>.* on its own machine, samples/millturn/*.apt (as millturn-<stem>) on
-# every machine with live tools. Review `git diff samples/golden` line by line
+# every machine with live tools; a sample a machine refuses as its errors, <name>.err. Review
+# `git diff samples/golden` line by line
 # before committing: the goldens are the project's statement of what each machine receives.
 # The list of pairs is golden_cases() in tests/golden_test.cc; keep the two in step.
 set -euo pipefail
@@ -23,8 +24,14 @@ bin=${CLPOST_BIN:-build/clpost}
       samples/threads/*) name="threads-$name" ;;
       samples/millturn/*) name="millturn-$name" ;;
     esac
-    "$bin" -m "$machine" -o "samples/golden/$machine/$name$ext" "$cl" ||
-      echo "update-goldens: $cl on $machine failed" >&2
+    # A refused sample's golden is its errors (<name>.err): the reviewed refusal.
+    if "$bin" -m "$machine" -o "samples/golden/$machine/$name$ext" "$cl" \
+        2>"samples/golden/$machine/$name.err"; then
+      rm -f "samples/golden/$machine/$name.err"
+    else
+      rm -f "samples/golden/$machine/$name$ext"
+      echo "update-goldens: $cl on $machine refused (samples/golden/$machine/$name.err)" >&2
+    fi
   done
 done
 git status --short samples/

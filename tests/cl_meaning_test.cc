@@ -30,7 +30,8 @@ RunResult post_verify(const std::string& dir, const std::string& cl, const std::
 }
 
 // Inch output with the control's least input increment reads back right: verify passes on every
-// machine, for a program in inch from the start and one that switches.
+// machine, for a program in inch from the start and one that switches; a machine in mm whose
+// control reads a program in one unit (HEIDENHAIN DIN) refuses UNITS/INCHES at its line.
 TEST(ClMeaningMachines, InchProgramsVerifyOnEveryMachine) {
   const std::string dir = temp_dir();
   const std::string cls[] = {
@@ -41,6 +42,16 @@ TEST(ClMeaningMachines, InchProgramsVerifyOnEveryMachine) {
   for (const std::string& cl : cls)
     for (const std::string& m : shipped_machine_names()) {
       const RunResult r = post_verify(dir, cl, m);
+      const Machine machine = shipped_machine(m);
+      if (machine.control && machine.control->one_unit_per_program) {
+        EXPECT_EQ(r.exit_code, 1) << m << "\n" << cl << r.err;
+        EXPECT_NE(
+            r.err.find(":7: error: machine '" + m + "' (" + std::string(machine.control->name) +
+                       ") reads the whole program in mm"),
+            std::string::npos)
+            << r.err;
+        continue;
+      }
       EXPECT_EQ(r.exit_code, 0) << m << "\n" << cl << r.err;
     }
   fs::remove_all(dir);

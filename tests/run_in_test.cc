@@ -113,9 +113,9 @@ TEST(RunIn, AutoWritesRunInAndRunOutAsG31BAndP) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(has(r.out,
                   "G31 F2. U1.2 IC4 V1 H1 A30. D1 Q0 C0. BD0 B5.965 P1.65 K0.\n"
-                  "N 50 G0 X20. Z2.\n"
-                  "N 60 G1 X20. Z-28.35\n"
-                  "N 70 G80\n"))
+                  "N 60 G0 X20. Z2.\n"
+                  "N 70 G1 X20. Z-28.35\n"
+                  "N 80 G80\n"))
       << r.out;
 }
 
@@ -126,8 +126,8 @@ TEST(RunIn, ANumberIsTakenFromTheCLsThreadOnG31) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(has(r.out,
                   "G31 F2. U1.2 IC4 V1 H1 A30. D1 Q0 C0. BD0 B2. P0. K0.\n"
-                  "N 50 G0 X20. Z0.\n"
-                  "N 60 G1 X20. Z-30.\n"))
+                  "N 60 G0 X20. Z0.\n"
+                  "N 70 G1 X20. Z-30.\n"))
       << r.out;
 }
 

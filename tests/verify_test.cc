@@ -87,7 +87,7 @@ TEST(Verify, HeidenhainG31DepthWordEdited) {
   RunResult r = verify_edited("heidenhain-pilot", "threads-options.nc", "G31 F1.5 U0.92 IC6",
                               "G31 F1.5 U0.9 IC6", p);
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(first_error(r), p + ":44:1: error: thread at " + kOptions +
+  EXPECT_EQ(first_error(r), p + ":45:1: error: thread at " + kOptions +
                                 ":19: pass 1: depth 0.3674, plan 0.3756 (tolerance 0.001)");
 }
 

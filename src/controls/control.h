@@ -59,6 +59,10 @@ struct Control {
   // X, Z, I, K, R, U and W formats of an inch program have as many decimals unless the machine
   // file says formats.<a>.inch_decimals (machine_loader.cc). 0: none known (the formats decide).
   double inch_length_increment = 0;
+  // It reads a whole program in one unit, set once outside the program's blocks (HEIDENHAIN DIN:
+  // the PROGRAM HEAD's UNIT, else control parameter 1): a UNITS/ other than the machine's
+  // `units` is an error at the CL line (interpreter/program_words.cc).
+  bool one_unit_per_program = false;
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

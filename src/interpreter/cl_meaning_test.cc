@@ -34,7 +34,36 @@ TEST(ClMeaning, UnitsKeepTheFeedAndPitchAlreadyGiven) {
       cl("PITCH/1.5,MMPR\nGOTO/15,0,5\nUNITS/INCHES\nTHREAD/TURN\nGOTO/0.4,0,0.2\n"
          "GOTO/0.4,0,-1\n");
   expect_lines("linuxcnc-lathe", a, "G20\nX0.8 Z0.2 F0.007874\nG33 Z-1. K0.05905512\n");
-  expect_lines("heidenhain-pilot", a, "X0.8 Z0.2 F0.007874\nG33 Z-1. F0.059055\n");
+  expect_lines("sinumerik-840d", a, "G70\nX0.8 Z0.2 F0.007874\n");
+}
+
+// HEIDENHAIN DIN reads a whole program in one unit, its PROGRAM HEAD's UNIT or else control
+// parameter 1, set when the program is created (CNC PILOT 4290 manual, "Program section codes");
+// "[INCH]" is a comment. A UNITS/ other than the machine's is an error naming the control (it was
+// written as "[INCH]" and inch numbers, which the control read as mm: the oracle's HEIDENHAIN
+// reader, tests/oracle/heidenhain_reader.cc).
+TEST(ClMeaning, HeidenhainReadsAProgramInOneUnit) {
+  const Posted p = post(cl("GOTO/10,0,5\nUNITS/INCHES\nGOTO/1,0,-1\n"), load("heidenhain-pilot"));
+  EXPECT_EQ(p.errors, 1u);
+  EXPECT_NE(p.diags.find("t.cl:6:7: error: machine 'heidenhain-pilot' (heidenhain) reads the whole "
+                         "program in mm: the unit is set once, outside the program's blocks, and "
+                         "UNITS/INCHES cannot change it"),
+            std::string::npos)
+      << p.diags;
+  const Posted start =
+      post("UNITS/INCHES\nLOADTL/1\nRAPID\nGOTO/1,0,1\nFINI\n", load("heidenhain-pilot"));
+  EXPECT_EQ(start.errors, 1u) << start.diags;
+  EXPECT_NE(start.diags.find("t.cl:1:7: error: machine 'heidenhain-pilot'"), std::string::npos);
+  expect_lines("heidenhain-pilot", cl("GOTO/10,0,5\nUNITS/MM\nGOTO/10,0,-1\n"), "Z-1.");
+}
+
+// A G97 speed above the limit of an earlier G96 (G26 S) raises the limit to itself: HEIDENHAIN's
+// G26 caps a constant speed too (MANUALplus 4110 manual, 1.5 "Feed rate and spindle speed"). It
+// turned at the 1500 rpm limit, not at the CL's 3000 (the oracle's HEIDENHAIN reader).
+TEST(ClMeaning, HeidenhainRaisesTheSpeedLimitForAConstantSpeed) {
+  expect_lines("heidenhain-pilot",
+               cl("SPINDL/200,SMM,MAXRPM,1500,CLW\nGOTO/10,0,5\nSPINDL/3000,RPM\nGOTO/10,0,-1\n"),
+               "G26 S1500\nG96 S200 M3\nG1 X20. Z5. G95 F0.2\nG97 S3000 M3\nG26 S3000\nZ-1.\n");
 }
 
 // B: every position is written in full after the switch: X20 (a 10 in radius), not X left out
@@ -262,7 +291,8 @@ namespace clpost {
 namespace {
 
 // Inch output is written with the control's least input increment: X and Z to 0.0001 in on
-// Fanuc, Haas, SINUMERIK and HEIDENHAIN (Control::inch_length_increment), and on the two machines
+// Fanuc, Haas and SINUMERIK (Control::inch_length_increment; HEIDENHAIN reads a program in one
+// unit, HeidenhainReadsAProgramInOneUnit), and on the two machines
 // without a registered control (their post files' inch_decimals); LinuxCNC's doubles keep its 5
 // decimals. A feed per revolution to what each control takes: 0.2 mm/rev is 0.0078740 in/rev,
 // F0.007874 (Haas reads F to 0.0001 in: F0.0079). Before: X2.469 Z-0.543 and F0.0079.
@@ -271,7 +301,6 @@ TEST(ClMeaning, InchOutputHasTheControlsLeastIncrement) {
   expect_lines("fanuc-0i-t", in, "G20\nX2.4691 Z-0.5432 F0.007874\n");
   expect_lines("haas-st", in, "G20\nX2.4691 Z-0.5432 F0.0079\n");
   expect_lines("sinumerik-840d", in, "G70\nX2.4691 Z-0.5432 F0.007874\n");
-  expect_lines("heidenhain-pilot", in, "X2.4691 Z-0.5432 F0.007874\n");
   expect_lines("generic-lathe", in, "X2.4691 Z-0.5432 F0.007874\n");
   expect_lines("nct-2000t", in, "X2.4691 Z-0.5432 F0.007874\n");
   expect_lines("linuxcnc-lathe", in, "G20\nX2.46912 Z-0.54321 F0.007874\n");

@@ -53,6 +53,14 @@ void units_stmt(PostState& s, const Statement& st) {
     error(s, st, a.loc, fmt::format("unknown unit '{}': expected MM or INCHES", a.text));
     return;
   }
+  const LengthUnit machine_unit = s.m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
+  if (s.m.control && s.m.control->one_unit_per_program && u != machine_unit) {
+    error(s, st, a.loc,
+          fmt::format("machine '{}' ({}) reads the whole program in {}: the unit is set once, "
+                      "outside the program's blocks, and UNITS/{} cannot change it",
+                      s.m.name, s.m.control->name, s.m.default_units, a.text));
+    return;
+  }
   if (s.started && u != s.units) {
     if (s.pos)
       warning(s, st, st.loc,

@@ -16,6 +16,7 @@
 #include "canon.h"
 #include "fanuc_reader.h"
 #include "generator.h"
+#include "heidenhain_reader.h"
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
 #include "model.h"
@@ -111,7 +112,7 @@ bool rs274_installed() {
 }
 
 bool control_named(const std::string& name, Control& c) {
-  for (Control k : {Control::kLinuxcnc, Control::kFanuc, Control::kHaas})
+  for (Control k : {Control::kLinuxcnc, Control::kFanuc, Control::kHaas, Control::kHeidenhain})
     if (name == control_name(k)) return c = k, true;
   return false;
 }
@@ -124,6 +125,8 @@ const char* control_name(Control c) {
       return "fanuc";
     case Control::kHaas:
       return "haas";
+    case Control::kHeidenhain:
+      return "heidenhain";
   }
   return "?";
 }
@@ -136,6 +139,8 @@ const char* machine_of(Control c) {
       return "fanuc-0i-t";
     case Control::kHaas:
       return "haas-st";
+    case Control::kHeidenhain:
+      return "heidenhain-pilot";
   }
   return "?";
 }
@@ -145,7 +150,8 @@ bool Differential::init(const std::string& source_dir, std::string& error, Contr
   control_ = control;
   const std::string name = machine.empty() ? machine_of(control) : machine;
   if (!clpost::load_machine(name, {source_dir}, {}, machine_, error)) return false;
-  // Fanuc and Haas: IS-B, 0.001 mm and 0.0001 in (docs/cl-meaning.md, "Inch output").
+  // Fanuc and Haas: IS-B, 0.001 mm and 0.0001 in; HEIDENHAIN: 1 µm, 0.0001 in
+  // (docs/cl-meaning.md, "Inch output").
   if (control != Control::kLinuxcnc) resolution_ = {0.001, 0.0001};
   table_ = source_dir + "/tests/oracle/data/offsets.tbl";
   std::string templ = (std::filesystem::temp_directory_path() / "clpost-oracle-XXXXXX").string();
@@ -172,7 +178,10 @@ Differential::Run Differential::run_rs274(const ProgramResult& r, bool block_del
 
 Differential::Run Differential::run_reader(const ProgramResult& r, bool block_delete) {
   const Dialect d = control_ == Control::kHaas ? Dialect::kHaas : Dialect::kFanuc;
-  const ControlRun o = fanuc_events(r.nc, d, block_delete);
+  // HEIDENHAIN: the program's unit is control parameter 1, the machine's (heidenhain_reader.h).
+  const ControlRun o = control_ == Control::kHeidenhain
+                           ? heidenhain_events(r.nc, block_delete, machine_.default_units == "in")
+                           : fanuc_events(r.nc, d, block_delete);
   const std::string stop =
       o.error.empty() ? "" : std::string(control_name(control_)) + " error: " + o.error;
   Run run = compare_run(r, block_delete, o.events, stop);

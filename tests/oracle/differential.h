@@ -3,7 +3,8 @@
 // the library, post_text()), run with block delete off and — when the program has a block to
 // delete — on, and the run's events compared with the model's. LinuxCNC's programs run through
 // its own interpreter (rs274); Fanuc's and Haas's through the oracle's reader of their
-// documented meanings (fanuc_reader.h). The only place where the oracle touches clpost.
+// documented meanings (fanuc_reader.h), HEIDENHAIN DIN's through heidenhain_reader.h. The only
+// place where the oracle touches clpost.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -16,10 +17,11 @@
 namespace oracle {
 
 // The controls the oracle runs programs on, and the machine each posts for.
-enum class Control { kLinuxcnc, kFanuc, kHaas };
-bool control_named(const std::string& name, Control& c);  // "linuxcnc", "fanuc", "haas"
+enum class Control { kLinuxcnc, kFanuc, kHaas, kHeidenhain };
+// "linuxcnc", "fanuc", "haas", "heidenhain"
+bool control_named(const std::string& name, Control& c);
 const char* control_name(Control c);
-const char* machine_of(Control c);  // linuxcnc-lathe, fanuc-0i-t, haas-st
+const char* machine_of(Control c);  // linuxcnc-lathe, fanuc-0i-t, haas-st, heidenhain-pilot
 
 // The first difference of one run.
 struct RunDifference {

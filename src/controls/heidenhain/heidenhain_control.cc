@@ -29,6 +29,11 @@ extern const Control kHeidenhainControl{.name = "heidenhain",
                                         .fixed_codes = kHeidenhainCodes,
                                         // Positions to 1 µm (MANUALplus 4110 manual, "Accuracy");
                                         // its inch step 0.0001 in: docs/cl-meaning.md.
-                                        .inch_length_increment = 0.0001};
+                                        .inch_length_increment = 0.0001,
+                                        // CNC PILOT 4290 manual, "Program section codes": the
+                                        // UNIT is the PROGRAM HEAD's, set when the program is
+                                        // created ("not possible to post-edit"), else control
+                                        // parameter 1; "[INCH]" is a comment.
+                                        .one_unit_per_program = true};
 
 }  // namespace clpost
