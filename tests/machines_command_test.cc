@@ -89,13 +89,16 @@ TEST(MachinesDiff, TheKeysWhoseValuesDiffer) {
           "threading.fallback: error -> emulate\n"
           "threading.tpi_address: \"\" -> E\n"
           "threading.start_angle_word: false -> true\n"
+          // NCT's CSS clamp is G92 S (posts/nct.yaml), the ISO post's G50 S.
+          "templates.spindle_css: [\"G50 S{max_rpm}\", \"G96 S{speed} {direction}\"] -> "
+          "[\"G92 S{max_rpm}\", \"G96 S{speed} {direction}\"]\n"
           "formats.E.decimals: (none) -> 6\n"
           "formats.E.trailing_zeros: (none) -> false\n"
           "formats.E.decimal_point: (none) -> true\n"
           "formats.E.leading_zero: (none) -> true\n"
           "formats.E.inch_decimals: (none) -> 6\n"
           "formats.E.scale: (none) -> 1\n"
-          "15 keys differ\n");
+          "16 keys differ\n");
   r = run(quote(clpost_bin()) + " machines diff haas-st haas-st");
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out, "--- haas-st: " + dir + "/machines/haas-st.yaml\n+++ haas-st: " + dir +

@@ -112,7 +112,8 @@ bool rs274_installed() {
 }
 
 bool control_named(const std::string& name, Control& c) {
-  for (Control k : {Control::kLinuxcnc, Control::kFanuc, Control::kHaas, Control::kHeidenhain})
+  for (Control k :
+       {Control::kLinuxcnc, Control::kFanuc, Control::kHaas, Control::kHeidenhain, Control::kNct})
     if (name == control_name(k)) return c = k, true;
   return false;
 }
@@ -127,6 +128,8 @@ const char* control_name(Control c) {
       return "haas";
     case Control::kHeidenhain:
       return "heidenhain";
+    case Control::kNct:
+      return "nct";
   }
   return "?";
 }
@@ -141,8 +144,16 @@ const char* machine_of(Control c) {
       return "haas-st";
     case Control::kHeidenhain:
       return "heidenhain-pilot";
+    case Control::kNct:
+      return "nct-2000t";
   }
   return "?";
+}
+
+Dialect dialect_of(Control c) {
+  return c == Control::kHaas  ? Dialect::kHaas
+         : c == Control::kNct ? Dialect::kNct
+                              : Dialect::kFanuc;
 }
 
 bool Differential::init(const std::string& source_dir, std::string& error, Control control,
@@ -150,8 +161,9 @@ bool Differential::init(const std::string& source_dir, std::string& error, Contr
   control_ = control;
   const std::string name = machine.empty() ? machine_of(control) : machine;
   if (!clpost::load_machine(name, {source_dir}, {}, machine_, error)) return false;
-  // Fanuc and Haas: IS-B, 0.001 mm and 0.0001 in; HEIDENHAIN: 1 µm, 0.0001 in
-  // (docs/cl-meaning.md, "Inch output").
+  // Fanuc, Haas and NCT: IS-B, 0.001 mm and 0.0001 in; HEIDENHAIN: 1 µm, 0.0001 in
+  // (docs/cl-meaning.md, "Inch output"; NCT 99M manual, "Specification and Value Range of
+  // Coordinate Data").
   if (control != Control::kLinuxcnc) resolution_ = {0.001, 0.0001};
   table_ = source_dir + "/tests/oracle/data/offsets.tbl";
   std::string templ = (std::filesystem::temp_directory_path() / "clpost-oracle-XXXXXX").string();
@@ -177,11 +189,10 @@ Differential::Run Differential::run_rs274(const ProgramResult& r, bool block_del
 }
 
 Differential::Run Differential::run_reader(const ProgramResult& r, bool block_delete) {
-  const Dialect d = control_ == Control::kHaas ? Dialect::kHaas : Dialect::kFanuc;
   // HEIDENHAIN: the program's unit is control parameter 1, the machine's (heidenhain_reader.h).
   const ControlRun o = control_ == Control::kHeidenhain
                            ? heidenhain_events(r.nc, block_delete, machine_.default_units == "in")
-                           : fanuc_events(r.nc, d, block_delete);
+                           : fanuc_events(r.nc, dialect_of(control_), block_delete);
   const std::string stop =
       o.error.empty() ? "" : std::string(control_name(control_)) + " error: " + o.error;
   Run run = compare_run(r, block_delete, o.events, stop);
@@ -258,7 +269,7 @@ ProgramResult Differential::check(uint32_t seed) {
   r.seed = seed;
   r.control = control_;
   r.machine = machine_.name;
-  r.cl = generate_program(seed);
+  r.cl = generate_program(seed, control_ == Control::kNct);  // NCT says TPI: G33 E
   const bool home = machine_.templates.count("home") > 0;
   ModelResult m = model_events(r.cl, {machine_.default_units == "in", machine_.max_rpm, home});
   r.model = std::move(m.events);

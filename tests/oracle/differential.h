@@ -2,7 +2,7 @@
 // The differential test: a generated CL program, posted by clpost on a control's machine (through
 // the library, post_text()), run with block delete off and — when the program has a block to
 // delete — on, and the run's events compared with the model's. LinuxCNC's programs run through
-// its own interpreter (rs274); Fanuc's and Haas's through the oracle's reader of their
+// its own interpreter (rs274); Fanuc's, Haas's and NCT's through the oracle's reader of their
 // documented meanings (fanuc_reader.h), HEIDENHAIN DIN's through heidenhain_reader.h. The only
 // place where the oracle touches clpost.
 #include <cstdint>
@@ -12,16 +12,19 @@
 
 #include "compare.h"
 #include "events.h"
+#include "fanuc_reader.h"
 #include "machine/machine.h"
 
 namespace oracle {
 
 // The controls the oracle runs programs on, and the machine each posts for.
-enum class Control { kLinuxcnc, kFanuc, kHaas, kHeidenhain };
-// "linuxcnc", "fanuc", "haas", "heidenhain"
+enum class Control { kLinuxcnc, kFanuc, kHaas, kHeidenhain, kNct };
+// "linuxcnc", "fanuc", "haas", "heidenhain", "nct"
 bool control_named(const std::string& name, Control& c);
 const char* control_name(Control c);
-const char* machine_of(Control c);  // linuxcnc-lathe, fanuc-0i-t, haas-st, heidenhain-pilot
+// linuxcnc-lathe, fanuc-0i-t, haas-st, heidenhain-pilot, nct-2000t
+const char* machine_of(Control c);
+Dialect dialect_of(Control c);  // the Fanuc reader's dialect (kFanuc where it does not read)
 
 // The first difference of one run.
 struct RunDifference {

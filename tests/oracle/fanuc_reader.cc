@@ -4,6 +4,7 @@
 //   [ctl]   ../shared/reference/controllers.md, "Fanuc (system A lathe)" and "Haas lathe".
 //   [Haas]  Haas Lathe Operator's Manual, G-code and M-code chapters, by code.
 //   [cl]    docs/cl-meaning.md (what the oracle compares; the inch least increments).
+//   NCT's sources ([99M], [seed 002], [ISO]) are named at the head of nct_thread.cc.
 // Where a meaning is a parameter or a setting of the control (a number without a decimal point,
 // the power-on modes), the reader refuses the program rather than guess.
 #include <algorithm>
@@ -54,9 +55,15 @@ std::string parse(std::string_view line, Block& b) {
 }
 
 // The words the reader knows; any other is refused, not ignored. Q (a start angle, G76's cut
-// depths) only in a thread's or a threading cycle's block, D and A only in Haas's G76.
+// depths) only in a thread's or a threading cycle's block, D and A only in Haas's G76. NCT: E
+// and Q only in G33's blocks [seed 002]; U, W and P are not read (an NCT lathe's incremental
+// axes and a dwell by P are not in the NCT sources found).
 bool known(char letter, const Block& b, bool cycle, Dialect d) {
   static constexpr std::string_view kLetters = "GXZUWIKRFSTMP";
+  if (d == Dialect::kNct)
+    return letter == 'E' || letter == 'Q'
+               ? cycle
+               : std::string_view("GXZIKRFSTM").find(letter) != std::string_view::npos;
   if (letter == 'Q') return cycle;
   if (letter == 'D' || letter == 'A') return d == Dialect::kHaas && b.has_g(76);
   return kLetters.find(letter) != std::string_view::npos;
@@ -101,37 +108,50 @@ bool Control::length(const Block& b, char letter, std::optional<double>& mm) {
   if (!a && !r) return true;
   if (a && r) return fail(std::string(1, letter) + " and " + inc + " in one block");
   const Word& w = a ? *a : *r;
-  if (!w.point) return fail(std::string(1, w.letter) + " without a decimal point");
+  // NCT: "X325 means e.g. 325 mm" [99M] "Specification and Value Range of Coordinate Data".
+  if (!w.point && d_ != Dialect::kNct)
+    return fail(std::string(1, w.letter) + " without a decimal point");
   const double v = w.value * unit() / (letter == 'X' ? 2 : 1);
   if (a) return mm = v, true;
   if (!mm) return fail(std::string(1, inc) + " from a position the program does not know");
   return mm = *mm + v, true;
 }
 
-// The modal G codes of the block. Group 06 G20/G21 [0i-T] "Inch/metric conversion"; group 02
-// G96/G97 [0i-T] "Constant surface speed control"; group 05 G98/G99 [0i-T] "Feed per minute,
-// feed per revolution"; group 01 G0, G1, G2, G3, G32, G92 [0i-T] "Positioning", "Linear
-// interpolation", "Circular interpolation", "Threading", "Single repetitive cycle" [ctl] "G32",
-// "G92"; G76 one-shot (group 00) [ctl] "G76 two-block". G18 (ZX plane), G40
-// (no tool-nose compensation) and G80 (no canned cycle) are the program's only state besides;
-// Haas G187 sets the smoothness of the path, not the path [Haas] "G187".
+// A G code of the block: its modal effect, false when the reader does not know it. Group 06
+// G20/G21 [0i-T] "Inch/metric conversion"; group 02 G96/G97 [0i-T] "Constant surface speed
+// control"; group 05 G98/G99 [0i-T] "Feed per minute, feed per revolution"; group 01 G0, G1,
+// G2, G3, G32, G92 [0i-T] "Positioning", "Linear interpolation", "Circular interpolation",
+// "Threading", "Single repetitive cycle" [ctl] "G32", "G92"; G76 one-shot (group 00) [ctl] "G76
+// two-block". G18 (ZX plane), G40 (no tool-nose compensation) and G80 (no canned cycle) are the
+// program's only state besides; Haas G187 sets the smoothness of the path, not the path [Haas]
+// "G187". NCT: G94/G95 the feed modes, G33 the thread (not G32, G92), G92 S the CSS clamp (not
+// G50), G90 absolute data (nct_thread.cc's sources).
+bool Control::code(int g) {
+  const bool nct = d_ == Dialect::kNct;
+  const int per_minute = nct ? 94 : 98;
+  if (g == 20 || g == 21)
+    inch_ = g == 20;
+  else if (g == 96 || g == 97)
+    css_ = g == 96;
+  else if (g == per_minute || g == per_minute + 1)
+    per_rev_ = g == per_minute + 1;
+  else if (g == 0 || g == 1 || g == 2 || g == 3 || g == (nct ? 33 : 32) || (!nct && g == 92))
+    motion_ = g;
+  else if (nct)
+    return g == 4 || g == 18 || g == 40 || g == 90 || g == 92;
+  else
+    return g == 4 || g == 18 || g == 28 || g == 40 || g == 50 || g == 76 || g == 80 ||
+           (g == 187 && d_ == Dialect::kHaas);
+  return true;
+}
+
 bool Control::modes(const Block& b) {
   for (const Word& w : b.words) {
     if (w.letter != 'G') continue;
     const int g = static_cast<int>(w.value);
-    if (g != w.value) return fail("G" + std::to_string(w.value) + " is not read by the oracle");
-    if (g == 20 || g == 21)
-      inch_ = g == 20;
-    else if (g == 96 || g == 97)
-      css_ = g == 96;
-    else if (g == 98 || g == 99)
-      per_rev_ = g == 99;
-    else if (g == 0 || g == 1 || g == 2 || g == 3 || g == 32 || g == 92)
-      motion_ = g;
-    else if (g == 187 && d_ == Dialect::kHaas)
-      continue;
-    else if (g != 4 && g != 18 && g != 28 && g != 40 && g != 50 && g != 76 && g != 80)
-      return fail("G" + std::to_string(g) + " is not read by the oracle");
+    if (g != w.value || !code(g))
+      return fail("G" + (g != w.value ? std::to_string(w.value) : std::to_string(g)) +
+                  " is not read by the oracle");
   }
   for (const Word& w : b.words)
     if (w.letter != 'G' && !inch_)
@@ -143,15 +163,18 @@ bool Control::modes(const Block& b) {
 // control" ("G50 S_: clamp of the maximum spindle speed"), else the speed in the mode of the
 // block (rev/min under G97, m/min or ft/min under G96). T: tool and offset, the first two digits
 // and the last two of T□□○○ [0i-T] "Tool function (T function)"; a turret lathe's tool change
-// does not stop the spindle. Haas reads T the same way [Haas] "Tool Functions".
+// does not stop the spindle. Haas reads T the same way [Haas] "Tool Functions". NCT: G92 S the
+// clamp [99M] "Constant Surface Speed Clamp (G92)"; T as Fanuc's (an assumption: the NCT lathe
+// manual's T function was not found, docs/cl-meaning.md).
 bool Control::spindle_and_tool(const Block& b) {
+  const std::string clamp = "G" + std::to_string(clamp_code());
   if (const Word* s = b.find('S')) {
-    if (b.has_g(50))
+    if (b.has_g(clamp_code()))
       clamp_ = s->value;
     else
       s_ = s->value, s_css_ = css_;
-  } else if (b.has_g(50)) {
-    return fail("G50 without S (a coordinate system setting is not read by the oracle)");
+  } else if (b.has_g(clamp_code())) {
+    return fail(clamp + " without S (a coordinate system setting is not read by the oracle)");
   }
   if (const Word* t = b.find('T')) {
     const int v = static_cast<int>(t->value);
@@ -232,7 +255,8 @@ bool Control::arc(const Block& b, Event& e) {
   e.rotation = *motion_ == 3 ? 1 : -1;
   const Word *i = b.find('I'), *k = b.find('K'), *r = b.find('R');
   for (const Word* w : {i, k, r})
-    if (w && !w->point) return fail(std::string(1, w->letter) + " without a decimal point");
+    if (w && !w->point && d_ != Dialect::kNct)
+      return fail(std::string(1, w->letter) + " without a decimal point");
   if (r && (i || k)) return fail("R with I or K");
   if (!r) {
     e.cx = *x_ + (i ? i->value * unit() : 0);
@@ -267,16 +291,21 @@ bool Control::motion(const Block& b) {
   Event e;
   e.x = *x, e.z = *z;
   const int g = *motion_;
-  e.motion = g == 0    ? MotionKind::kRapid
-             : g == 1  ? MotionKind::kFeed
-             : g == 32 ? MotionKind::kThread
-                       : MotionKind::kArc;
-  if (g == 32 && !on_) return fail("G32 with the spindle stopped");
+  e.motion = g == 0               ? MotionKind::kRapid
+             : g == 1             ? MotionKind::kFeed
+             : g == 32 || g == 33 ? MotionKind::kThread
+                                  : MotionKind::kArc;
+  if ((g == 32 || g == 33) && !on_)
+    return fail("G" + std::to_string(g) + " with the spindle stopped");
   if (g == 32) e.lead = f_ * unit();
+  if (g == 33 && !nct_lead(b, e)) return false;
   // G32 Q: the start angle in 0.001 degree, a decimal point not allowed [0i-T] "Threading".
-  if (const Word* q = b.find('Q'); q && q->point) return fail("Q with a decimal point");
+  if (const Word* q = b.find('Q'); q && q->point && g == 32) return fail("Q with a decimal point");
   if ((g == 1 || g == 2 || g == 3) && (!f_given_ || !per_rev_))
-    return fail("a feed move before F, G98 or G99");
+    return fail(d_ == Dialect::kNct ? "a feed move before F, G94 or G95"
+                                    : "a feed move before F, G98 or G99");
+  if ((g == 1 || g == 2 || g == 3) && f_is_lead_)
+    return fail("a feed move after G33's F without its own F (not documented for NCT)");
   if (e.motion == MotionKind::kArc && !arc(b, e)) return false;
   x_ = x, z_ = z;
   push(e);
@@ -287,23 +316,27 @@ bool Control::block(const Block& b, int line, std::string_view text) {
   line_ = line, text_ = std::string(text);
   if (b.words.empty()) return true;
   if (!modes(b)) return false;
-  const bool cycle = b.has_g(76) || motion_ == 92 || motion_ == 32;
+  const bool cycle = b.has_g(76) || motion_ == 92 || motion_ == 32 || motion_ == 33;
   for (const Word& w : b.words)
     if (!known(w.letter, b, cycle, d_))
       return fail(std::string("address ") + w.letter + " is not read");
+  const bool moves = b.find('X') || b.find('U') || b.find('Z') || b.find('W');
+  if (motion_ != 33 || !moves) thread_chain_ = false;
   if (const Word* f = b.find('F')) {
     if (!f->point) return fail("F without a decimal point");
-    f_ = f->value, f_given_ = true;
+    if (d_ == Dialect::kNct && !nct_feed(*f)) return false;
+    if (d_ != Dialect::kNct) f_ = f->value, f_given_ = true;
   }
   // Whether an M code in a block that moves acts before or after the move is the builder's
   // [0i-T] "Miscellaneous function": refused.
-  const bool moves = b.find('X') || b.find('U') || b.find('Z') || b.find('W');
   if (moves && b.find('M') && !b.has_g(4)) return fail("an M code in a block that moves");
   if (!spindle_and_tool(b)) return false;
   if (b.has_g(28)) return home(b);
   home_x_ = home_z_ = false;
   if (b.has_g(4)) return dwell(b);
-  if (b.has_g(50)) return true;
+  // G50 (NCT: G92) with an axis sets the coordinate system [0i-T] "Coordinate system setting".
+  if (b.has_g(clamp_code()))
+    return moves ? fail("a coordinate system setting is not read by the oracle") : true;
   if (b.has_g(76)) return g76(b);
   if (motion_ == 92 && moves) return g92(b);  // a block without them cuts no pass
   return motion(b);

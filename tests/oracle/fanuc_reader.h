@@ -1,10 +1,11 @@
 #pragma once
-// A small reader of a Fanuc 0i-T lathe program (G-code system A), and of a Haas lathe program
-// where Haas documents another meaning: the program text in, the oracle's events out (events.h:
-// mm, X a radius), as the control runs it with block delete off or on. Written from the
-// controls' documentation (docs/cl-meaning.md, "How the oracle reads a Fanuc or Haas program",
-// each meaning's source beside its code); it shares no code with src/ (not the NC reader, not
-// the laws, not the simulator): the post's misreading of a control is not repeated here.
+// A small reader of a Fanuc 0i-T lathe program (G-code system A), and of a Haas or an NCT lathe
+// program where Haas or NCT documents another meaning: the program text in, the oracle's events
+// out (events.h: mm, X a radius), as the control runs it with block delete off or on. Written from
+// the controls' documentation (docs/cl-meaning.md, "How the oracle reads a Fanuc or Haas
+// program", "How the oracle reads an NCT program", each meaning's source beside its code); it
+// shares no code with src/ (not the NC reader, not the laws, not the simulator): the post's
+// misreading of a control is not repeated here.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,7 +14,7 @@
 
 namespace oracle {
 
-enum class Dialect { kFanuc, kHaas };
+enum class Dialect { kFanuc, kHaas, kNct };
 
 struct ControlRun {
   std::vector<Event> events;

@@ -1,6 +1,7 @@
 #pragma once
-// The Fanuc/Haas reader's state and its block handlers (fanuc_reader.cc: words, modes, motion;
-// fanuc_cycles.cc: the threading cycles). Internal to the oracle; fanuc_reader.h is the interface.
+// The Fanuc/Haas/NCT reader's state and its block handlers (fanuc_reader.cc: words, modes,
+// motion; fanuc_cycles.cc: the threading cycles; nct_thread.cc: NCT's G33). Internal to the
+// oracle; fanuc_reader.h is the interface.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,6 +47,8 @@ class Control {
     return false;
   }
   double unit() const { return *inch_ ? kMmPerInch : 1; }
+  bool code(int g);
+  int clamp_code() const { return d_ == Dialect::kNct ? 92 : 50; }
   bool length(const Block& b, char letter, std::optional<double>& mm);
   bool modes(const Block& b);
   bool spindle_and_tool(const Block& b);
@@ -60,6 +63,9 @@ class Control {
   bool cycle_end(const Block& b, std::optional<double>& x, std::optional<double>& z);
   void g76_passes(const std::vector<double>& depths, CyclePoint end, double k, double taper,
                   double angle, double lead);
+  // nct_thread.cc: G33's lead (F or E) and start angle (Q), and its F outside G33
+  bool nct_lead(const Block& b, Event& e);
+  bool nct_feed(const Word& f);
   double increment() const { return *inch_ ? 0.0001 * kMmPerInch : 0.001; }
   bool motion(const Block& b);
   bool arc(const Block& b, Event& e);
@@ -87,6 +93,11 @@ class Control {
     double min_cut = 0, allowance = 0;
   };
   std::optional<G76First> g76_;
+  // NCT G33 [seed 002]: the lead of the last F given in a G33 block (mm/rev); whether the F in
+  // force was given there (its meaning as a feed is not documented); whether the block before
+  // was a G33 move (the next one continues its thread without synchronising).
+  double lead_ = 0;
+  bool f_is_lead_ = false, thread_chain_ = false;
   bool home_x_ = false, home_z_ = false;  // the axes the return the block before is part of
   bool ended_ = false;
   int line_ = 0;

@@ -14,7 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 class Gen {
  public:
-  explicit Gen(uint32_t seed) : rng_(seed) {}
+  Gen(uint32_t seed, bool tpi) : rng_(seed), tpi_(tpi) {}
   std::string program();
 
  private:
@@ -46,6 +46,7 @@ class Gen {
   bool pitch();
 
   std::mt19937 rng_;
+  bool tpi_;
   std::string out_;
   bool inch_ = false;
   double x_ = 0, z_ = 0;  // CL units
@@ -317,9 +318,10 @@ bool Gen::coolant() {
 }
 
 bool Gen::pitch() {
-  static const char* kPitches[] = {"1.5,MMPR", "2,MMPR", "0.75,MMPR", "0.05,IPR", "0.0625,IPR"};
-  static const double kMm[] = {1.5, 2, 0.75, 1.27, 1.5875};
-  const int i = irange(0, 4);
+  static const char* kPitches[] = {"1.5,MMPR",   "2,MMPR", "0.75,MMPR", "0.05,IPR",
+                                   "0.0625,IPR", "16,TPI", "11.5,TPI"};
+  static const double kMm[] = {1.5, 2, 0.75, 1.27, 1.5875, 25.4 / 16, 25.4 / 11.5};
+  const int i = irange(0, tpi_ ? 6 : 4);
   line(std::string("PITCH/") + kPitches[i]);
   pitch_mm_ = kMm[i];
   pitch_given_ = true;
@@ -350,8 +352,8 @@ std::string Gen::program() {
 
 }  // namespace
 
-std::string generate_program(uint32_t seed) {
-  return Gen(seed).program();
+std::string generate_program(uint32_t seed, bool tpi) {
+  return Gen(seed, tpi).program();
 }
 
 }  // namespace oracle

@@ -16,6 +16,8 @@
 
 namespace oracle {
 
-std::string generate_program(uint32_t seed);
+// `tpi`: PITCH/ also in threads per inch (a control that says a lead in TPI, NCT's G33 E); the
+// programs of the other controls stay as they were, seed for seed.
+std::string generate_program(uint32_t seed, bool tpi = false);
 
 }  // namespace oracle

@@ -1,8 +1,8 @@
 // The seeded sets CI runs: 300 generated programs (seeds 1…300) posted on linuxcnc-lathe and run
-// through rs274, 2000 (seeds 1…2000) posted on fanuc-0i-t and on haas-st and read by the oracle's
-// reader of their documented meanings (fanuc_reader.h), and 5000 posted on heidenhain-pilot and
-// read by heidenhain_reader.h, each with block delete off and on, every event compared with the
-// model's.
+// through rs274, 2000 (seeds 1…2000) posted on fanuc-0i-t, haas-st and nct-2000t (its programs
+// with PITCH/…,TPI too) and read by the oracle's reader of their documented meanings
+// (fanuc_reader.h), and 5000 posted on heidenhain-pilot and read by heidenhain_reader.h, each
+// with block delete off and on, every event compared with the model's.
 // It fails with the count of programs that differ, one line per class of difference, and the
 // first program of each class in full (reproduce one with `build/tests/oracle_run --seed N`;
 // longer runs on fresh seeds: `scripts/fuzz.sh --oracle SECONDS`).
@@ -74,6 +74,10 @@ TEST(OracleDifferential, SeededProgramsMatchTheHaasReader) {
 // programs, at least 400 of them compared.
 TEST(OracleDifferential, SeededProgramsMatchTheHeidenhainReader) {
   expect_matches(Control::kHeidenhain, 5000, 400);
+}
+
+TEST(OracleDifferential, SeededProgramsMatchTheNctReader) {
+  expect_matches(Control::kNct);
 }
 
 // The oracle sees a wrong program: the model's events against rs274's for a program that cuts

@@ -2,14 +2,14 @@
 //   oracle_run --seed N               one program: its CL, NC, events and first difference
 //   oracle_run --seconds S [--from N] fresh seeds from N (default: the clock) for S seconds
 //   oracle_run --count C [--from N]   C programs from seed N (default 1)
-//   oracle_run --control fanuc|haas|heidenhain --read P.nc   a program's events as the
+//   oracle_run --control fanuc|haas|heidenhain|nct --read P.nc   a program's events as the
 //                                     oracle's reader reads them (block delete off), or where it
 //                                     stops (heidenhain: read in mm, control parameter 1)
 //   … --machine M                     another shipped machine of the control (fanuc-0i-tf-live,
 //                                     haas-st-20y)
-//   … --control linuxcnc|fanuc|haas|heidenhain   the control (default linuxcnc): linuxcnc-lathe
-//                                     run by rs274, fanuc-0i-t, haas-st or heidenhain-pilot read by
-//                                     the oracle's reader
+//   … --control linuxcnc|fanuc|haas|heidenhain|nct   the control (default linuxcnc): linuxcnc-lathe
+//                                     run by rs274, fanuc-0i-t, haas-st, heidenhain-pilot or
+//                                     nct-2000t read by the oracle's reader
 // Prints the count, the classes of difference with their first seed and the first program that
 // differs in full; exit status 1 when any program differs, 2 on a usage error.
 #include <chrono>
@@ -26,7 +26,7 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: oracle_run --seed N | --seconds S [--from N] | --count C [--from N]"
-               " [--control linuxcnc|fanuc|haas|heidenhain] [--machine M]\n");
+               " [--control linuxcnc|fanuc|haas|heidenhain|nct] [--machine M]\n");
   return 2;
 }
 
@@ -51,11 +51,9 @@ int read(oracle::Control control, const std::string& path) {
   char buf[4096];
   for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
   std::fclose(f);
-  const oracle::Dialect d =
-      control == oracle::Control::kHaas ? oracle::Dialect::kHaas : oracle::Dialect::kFanuc;
   const oracle::ControlRun r = control == oracle::Control::kHeidenhain
                                    ? oracle::heidenhain_events(text, false, false)
-                                   : oracle::fanuc_events(text, d, false);
+                                   : oracle::fanuc_events(text, oracle::dialect_of(control), false);
   for (const oracle::Event& e : r.events) std::printf("%s\n", oracle::describe(e).c_str());
   if (r.error.empty()) return 0;
   std::printf("stops at line %d: %s\n", r.error_line, r.error.c_str());
