@@ -59,5 +59,18 @@ TEST(OracleGenerator, EveryStatementOfTheGrammarIsDrawn) {
   EXPECT_GE(fedrat_without_mode, 50);
 }
 
+// With `tpi` (NCT) PITCH/ is also given in threads per inch and the model reads it as 25.4/n;
+// without it the programs have none.
+TEST(OracleGenerator, ThreadsPerInchOnlyWhenAsked) {
+  int tpi = 0;
+  for (uint32_t seed = 1; seed <= 300; ++seed) {
+    const std::string cl = generate_program(seed, true);
+    EXPECT_EQ(model_events(cl).error, "") << "seed " << seed;
+    tpi += cl.find(",TPI") != std::string::npos ? 1 : 0;
+    EXPECT_EQ(generate_program(seed).find(",TPI"), std::string::npos) << "seed " << seed;
+  }
+  EXPECT_GE(tpi, 5);
+}
+
 }  // namespace
 }  // namespace oracle
