@@ -14,7 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 class Gen {
  public:
-  Gen(uint32_t seed, bool tpi) : rng_(seed), tpi_(tpi) {}
+  Gen(uint32_t seed, bool nct) : rng_(seed), nct_(nct) {}
   std::string program();
 
  private:
@@ -42,11 +42,12 @@ class Gen {
   bool gohome();
   bool opskip();
   bool thread();
+  void couple(double p, bool modal);
   bool coolant();
   bool pitch();
 
   std::mt19937 rng_;
-  bool tpi_;
+  bool nct_;
   std::string out_;
   bool inch_ = false;
   double x_ = 0, z_ = 0;  // CL units
@@ -295,6 +296,10 @@ bool Gen::thread() {
   const double p = inch_ ? kIn[irange(0, 3)] : kMm[irange(0, 5)];
   const bool modal = pitch_given_ && chance(0.5);
   if ((modal ? pitch_mm_ : p * (inch_ ? 25.4 : 1)) * rpm_ > 4500) return false;
+  if (nct_ && chance(0.4)) {
+    couple(p, modal);
+    return true;
+  }
   line(modal ? "THREAD/TURN" : "THREAD/TURN," + num(p));
   double xs, zs;
   do {
@@ -311,6 +316,31 @@ bool Gen::thread() {
   return true;
 }
 
+// COUPLE/ON (its own pitch in the file's unit, or PITCH's) after an ordinary move to the start,
+// the cut and now and then a pull-out outward (each a synchronized move, one continuous thread),
+// COUPLE/OFF, a retract.
+void Gen::couple(double p, bool modal) {
+  double xs, zs;
+  do {
+    xs = grid(3 * s(), 30 * s()), zs = grid(-10 * s(), 5 * s());
+  } while (std::hypot(xs - x_, zs - z_) < 0.05 * s());
+  if (!can_feed() || chance(0.6)) line("RAPID");
+  line("GOTO/" + point(xs, zs));
+  line(modal ? "COUPLE/ON" : std::string("COUPLE/ON,") + (inch_ ? "IPR," : "MMPR,") + num(p));
+  z_ = std::round((zs - grid(5 * s(), 30 * s())) * 1e4) / 1e4, x_ = xs;
+  line("GOTO/" + point(x_, z_));
+  if (chance(0.6)) {
+    x_ = std::round((x_ + grid(0.5 * s(), 2 * s())) * 1e4) / 1e4;
+    z_ = std::round((z_ - grid(0.5 * s(), 2 * s())) * 1e4) / 1e4;
+    line("GOTO/" + point(x_, z_));
+  }
+  line("COUPLE/OFF");
+  x_ = std::round((x_ + grid(0.5 * s(), 2 * s())) * 1e4) / 1e4, on_grid_ = true;
+  line("RAPID");
+  line("GOTO/" + point(x_, z_));
+  moved(false);
+}
+
 bool Gen::coolant() {
   static const char* kWords[] = {"ON", "FLOOD", "MIST", "OFF"};
   line(std::string("COOLNT/") + kWords[irange(0, 3)]);
@@ -321,7 +351,7 @@ bool Gen::pitch() {
   static const char* kPitches[] = {"1.5,MMPR",   "2,MMPR", "0.75,MMPR", "0.05,IPR",
                                    "0.0625,IPR", "16,TPI", "11.5,TPI"};
   static const double kMm[] = {1.5, 2, 0.75, 1.27, 1.5875, 25.4 / 16, 25.4 / 11.5};
-  const int i = irange(0, tpi_ ? 6 : 4);
+  const int i = irange(0, nct_ ? 6 : 4);
   line(std::string("PITCH/") + kPitches[i]);
   pitch_mm_ = kMm[i];
   pitch_given_ = true;
@@ -352,8 +382,8 @@ std::string Gen::program() {
 
 }  // namespace
 
-std::string generate_program(uint32_t seed, bool tpi) {
-  return Gen(seed, tpi).program();
+std::string generate_program(uint32_t seed, bool nct) {
+  return Gen(seed, nct).program();
 }
 
 }  // namespace oracle

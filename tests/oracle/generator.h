@@ -16,8 +16,9 @@
 
 namespace oracle {
 
-// `tpi`: PITCH/ also in threads per inch (a control that says a lead in TPI, NCT's G33 E); the
-// programs of the other controls stay as they were, seed for seed.
-std::string generate_program(uint32_t seed, bool tpi = false);
+// `nct`: also the thread forms of NCT's G33: PITCH/ in threads per inch (G33 E) and coupled
+// threads, COUPLE/ON[,pitch] … COUPLE/OFF around a cut and now and then a pull-out (successive G33
+// blocks); the programs of the other controls stay as they were, seed for seed.
+std::string generate_program(uint32_t seed, bool nct = false);
 
 }  // namespace oracle

@@ -59,6 +59,7 @@ bool Model::dispatch_state(const ClStatement& st) {
   if (w == "DELAY") return delay(st);
   if (w == "PITCH") return pitch(st);
   if (w == "THREAD") return thread(st);
+  if (w == "COUPLE") return couple(st);
   if (w == "COOLNT") return coolnt(st);
   if (w == "OPSKIP") return opskip(st);
   return fail(st, "the model does not know " + w);
@@ -85,11 +86,12 @@ bool Model::units(const ClStatement& st) {
 bool Model::move(const ClStatement& st, double x, double z, bool may_be_arc) {
   Event e;
   e.x = x, e.z = z;
-  if (thread_gotos_ == 1) {
+  if (thread_gotos_ == 1 || coupled_) {
+    if (coupled_ && (circle_ || rapid_next_)) return fail(st, "COUPLE/ cuts straight moves only");
     e.motion = MotionKind::kThread;
     e.lead = thread_lead_;
     e.why.modal_pitch = thread_modal_pitch_;
-    thread_gotos_ = -1;
+    if (!coupled_) thread_gotos_ = -1;
   } else if (circle_) {
     if (!may_be_arc) return fail(st, "CIRCLE/ applies to a GOTO");
     if (!have_pos_) return fail(st, "an arc needs a start point");

@@ -35,7 +35,9 @@ class Model {
   bool loadtl(const ClStatement& st, size_t first);
   bool delay(const ClStatement& st);
   bool pitch(const ClStatement& st);
+  bool pitch_of(const ClStatement& st, double& mm);
   bool thread(const ClStatement& st);
+  bool couple(const ClStatement& st);
   bool coolnt(const ClStatement& st);
   bool opskip(const ClStatement& st);
   void push(Event e, const ClStatement& st);
@@ -59,6 +61,7 @@ class Model {
   int thread_gotos_ = -1;   // a THREAD/TURN's GOTOs seen so far; -1: none pending
   double thread_lead_ = 0;  // mm/rev
   bool thread_modal_pitch_ = false;
+  bool coupled_ = false;  // between COUPLE/ON and COUPLE/OFF: every GOTO a thread cut
   bool in_range_ = false;
   bool range_closed_ = false;
   std::vector<Event> events_;

@@ -112,21 +112,44 @@ bool Model::delay(const ClStatement& st) {
   return true;
 }
 
-bool Model::pitch(const ClStatement& st) {
+// The pitch the words of `st` give (PITCH/, COUPLE/ON), in mm.
+bool Model::pitch_of(const ClStatement& st, double& mm) {
   const int at = st.first_number();
-  if (at < 0 || !(st.number(at) > 0)) return fail(st, "PITCH/ needs a positive value");
+  if (at < 0 || !(st.number(at) > 0)) return fail(st, "a pitch needs a positive value");
   const double v = st.number(at);
   if (st.has("MMPR"))
-    pitch_ = v;
+    mm = v;
   else if (st.has("IPR"))
-    pitch_ = v * kMmPerInch;
+    mm = v * kMmPerInch;
   else if (st.has("PERREV"))
-    pitch_ = len(v);
+    mm = len(v);
   else if (st.has("TPI"))
-    pitch_ = kMmPerInch / v;
+    mm = kMmPerInch / v;
   else
-    pitch_ = len(1 / v);  // threads per CL unit
+    mm = len(1 / v);  // threads per CL unit
+  return true;
+}
+
+bool Model::pitch(const ClStatement& st) {
+  if (!pitch_of(st, pitch_)) return false;
   why_.units_since_pitch = false;
+  return true;
+}
+
+// COUPLE/ON[,pitch words] … COUPLE/OFF: every GOTO in between one thread cut from where the tool
+// is, at the pitch of its own words (this thread only) or the modal one, in a row (threading.md
+// §1, §10).
+bool Model::couple(const ClStatement& st) {
+  if (st.has("OFF")) {
+    coupled_ = false;
+    return true;
+  }
+  if (!st.has("ON")) return fail(st, "COUPLE/ needs ON or OFF");
+  thread_modal_pitch_ = st.first_number() < 0;
+  thread_lead_ = pitch_;
+  if (!thread_modal_pitch_ && !pitch_of(st, thread_lead_)) return false;
+  if (!(thread_lead_ > 0)) return fail(st, "a thread needs a pitch");
+  coupled_ = true;
   return true;
 }
 

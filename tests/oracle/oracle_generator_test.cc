@@ -59,17 +59,21 @@ TEST(OracleGenerator, EveryStatementOfTheGrammarIsDrawn) {
   EXPECT_GE(fedrat_without_mode, 50);
 }
 
-// With `tpi` (NCT) PITCH/ is also given in threads per inch and the model reads it as 25.4/n;
-// without it the programs have none.
-TEST(OracleGenerator, ThreadsPerInchOnlyWhenAsked) {
-  int tpi = 0;
+// For NCT PITCH/ is also given in threads per inch and threads are also coupled (COUPLE/ON), and
+// the model reads them; the other controls' programs have neither.
+TEST(OracleGenerator, NctThreadFormsOnlyWhenAsked) {
+  int tpi = 0, couple = 0;
   for (uint32_t seed = 1; seed <= 300; ++seed) {
     const std::string cl = generate_program(seed, true);
     EXPECT_EQ(model_events(cl).error, "") << "seed " << seed;
     tpi += cl.find(",TPI") != std::string::npos ? 1 : 0;
-    EXPECT_EQ(generate_program(seed).find(",TPI"), std::string::npos) << "seed " << seed;
+    couple += cl.find("COUPLE/ON") != std::string::npos ? 1 : 0;
+    const std::string plain = generate_program(seed);
+    EXPECT_EQ(plain.find(",TPI"), std::string::npos) << "seed " << seed;
+    EXPECT_EQ(plain.find("COUPLE/"), std::string::npos) << "seed " << seed;
   }
   EXPECT_GE(tpi, 5);
+  EXPECT_GE(couple, 5);
 }
 
 }  // namespace

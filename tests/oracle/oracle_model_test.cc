@@ -212,6 +212,26 @@ TEST(OracleModel, ThreadTurnCutsTheSecondGoto) {
   EXPECT_NEAR(e[6].lead, 1.5, 1e-12);  // PITCH/1.5,MMPR before the switch: still 1.5 mm
 }
 
+// COUPLE/ON … COUPLE/OFF: every GOTO between one thread cut in a row, at COUPLE/ON's own pitch
+// (16 TPI: 25.4/16 = 1.5875 mm) or the modal one; after COUPLE/OFF a GOTO is a feed again.
+TEST(OracleModel, CoupleCutsEveryGoto) {
+  std::vector<Event> e = events_of(
+      "SPINDL/500,RPM,CLW\nFEDRAT/0.2,MMPR\nPITCH/1.5,MMPR\nRAPID\nGOTO/10,0,3\nCOUPLE/ON\n"
+      "GOTO/10,0,-20\nGOTO/11.5,0,-21.5\nCOUPLE/OFF\nGOTO/14,0,-21.5\nCOUPLE/ON,TPI,16\n"
+      "GOTO/14,0,-30\nCOUPLE/OFF\nFINI\n");
+  ASSERT_EQ(e.size(), 5u);
+  expect_move(e[1], MotionKind::kThread, 10, -20);
+  expect_move(e[2], MotionKind::kThread, 11.5, -21.5);
+  EXPECT_DOUBLE_EQ(e[2].lead, 1.5);
+  expect_move(e[3], MotionKind::kFeed, 14, -21.5);
+  expect_move(e[4], MotionKind::kThread, 14, -30);
+  EXPECT_DOUBLE_EQ(e[4].lead, 1.5875);
+  EXPECT_NE(model_events("SPINDL/500,RPM\nPITCH/1.5,MMPR\nGOTO/10,0,3\nCOUPLE/ON\nRAPID\n"
+                         "GOTO/10,0,-20\nFINI\n")
+                .error,
+            "");
+}
+
 TEST(OracleModel, GodltaAndFromArePositions) {
   std::vector<Event> e =
       events_of("FROM/10,0,5\nFEDRAT/100,MMPM\nGODLTA/2,0,-3\nGODLTA/-4\nFINI\n");
