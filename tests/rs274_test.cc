@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -473,6 +474,107 @@ TEST(Rs274, MillTurnPartIsWhereTheClSays) {
   }
   EXPECT_GT(stadium, 20u);
   for (size_t i = 0; i < tangents.size(); ++i) EXPECT_TRUE(reached[i]) << "tangent point " << i;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// Peripheral milling without Y (docs/millturn.md): a radial live tool's slot along Z at C90, its
+// groove half round the 16 mm diameter and its helix-like line changing C and Z together
+// (tests/data/millturn-peripheral-mill.apt), written in X, Z and C on linuxcnc-lathe-c. rs274
+// runs the program; every feed move, sampled at eighths as the control moves (X, Z and C
+// linear), mapped back to the part (X the radius at angle C) lies within 0.006 mm of the CL path
+// (the machine's xzc_tolerance and the output's rounding), every CL point is reached, and the
+// tip moves along the part at the CL's 100 mm/min.
+struct Seg3 {
+  double a[3], b[3];
+  bool groove = false;  // or the arc of radius 8 about Z at Z-10 from C0 to C180
+};
+
+double to_seg3(const Seg3& s, const double p[3]) {
+  if (s.groove) return p[1] < -1e-9 ? 1e9 : std::hypot(std::hypot(p[0], p[1]) - 8, p[2] + 10);
+  double d[3], len2 = 0, t = 0;
+  for (int i = 0; i < 3; ++i) d[i] = s.b[i] - s.a[i], len2 += d[i] * d[i];
+  for (int i = 0; i < 3; ++i) t += (p[i] - s.a[i]) * d[i] / len2;
+  t = std::clamp(t, 0.0, 1.0);
+  double e = 0;
+  for (int i = 0; i < 3; ++i) e += (s.a[i] + d[i] * t - p[i]) * (s.a[i] + d[i] * t - p[i]);
+  return std::sqrt(e);
+}
+
+TEST(Rs274, MillTurnPeripheralMillingFollowsThePartPath) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), ngc = dir + "/periph.ngc";
+  const std::string cl = source_dir() + "/tests/data/millturn-peripheral-mill.apt";
+  RunResult post =
+      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const double ex = -7.878462, ey = -1.389185;  // the helix-like line's end: 8 at 190 degrees
+  const std::vector<Seg3> path = {{{0, 15, 5}, {0, 8, 5}},
+                                  {{0, 8, 5}, {0, 8, -20}},
+                                  {{0, 8, -20}, {0, 15, -20}},
+                                  {{15, 0, -10}, {8, 0, -10}},
+                                  {{8, 0, -10}, {-8, 0, -10}, true},
+                                  {{-8, 0, -10}, {ex, ey, -11}},
+                                  {{ex, ey, -11}, {-14.772116, -2.604723, -11}}};
+  const std::vector<std::array<double, 3>> corners = {{0, 8, 5},   {0, 8, -20},  {8, 0, -10},
+                                                      {0, 8, -10}, {-8, 0, -10}, {ex, ey, -11}};
+  std::vector<bool> reached(corners.size(), false);
+  const double deg = std::acos(-1.0) / 180;
+  double rate = 0, worst = 0;
+  size_t feeds = 0, timed = 0;
+  std::istringstream out(r.out);
+  std::vector<double> at;
+  for (std::string line; std::getline(out, line);) {
+    if (const size_t f = line.find("SET_FEED_RATE("); f != std::string::npos)
+      rate = canon_numbers(line.substr(f))[0];
+    const size_t t = line.find("STRAIGHT_TRAVERSE("), m = line.find("STRAIGHT_FEED(");
+    if (t == std::string::npos && m == std::string::npos) continue;
+    const std::vector<double> v = canon_numbers(line.substr(t != std::string::npos ? t : m));
+    ASSERT_EQ(v.size(), 6u) << line;
+    if (m != std::string::npos && !at.empty()) {
+      ++feeds;
+      double part[2][3];
+      for (int k = 0; k <= 8; ++k) {
+        const double x = at[0] + (v[0] - at[0]) * k / 8, z = at[2] + (v[2] - at[2]) * k / 8;
+        const double c = (at[5] + (v[5] - at[5]) * k / 8) * deg;
+        const double p[3] = {x * std::cos(c), x * std::sin(c), z};
+        double d = 1e9;
+        for (const Seg3& s : path) d = std::min(d, to_seg3(s, p));
+        EXPECT_LE(d, 0.006) << line << " at " << k << "/8: part " << p[0] << ", " << p[1] << ", "
+                            << p[2];
+        worst = std::max(worst, d);
+        for (size_t i = 0; i < corners.size(); ++i)
+          reached[i] = reached[i] || std::hypot(p[0] - corners[i][0], p[1] - corners[i][1],
+                                                p[2] - corners[i][2]) < 0.006;
+        if (k == 0 || k == 8) std::copy(p, p + 3, part[k / 8]);
+      }
+      // rs274's time for the move: its length over X and Z, else C (G93: the rate it derives).
+      const double linear = std::hypot(v[0] - at[0], v[2] - at[2]);
+      const double minutes = (linear > 1e-9 ? linear : std::abs(v[5] - at[5])) / rate;
+      const double along =
+          std::hypot(part[1][0] - part[0][0], part[1][1] - part[0][1], part[1][2] - part[0][2]);
+      EXPECT_NEAR(along / minutes, 100, 1) << line;
+      ++timed;
+    }
+    at = v;
+  }
+  // The slot's plunge, cut and retract, the groove's plunge and its 63 chords of 180/63
+  // degrees (sagitta 8 (1 - cos(90/63 degrees)) = 0.00249, within half the tolerance), the
+  // helix-like line's 4 pieces (2 would be 0.0095 off it), the retract.
+  EXPECT_EQ(feeds, 3u + 1u + 63u + 4u + 1u);
+  EXPECT_EQ(timed, feeds);
+  EXPECT_LT(worst, 0.006);
+  for (size_t i = 0; i < corners.size(); ++i) EXPECT_TRUE(reached[i]) << "CL point " << i;
   fs::remove_all(dir);
 }
 

@@ -52,12 +52,38 @@ bool can_mill(PostState& s, const Statement& st) {
                        s.m.name, s.m.c_axis ? "another axial axis" : "no C axis"));
     return false;
   }
-  if (s.hole_axis_radial && !s.m.y_axis) {
+  return true;
+}
+
+// How far the radial tool's tip `p` is off the line of the tool axis through the centre line
+// (`off`), and how far along the axis from the centre line it stands (`along`), in CL units.
+struct ToolLine {
+  double off = 0, along = 0;
+};
+ToolLine tool_line(Point3 axis, Point3 p) {
+  return {std::abs(p.x * axis.y - p.y * axis.x), p.x * axis.x + p.y * axis.y};
+}
+
+// A radial tool's tip on a machine without Y (docs/millturn.md, "Peripheral milling without
+// Y"): C turns the part so that the tool axis stands on the machine's X axis, so the tip must lie
+// on the line of its axis through the centre line (within millturn.xzc_tolerance), on the tool's
+// side of it. False (reported) otherwise: the offset needs Y.
+bool on_tool_line(PostState& s, const Statement& st, Point3 p, const std::string& what) {
+  const ToolLine t = tool_line(s.tool_axis, p);
+  const Point3 a = s.tool_axis;
+  if (t.off > s.m.xzc_tolerance) {
     refuse(s, st,
-           fmt::format("the tool axis (GOTO i,j,k) is not along Z, and machine '{}' has no Y "
-                       "axis: milling on the peripheral surface without Y (cylindrical "
-                       "interpolation) is not written yet, face milling (tool axis 0,0,1) is",
-                       s.m.name));
+           fmt::format("{} is {:.4f} mm off the line of the tool axis ({:g}, {:g}, {:g}) through "
+                       "the centre line (millturn.xzc_tolerance {:g}): a radial tool reaches it "
+                       "with a Y axis only, and machine '{}' has none",
+                       what, t.off, a.x, a.y, a.z, s.m.xzc_tolerance, s.m.name));
+    return false;
+  }
+  if (t.along <= s.m.xzc_tolerance) {
+    refuse(s, st,
+           fmt::format("{} is {:.4f} mm from the centre line along the tool axis ({:g}, {:g}, "
+                       "{:g}): a radial tool's tip at or past the centre line is not written",
+                       what, t.along, a.x, a.y, a.z));
     return false;
   }
   return true;
@@ -110,6 +136,22 @@ double part_index(PostState& s, const Statement& st) {
     s.c.index = 0;
   }
   return *s.c.index;
+}
+
+// A milling motion's start (start_motion): the part frame's C index, the turn of C past it that
+// brings a radial tool's axis onto X (with Y), the feed per minute, the tool's side.
+struct MotionStart {
+  double index = 0, turn = 0, feed = 0;
+  bool radial = false;  // the tool axis is radial (k 0): peripheral work
+};
+
+// Without Y, where the machine puts a radial tool's CL point `p` (on_tool_line): at its radius
+// and at the angle of the tool axis, within the tolerance of `p`, so that C comes from the tool
+// axis (a move along the axis keeps C: the CL's rounded points do not turn it by a hair).
+Point3 machine_tip(const PostState& s, const MotionStart& ms, Point3 p) {
+  if (!ms.radial || s.m.y_axis) return p;
+  const double r = std::hypot(p.x, p.y), a = std::hypot(s.tool_axis.x, s.tool_axis.y);
+  return {r * s.tool_axis.x / a, r * s.tool_axis.y / a, p.z};
 }
 
 // C to `angle` (the shortest way), clamped as the machine clamps an index.
@@ -305,15 +347,46 @@ bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn
   return true;
 }
 
+// Without Y: the side plane (plane_side) before peripheral work and the lathe plane
+// (plane_lathe) before face work after it, when the machine has the codes. No G1 depends on the
+// plane: it says which work the XZC moves are (plot's peripheral view is drawn by it).
+void xzc_plane(PostState& s, bool radial) {
+  const int plane = radial ? 19 : 18;
+  if (s.mill.plane == plane || s.m.code(radial ? "plane_side" : "plane_lathe").empty()) return;
+  plane_code(s, s.prog.writer(), plane);
+}
+
 // A milling piece to verify (PostOptions::on_mill), else kept (PostState::mill_path).
 void keep_mill(PostState& s, const MillSegment& g) {
   if (s.opts.on_mill) return s.opts.on_mill(g);
   s.mill_path.push_back(g);
 }
 
+// Without Y, whether a radial tool reaches the arc's points (reported if not): about Z every
+// point (C follows the tip), about another axis only when they lie on the line of the tool axis
+// (an arc in the plane of the axis and Z, at one C). A face tool's arc is about Z only.
+bool xzc_arc_reached(PostState& s, const Statement& st, const MillArc& c,
+                     const std::vector<Point3>& points, bool radial) {
+  if (std::abs(std::abs(c.axis.z) - 1) <= 1e-6) return true;
+  if (!radial) {
+    refuse(s, st, "an arc about another axis than the spindle's needs a Y axis");
+    return false;
+  }
+  Point3 far = points.front(), near = points.front();
+  for (const Point3& p : points) {
+    if (tool_line(s.tool_axis, p).off > tool_line(s.tool_axis, far).off) far = p;
+    if (tool_line(s.tool_axis, p).along < tool_line(s.tool_axis, near).along) near = p;
+  }
+  const Point3 worst = tool_line(s.tool_axis, far).off > s.m.xzc_tolerance ? far : near;
+  return on_tool_line(s, st, worst,
+                      fmt::format("the arc of line {} about ({:g}, {:g}, {:g}) at ({:.5g}, {:.5g}, "
+                                  "{:.5g})",
+                                  c.line, c.axis.x, c.axis.y, c.axis.z, worst.x, worst.y, worst.z));
+}
+
 // The arc `c` to `to`: G2/G3 in the machine's plane with Y, lines within the tolerance without.
 void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
-              double index, double feed, double turn) {
+              const MotionStart& ms) {
   double h = 0;
   const Point3 r0 = radial_of(c, from, h), r1 = radial_of(c, to, h);
   const double d0 = std::sqrt(dot(r0, r0)), d1 = std::sqrt(dot(r1, r1));
@@ -322,27 +395,31 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
                  fmt::format("arc end point is not on the circle of line {}: distance from the "
                              "axis {:.6g} at the start, {:.6g} at the end",
                              c.line, d0, d1));
-  if (!s.m.y_axis && std::abs(std::abs(c.axis.z) - 1) > 1e-6)
-    return refuse(s, st, "an arc about another axis than the spindle's needs a Y axis");
   // Chords within half the tolerance, each piece within the other half: the segments verify
   // checks the program against.
   const std::vector<Point3> points = arc_points(c, from, to, s.m.xzc_tolerance / 2);
+  if (!s.m.y_axis && !xzc_arc_reached(s, st, c, points, ms.radial)) return;
+  if (!s.m.y_axis) xzc_plane(s, ms.radial);
   Point3 at = from;
   for (const Point3& p : points) {
-    keep_mill(s, {st.loc.line, part(at), part(p), index, false});
-    if (!s.m.y_axis) xzc_move(s, at, p, index, false, feed, s.m.xzc_tolerance / 2);
+    keep_mill(s, {st.loc.line, part(at), part(p), ms.index, false});
+    const Point3 q = &p == &points.back() ? machine_tip(s, ms, p) : p;
+    if (!s.m.y_axis) xzc_move(s, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
     at = p;
   }
-  if (s.m.y_axis && !xyz_arc(s, c, from, to, turn, feed))
+  if (s.m.y_axis && !xyz_arc(s, c, from, to, ms.turn, ms.feed))
     refuse(s, st, "the arc's axis is along none of the machine's X, Y, Z at this C");
+}
+
+// Without Y, a radial tool's CL point: on the line of its axis through the centre line.
+bool tip_reached(PostState& s, const Statement& st, const MotionStart& ms, Point3 p) {
+  if (!ms.radial || s.m.y_axis) return true;
+  return on_tool_line(s, st, p, fmt::format("the tip ({:g}, {:g}, {:g})", p.x, p.y, p.z));
 }
 
 // Where a milling motion starts: checked, C set (at the index, or past it for a radial tool on
 // a machine with Y). False (reported, or nothing to write) when the motion is not written.
-struct MotionStart {
-  double index = 0, turn = 0, feed = 0;
-};
-bool start_motion(PostState& s, const Statement& st, bool rapid, MotionStart& ms) {
+bool start_motion(PostState& s, const Statement& st, bool rapid, Point3 to, MotionStart& ms) {
   if (s.dntcut || !can_mill(s, st)) return false;
   if (s.tool_axis.z < -1 + 1e-6)
     note_once(s, st, "mill-minus-z",
@@ -355,11 +432,12 @@ bool start_motion(PostState& s, const Statement& st, bool rapid, MotionStart& ms
   if (!feed) return false;
   ms.feed = *feed;
   ms.index = part_index(s, st);
-  if (s.m.y_axis) {
-    const std::optional<double> turn = side_turn(s, st);
-    if (!turn) return false;
-    ms.turn = *turn;
-  }
+  const std::optional<double> turn = side_turn(s, st);
+  if (!turn) return false;
+  ms.radial = s.hole_axis_radial;
+  if (!tip_reached(s, st, ms, to)) return false;
+  // Without Y the point gives C (the tool axis its side); with Y C turns the tool's side to X.
+  if (s.m.y_axis) ms.turn = *turn;
   // C unknown, or a machine with Y: C where the work is first.
   if ((!s.c.angle || s.m.y_axis) && !c_to(s, st, ms.index + ms.turn)) return false;
   if (!s.pos && !rapid) {
@@ -382,7 +460,7 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                              "feed, there is no rapid arc",
                              circle->loc.line));
   MotionStart ms;
-  if (!start_motion(s, st, rapid, ms)) {
+  if (!start_motion(s, st, rapid, p, ms)) {
     s.pos = p;  // DNTCUT: the position is tracked, nothing is written
     return;
   }
@@ -395,10 +473,13 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                       along({circle->ax, circle->ay, circle->az}, 1 / len),
                       1,
                       circle->loc.line};
-    return mill_arc(s, st, arc, from, p, ms.index, ms.feed, ms.turn);
+    return mill_arc(s, st, arc, from, p, ms);
   }
   keep_mill(s, {st.loc.line, part(from), part(p), ms.index, rapid});
-  if (!s.m.y_axis) return xzc_move(s, from, p, ms.index, rapid, ms.feed, s.m.xzc_tolerance);
+  if (!s.m.y_axis) {
+    xzc_plane(s, ms.radial);
+    return xzc_move(s, from, machine_tip(s, ms, p), ms.index, rapid, ms.feed, s.m.xzc_tolerance);
+  }
   // The face's lines in G17; a radial tool's in the plane in force (its arcs choose theirs).
   xyz_move(s, machine_xyz(p, ms.turn), rapid, ms.feed, s.hole_axis_radial ? s.mill.plane : 17);
 }
@@ -408,7 +489,7 @@ void milling_circle(PostState& s, const Statement& st, const Circle& c) {
   const double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
   if (!(len > 0))
     return refuse(s, st, fmt::format("CIRCLE/ with the axis ({}, {}, {})", c.ax, c.ay, c.az));
-  if (!s.m.y_axis && std::abs(std::abs(c.az) / len - 1) > 1e-6)
+  if (!s.m.y_axis && !s.hole_axis_radial && std::abs(std::abs(c.az) / len - 1) > 1e-6)
     return refuse(s, st,
                   fmt::format("CIRCLE/ about the axis ({}, {}, {}), not the spindle axis: without "
                               "a Y axis a live tool's arc is written in the face plane only",
@@ -456,10 +537,10 @@ void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axi
                     Point3 end) {
   MotionStart ms;
   if (!s.pos) return error(s, st, st.loc, "an arc needs a start point: no GOTO or FROM before it");
-  if (!start_motion(s, st, false, ms)) return;
+  if (!start_motion(s, st, false, end, ms)) return;
   const Point3 from = *s.pos;
   s.pos = end;
-  mill_arc(s, st, {center, axis, sense, st.loc.line}, from, end, ms.index, ms.feed, ms.turn);
+  mill_arc(s, st, {center, axis, sense, st.loc.line}, from, end, ms);
 }
 
 void end_milling(PostState& s, const Statement& st, bool c_back) {

@@ -263,3 +263,131 @@ TEST(MillingMotion, TiltedAxisAndCompensationWithoutYAreLocatedErrors) {
 
 }  // namespace
 }  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// Peripheral milling without Y (docs/millturn.md): a radial live tool on a 16 mm diameter. A
+// slot along Z at C90 (tool axis 0,1,0 at index 0: C from the axis), the groove half round at
+// Z-10 (CIRCLE/ about Z) and a helix-like line from C180 Z-10 to C190 Z-11, then out along the
+// tool axis.
+constexpr const char* kPeripheral =
+    "LOADTL/4,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/0,15,5,0,1,0\n"
+    "FEDRAT/100,MMPM\nGOTO/0,8,5,0,1,0\nGOTO/0,8,-20,0,1,0\nGOTO/0,15,-20,0,1,0\nRAPID\n"
+    "GOTO/15,0,-10,1,0,0\nGOTO/8,0,-10,1,0,0\nCIRCLE/0,0,-10,0,0,1,8\nGOTO/-8,0,-10,-1,0,0\n"
+    "GOTO/-7.878462,-1.389185,-11,-0.984808,-0.173648,0\n"
+    "GOTO/-14.772116,-2.604723,-11,-0.984808,-0.173648,0\nFINI\n";
+
+// By hand. The slot: C90 from the tool axis, X the tip's diameter 16, Z alone: the lathe's G1
+// (exact). The groove: chords within half the tolerance, 2 acos(1 - 0.0025 / 8) = 0.05 rad, so
+// 63 of 180/63 = 2.857143 degrees, each 16 sin(90/63 degrees) = 0.398891 mm: G93 F = 100 /
+// 0.398891 = 250.695 (Fanuc: 2.857143 degrees in 0.00398891 min, F716.2715). At X16 the
+// control's C move is the arc itself. The helix-like line: the chord of the 16 mm circle from
+// C180 to C190 (C from its tool axis, 189.99999 degrees as the CL rounds it) while Z goes -10 to
+// -11; halves are 8 (1 - cos 2.5°) = 0.0076 off it, quarters 0.0019: 4 pieces, their ends on the
+// line (X = 2 |point|: 15.95436 at a quarter, 16 cos 5° = 15.93912 at half; C 182.4952, 185),
+// each a quarter of its 1.715996 mm: G93 F = 100 / 0.428996 = 233.1023. Out along the tool axis
+// at C190: the lathe's G1.
+TEST(MillingMotion, PeripheralSlotGrooveAndHelixWithoutY) {
+  Posted l = post(kPeripheral, load("linuxcnc-lathe-c"));
+  EXPECT_EQ(l.errors, 0u) << l.diags;
+  EXPECT_NE(l.nc.find("G0 C0.\nG19\nG0 X30. Z5. C90.\nG1 X16. Z5. G94 F100.\nZ-20.\nX30.\n"
+                      "G0 X30. Z-10. C0.\nG1 X16. Z-10. G94 F100.\n"
+                      "G93 G1 X16. Z-10. C2.8571 F250.695\nG1 X16. Z-10. C5.7143 F250.695\n"),
+            std::string::npos)
+      << l.nc;
+  EXPECT_NE(l.nc.find("G1 X16. Z-10. C177.1429 F250.695\nG1 X16. Z-10. C180. F250.695\n"
+                      "G1 X15.95436 Z-10.25 C182.4952 F233.1023\n"
+                      "G1 X15.93912 Z-10.5 C185. F233.1023\n"
+                      "G1 X15.95436 Z-10.75 C187.5048 F233.1023\n"
+                      "G1 X16. Z-11. C190. F233.1023\nG1 X30. Z-11. G94 F100.\nM2\n"),
+            std::string::npos)
+      << l.nc;
+  size_t groove = 0;
+  for (size_t at = l.nc.find("X16. Z-10. C"); at != std::string::npos;
+       at = l.nc.find("X16. Z-10. C", at + 1))
+    ++groove;
+  EXPECT_EQ(groove, 63u);
+  // Fanuc (no plane code: the Takisawa post mills radially in G18), rollover C, the combined F.
+  Posted f = post(kPeripheral, load("fanuc-0i-tf-live"));
+  EXPECT_EQ(f.errors, 0u) << f.diags;
+  EXPECT_NE(f.nc.find("G0 X30. Z5. C90.\nG1 X16. Z5. G98 F100.\nZ-20.\nX30.\nG0 X30. Z-10. C0.\n"
+                      "G1 X16. Z-10. G98 F100.\nG1 X16. Z-10. C2.857 F716.2715\n"),
+            std::string::npos)
+      << f.nc;
+  EXPECT_EQ(f.nc.find("G19"), std::string::npos) << f.nc;
+}
+
+// A ROTABL turns the part frame: at index 90 a radial tool along +X works at C90 (its rapid
+// there is the lathe's move, as a radial drill's approach, then G19 before the milling).
+TEST(MillingMotion, PeripheralWorkAtTheCIndex) {
+  Posted p = post(
+      "LOADTL/4,MILL\nSPINDL/2000,RPM,CLW\nROTABL/90,CAXIS\nFEDRAT/100,MMPM\nRAPID\n"
+      "GOTO/15,0,5,1,0,0\nGOTO/8,0,5,1,0,0\nGOTO/8,0,-20,1,0,0\nFINI\n",
+      load("linuxcnc-lathe-c"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C90.\nG0 X30. Z5.\nG19\nG1 X16. G94 F100.\nZ-20.\n"), std::string::npos)
+      << p.nc;
+}
+
+// What a radial tool without Y cannot reach: a tip off the line of its axis through the centre
+// line (CATIA's MillTurn3x_PATH1 at Y0.05 with the axis 1,0,0), an arc in the peripheral plane
+// (about the tool axis: its points leave that line), a tilted or back-face tool axis, a tip past
+// the centre line. An arc in the plane of the tool axis and Z stays at one C: lines.
+TEST(MillingMotion, PeripheralWithoutYRefusesWhatNeedsY) {
+  const std::string head = "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nFEDRAT/150,MMPM\n";
+  Posted off =
+      post(head + "RAPID\nGOTO/9.42906,0.05,2.27946,1,0,0\nFINI\n", load("linuxcnc-lathe-c"));
+  EXPECT_EQ(off.errors, 1u) << off.diags;
+  EXPECT_NE(off.diags.find("t.cl:6:1: error: milling motion with live tool 3 (loaded at line 1): "
+                           "the tip (9.42906, 0.05, 2.27946) is 0.0500 mm off the line of the "
+                           "tool axis (1, 0, 0) through the centre line (millturn.xzc_tolerance "
+                           "0.005): a radial tool reaches it with a Y axis only, and machine "
+                           "'linuxcnc-lathe-c' has none"),
+            std::string::npos)
+      << off.diags;
+  Posted within =
+      post(head + "RAPID\nGOTO/9.42906,0.004,2.27946,1,0,0\nFINI\n", load("fanuc-0i-tf-live"));
+  EXPECT_EQ(within.errors, 0u) << within.diags;
+  EXPECT_NE(within.nc.find("G0 X18.858 Z2.279\n"), std::string::npos) << within.nc;
+  // The half turn about X (radius 1) is 23 chords (2 acos(1 - 0.0025) = 0.1414 rad each); the
+  // farthest chord point, 11 x 180/23 = 86.087 degrees round, is sin 86.087° = 0.9977 off.
+  Posted plane =
+      post(head + "RAPID\nGOTO/4,0,3,1,0,0\nCIRCLE/4,0,2,1,0,0,1\nGOTO/4,0,1,1,0,0\nFINI\n",
+           load("fanuc-0i-tf-live"));
+  EXPECT_EQ(plane.errors, 1u) << plane.diags;
+  EXPECT_NE(plane.diags.find("t.cl:8:1: error: milling motion with live tool 3 (loaded at line 1): "
+                             "the arc of line 7 about (1, 0, 0) at (4, -0.99767, 2.0682) is 0.9977 "
+                             "mm off the line of the tool axis (1, 0, 0) through the centre line"),
+            std::string::npos)
+      << plane.diags;
+  Posted tilted = post(head + "GOTO/4,0,3,0.6,0,0.8\nFINI\n", load("linuxcnc-lathe-c"));
+  EXPECT_NE(tilted.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line "
+                              "1): the tool axis (0.6, 0, 0.8) is neither the face's (0,0,1) nor "
+                              "radial (k 0)"),
+            std::string::npos)
+      << tilted.diags;
+  Posted back = post(head + "GOTO/4,0,3,0,0,-1\nFINI\n", load("fanuc-0i-tf-live"));
+  EXPECT_NE(back.diags.find("the tool axis (0, 0, -1) is neither the face's (0,0,1) nor radial"),
+            std::string::npos)
+      << back.diags;
+  Posted past = post(head + "RAPID\nGOTO/-2,0,3,1,0,0\nFINI\n", load("linuxcnc-lathe-c"));
+  EXPECT_NE(past.diags.find("t.cl:6:1: error: milling motion with live tool 3 (loaded at line 1): "
+                            "the tip (-2, 0, 3) is -2.0000 mm from the centre line along the tool "
+                            "axis (1, 0, 0): a radial tool's tip at or past the centre line is "
+                            "not written"),
+            std::string::npos)
+      << past.diags;
+  // About Y through the centre line's plane: the arc from (6, 0, 0) round (5, 0, 0) to
+  // (5, 0, -1), all at C0: chords in X and Z (the lathe's G1), X from 12 down to 10.
+  Posted xz =
+      post(head + "RAPID\nGOTO/6,0,0,1,0,0\nCIRCLE/5,0,0,0,1,0,1\nGOTO/5,0,-1,1,0,0\nFINI\n",
+           load("linuxcnc-lathe-c"));
+  EXPECT_EQ(xz.errors, 0u) << xz.diags;
+  EXPECT_EQ(xz.nc.find("G93"), std::string::npos) << xz.nc;
+  EXPECT_NE(xz.nc.find("G19\nG1 X11.98289 Z-0.13053 G94 F150.\n"), std::string::npos) << xz.nc;
+  EXPECT_NE(xz.nc.find("X10. Z-1.\nM2\n"), std::string::npos) << xz.nc;
+}
+
+}  // namespace
+}  // namespace clpost

@@ -119,6 +119,10 @@ bool live_xz_move(const PostState& s, Point3 p) {
   return s.rapid_next || s.feed_mode != FeedMode::kPerRev;
 }
 
+bool c_at_index(const PostState& s) {
+  return !s.c.index || !s.c.angle || std::fabs(std::remainder(*s.c.angle - *s.c.index, 360)) < 1e-9;
+}
+
 bool milling_motion_refused(PostState& s, const Statement& st) {
   if (!s.tool.mills()) return false;
   if (!s.mill_motion_reported) {

@@ -25,6 +25,8 @@ void release_c(PostState& s);
 // A GOTO of a milling tool to `p` that is an XZ move at the C index, written as a lathe's move:
 // Y 0, the tool axis along Z, C indexed (or X 0), a rapid or a feed per minute.
 bool live_xz_move(const PostState& s, Point3 p);
+// C is at the C index (the last ROTABL's angle, whole turns aside), or either is not known.
+bool c_at_index(const PostState& s);
 // A motion with a milling tool: true (reported once per tool) — not written yet.
 bool milling_motion_refused(PostState& s, const Statement& st);
 // The C words that take C from `from` (unknown: none) to `angle` (incremental: by `angle`),

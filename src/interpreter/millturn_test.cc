@@ -137,27 +137,28 @@ TEST(MillTurn, MainSpindleStopsForMillingAndCMovesOnlyWhenItChanges) {
 
 TEST(MillTurn, LiveToolLimitsAndMillingMotionAreLocatedErrors) {
   Posted p = post(
-      "LOADTL/3,MILL\nSPINDL/5000,RPM,CLW\nSPINDL/100,SMM\nGOTO/10,5,0,1,0,0\n"
+      "FEDRAT/100,MMPM\nLOADTL/3,MILL\nSPINDL/5000,RPM,CLW\nSPINDL/100,SMM\nGOTO/10,5,0,1,0,0\n"
       "GOTO/10,6,0\nROTABL/10,BAXIS\nFINI\n",
       haas_live());
   EXPECT_EQ(p.errors, 4u) << p.diags;
-  EXPECT_NE(p.diags.find("t.cl:2:8: error: live tool speed 5000 rpm exceeds the machine's maximum "
+  EXPECT_NE(p.diags.find("t.cl:3:8: error: live tool speed 5000 rpm exceeds the machine's maximum "
                          "4000 rpm (millturn.live_max_rpm)"),
             std::string::npos)
       << p.diags;
-  EXPECT_NE(p.diags.find("t.cl:3:12: error: a live tool turns at a speed in RPM: a surface speed "
+  EXPECT_NE(p.diags.find("t.cl:4:12: error: a live tool turns at a speed in RPM: a surface speed "
                          "for milling tool 3 is not supported"),
             std::string::npos)
       << p.diags;
-  // One error for the tool's motions, at the first: peripheral milling (milling_motion.cc).
-  EXPECT_NE(p.diags.find("t.cl:4:1: error: milling motion with live tool 3 (loaded at line 1): "
-                         "the tool axis (GOTO i,j,k) is not along Z, and machine 'haas-st' has no "
-                         "Y axis: milling on the peripheral surface without Y (cylindrical "
-                         "interpolation) is not written yet, face milling (tool axis 0,0,1) is "
+  // One error for the tool's motions, at the first: a radial tool's tip 5 mm off the line of its
+  // axis through the centre line needs Y (milling_motion.cc).
+  EXPECT_NE(p.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line 2): "
+                         "the tip (10, 5, 0) is 5.0000 mm off the line of the tool axis (1, 0, 0) "
+                         "through the centre line (millturn.xzc_tolerance 0.005): a radial tool "
+                         "reaches it with a Y axis only, and machine 'haas-st' has none "
                          "(docs/millturn.md)"),
             std::string::npos)
       << p.diags;
-  EXPECT_NE(p.diags.find("t.cl:6:11: error: ROTABL/…,BAXIS: a lathe's rotary axis is C; machine "
+  EXPECT_NE(p.diags.find("t.cl:7:11: error: ROTABL/…,BAXIS: a lathe's rotary axis is C; machine "
                          "'haas-st' has no B axis"),
             std::string::npos)
       << p.diags;

@@ -251,10 +251,12 @@ void goto_stmt(PostState& s, const Statement& st) {
   // A live tool's hole cycle GOTOs are face holes (hole_goto.cc), its XZ moves at the C index
   // are a lathe's moves; its other motion is refused.
   // A live tool's motion is milling (milling_motion.cc), but the radial drill's approach along X
-  // at Y 0 (live_xz_move), the lathe's XZ move; with Y, a tool from the -X side is milling (C
-  // turns it to the turret's side).
-  const bool radial_approach =
-      s.hole_axis_radial && live_xz_move(s, p) && (!s.m.y_axis || s.tool_axis.x > 0);
+  // at Y 0 (live_xz_move) from the +X side, the lathe's XZ move; a tool from the -X side is
+  // milling (C turns it to the turret's side). Without Y only a rapid at the C index on the
+  // tool's side of the centre line is that approach: a radial tool's other moves are milling in
+  // X Z C, the point giving C (docs/millturn.md, "Peripheral milling without Y").
+  const bool radial_approach = s.hole_axis_radial && live_xz_move(s, p) && s.tool_axis.x > 0 &&
+                               (s.m.y_axis || (s.rapid_next && c_at_index(s) && p.x > 0));
   if (s.tool.mills() && !s.in_cycle && !radial_approach) return milling_goto(s, st, p);
   const bool live_ok = s.tool.mills() && (s.in_cycle || live_xz_move(s, p));
   if (!live_ok && milling_motion_refused(s, st)) return;

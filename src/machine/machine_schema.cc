@@ -318,10 +318,13 @@ constexpr NameSpec kLaterCodes[] = {
      "inverse time feed (G93), for the XZC moves that turn C with millturn.xzc_feed: "
      "inverse_time; the next feed move writes feed_per_min again"},
     {"plane_face", "the face plane (G17), before milling in X Y (millturn.y_axis)"},
-    {"plane_lathe", "the lathe plane (G18), after milling in X Y, and for arcs about Y"},
+    {"plane_lathe",
+     "the lathe plane (G18), after milling in X Y or peripheral milling in X Z C, and for arcs "
+     "about Y"},
     {"plane_side",
-     "the plane across the part (G19, Y Z), for arcs of peripheral milling "
-     "(a radial tool, millturn.y_axis)"},
+     "the plane across the part (G19, Y Z), for arcs of peripheral milling (a radial tool, "
+     "millturn.y_axis); without Y, before a radial tool's X Z C moves (no G1 depends on it: it "
+     "marks the peripheral work, which plot draws unrolled)"},
     {"clamp_on", "CLAMP/ON (a spindle or axis clamp); without it CLAMP is a warning and a comment"},
     {"clamp_off", "CLAMP/OFF"},
 };
