@@ -64,10 +64,10 @@ TEST(MillVerify, MillingLongerThanThePathWindowVerifies) {
 }
 
 // The program `nc` with `from` replaced by `to` once, verified against the CL.
-RunResult verify_edited(const std::string& machine, const std::string& from,
-                        const std::string& to) {
+RunResult verify_edited(const std::string& machine, const std::string& from, const std::string& to,
+                        const std::string& cl = kCl) {
   const std::string dir = temp_dir(), nc = dir + "/p.nc";
-  RunResult p = run(quote(clpost_bin()) + " -m " + machine + " -o " + quote(nc) + " " + quote(kCl));
+  RunResult p = run(quote(clpost_bin()) + " -m " + machine + " -o " + quote(nc) + " " + quote(cl));
   EXPECT_EQ(p.exit_code, 0) << p.err;
   std::string text = read_file(nc);
   const size_t at = text.find(from);
@@ -75,7 +75,7 @@ RunResult verify_edited(const std::string& machine, const std::string& from,
   if (at != std::string::npos) text.replace(at, from.size(), to);
   std::ofstream(nc, std::ios::binary) << text;
   RunResult r =
-      run(quote(clpost_bin()) + " verify -m " + machine + " " + quote(nc) + " --cl " + quote(kCl));
+      run(quote(clpost_bin()) + " verify -m " + machine + " " + quote(nc) + " --cl " + quote(cl));
   fs::remove_all(dir);
   return r;
 }
@@ -157,6 +157,52 @@ TEST(MillVerify, TheStreamSaysWhatTheWholeSays) {
   Diagnostics ok("t.nc");
   EXPECT_EQ(verify_milling(cl, nc, 2, m, vo, ok).problems, 0u);
   EXPECT_EQ(ok.error_count(), 0u);
+}
+
+}  // namespace
+}  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// Peripheral milling without Y (tests/data/millturn-peripheral-mill.apt: a radial tool's slot
+// along Z at C90, a groove half round the 16 mm diameter, a helix-like line from C180 Z-10 to
+// C190 Z-11): the program's X (the tip's radius) and C map back to the CL's tip points. It
+// verifies on both machines without Y; a C one degree off fails at its line.
+TEST(MillVerify, PeripheralMillingVerifiesAndACOffFails) {
+  const std::string cl = source_dir() + "/tests/data/millturn-peripheral-mill.apt";
+  const std::string dir = temp_dir();
+  for (const char* m : {"linuxcnc-lathe-c", "fanuc-0i-tf-live"}) {
+    RunResult r = run(quote(clpost_bin()) + " -m " + m + " --verify -o " + quote(dir + "/p.nc") +
+                      " " + quote(cl));
+    EXPECT_EQ(r.exit_code, 0) << m << r.err;
+    EXPECT_NE((r.out + r.err)
+                  .find("milling: 10 CL motions, 76 program moves in X, Y, Z and C\nok: every CL "
+                        "point reached in order and every feed move on the CL path, within 0.006"),
+              std::string::npos)
+        << m << r.out << r.err;
+  }
+  fs::remove_all(dir);
+  // The helix-like line's middle (the tip at radius 8 cos 5° = 7.9696, C185, Z-10.5) written at
+  // C186: (-7.9259, -0.8331, -10.5) in the part, whose nearest point on the CL's line from
+  // (-8, 0, -10) to (-7.878462, -1.389185, -11) is at 0.5659 of it, 0.0811 mm away.
+  RunResult h =
+      verify_edited("linuxcnc-lathe-c", "X15.93912 Z-10.5 C185. ", "X15.93912 Z-10.5 C186. ", cl);
+  EXPECT_NE(h.exit_code, 0);
+  EXPECT_NE(h.err.find("error: milling at " + cl +
+                       ":22: at X7.9696 (radius) Y0.0000 Z-10.5000 C186.0000, 0.0811 mm from the "
+                       "CL path at (-7.9312, -0.7861, -10.5659) (the part at C0)"),
+            std::string::npos)
+      << h.err;
+  // The slot's plunge on Fanuc ending at C91 (the slot is at C90): the tip at radius 8 is
+  // 8 x pi / 180 = 0.1396 mm along its circle from the CL's point, at CL line 14.
+  RunResult s = verify_edited("fanuc-0i-tf-live", "G1 X16. Z5. G98", "G1 X16. Z5. C91. G98", cl);
+  EXPECT_NE(s.exit_code, 0);
+  EXPECT_NE(s.err.find("error: milling at " + cl +
+                       ":14: at C91.0000, CL C90.0000 (0.1396 mm along the circle of radius "
+                       "8.0000)"),
+            std::string::npos)
+      << s.err;
 }
 
 }  // namespace
