@@ -193,6 +193,25 @@ TEST(Plot, RadialHolesAreOnThePeripheralViewOnly) {
   EXPECT_EQ(r.out.find("Peripheral work"), std::string::npos);
 }
 
+// Peripheral milling without Y (tests/data/millturn-peripheral-mill.apt) on linuxcnc-lathe-c:
+// its X Z C moves in G19 are drawn unrolled, at radius 15 (the first feed's start, the slot's
+// plunge from X30). By hand, in the view: the slot 25 mm along Z at C90, the groove's 63 chords
+// 15 pi = 47.124 mm up from C0 to C180 (X stays 16: the control's C moves are the arc), the
+// helix-like line's 4 pieces hypot(15 x 10 pi / 180, 1) = 2.803 mm: 74.9 mm in 68 feeds (the
+// plunges along X are points in this view). There is no face view. On fanuc-0i-tf-live, which
+// writes no plane code (the Takisawa post mills radially in G18), the same moves are face work.
+TEST(Plot, PeripheralMillingWithoutYIsUnrolled) {
+  RunResult r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-peripheral-mill.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("Face work"), std::string::npos);
+  EXPECT_NE(r.out.find(">Peripheral work, unrolled at radius 15 mm:"), std::string::npos);
+  EXPECT_NE(r.out.find(" 68 feed (74.9 mm); 0 radial holes"), std::string::npos) << r.out;
+  r = clpost("plot -m fanuc-0i-tf-live tests/data/millturn-peripheral-mill.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Face work"), std::string::npos);
+  EXPECT_EQ(r.out.find("Peripheral work"), std::string::npos);
+}
+
 // The README shows docs/img: they must be what clpost draws (scripts/plot-samples.sh redraws).
 TEST(Plot, DocsPicturesAreCurrent) {
   namespace fs = std::filesystem;

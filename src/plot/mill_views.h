@@ -10,10 +10,11 @@
 //    feed's start (the rapids before it are not drawn), else the stock's (the largest turned
 //    radius), else the first radial hole's top (its R plane).
 // A move of the machine's X, Y, Z or C is C work while the tool that last wrote C (or last moved
-// in G17 or G19 once C was written) is loaded; it
-// goes to the peripheral view in G19 (the side plane, a radial tool), and on a machine with Y in
-// G18 too (haas-st-20y's radial tool moves X Y Z there), else to the face view (G17; without Y
-// all milling is face work). A
+// in G17 or G19 once C was written) is loaded; it goes to the peripheral view in G19 (the side
+// plane, a radial tool: without Y its X Z C moves when the machine writes plane_side, as
+// linuxcnc-lathe-c does), and on a machine with Y in G18 too (haas-st-20y's radial tool moves
+// X Y Z there), else to the face view (G17, and XZC work without a plane code:
+// fanuc-0i-tf-live's radial milling is drawn there). A
 // move that turns C is drawn in steps of at most 5 degrees, so a C index at a radius shows as the
 // arc the tool describes on the part; a G2/G3 is drawn along its arc in its plane (G17, G18,
 // G19, centre words I J K from its start) the same way. Holes: a face hole (drilled along Z) is a
