@@ -124,3 +124,56 @@ TEST(MillTurnRealcam, MillTurn3xPath1PostsAndVerifiesOnHaasSt20y) {
 
 }  // namespace
 }  // namespace clpost::test
+
+namespace clpost::test {
+namespace {
+
+// MillTurn3x_PATH1 on the machines without Y (60 000 rpm for its turning, 17 500 for tool 4):
+// its three peripheral operations contour a flat across the bar (tool axis 1,0,0 at x 3.9 with
+// y from -0.75 to 0.75; tool 4 along 0,1,0 at x 0.05): every point is off the line of the tool
+// axis through the centre line, work only a Y axis reaches. Each operation is one located error
+// at its first point naming the offset (its approach rapid at y 0.05: 0.0500 mm); the back-face
+// tool (0,0,-1, line 870) is the fourth. The turning between them posts.
+TEST(MillTurnRealcam, MillTurn3xPath1WithoutYStopsAtItsYWork) {
+  const std::string cl = realcam_dir() + "/catia_toussaint/MillTurn3x_PATH1.aptsource";
+  if (!fs::exists(cl)) GTEST_SKIP() << cl << " not found";
+  const std::string dir = temp_dir(), nc = dir + "/p1.nc";
+  for (const std::string m : {"linuxcnc-lathe-c", "fanuc-0i-tf-live"}) {
+    RunResult r = run(quote(clpost_bin()) + " -m " + m +
+                      " --set limits.max_rpm=60000 --set millturn.live_max_rpm=17500 -o " +
+                      quote(nc) + " " + quote(cl));
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:62:1: error: milling motion with live tool 3 "
+                         "(loaded at line 36): the tip (9.42906, 0.05, 2.27946) is 0.0500 mm off "
+                         "the line of the tool axis (1, 0, 0) through the centre line "
+                         "(millturn.xzc_tolerance 0.005): a radial tool reaches it with a Y axis "
+                         "only, and machine '" +
+                         m + "' has none"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:456:1: error: milling motion with live tool 3 "
+                         "(loaded at line 430): the tip (9.42323, 0.05, 2.9) is 0.0500 mm off"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:664:1: error: milling motion with live tool 4 "
+                         "(loaded at line 638): the tip (0.05, 9.4208, 1.6) is 0.0500 mm off the "
+                         "line of the tool axis (0, 1, 0)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:870:1: error: milling motion with live tool 5 "
+                         "(loaded at line 845): the tool axis (0, 0, -1) is neither the face's "
+                         "(0,0,1) nor radial (k 0)"),
+              std::string::npos)
+        << r.err;
+    size_t errors = 0;
+    for (size_t at = r.err.find(": error: "); at != std::string::npos;
+         at = r.err.find(": error: ", at + 1))
+      ++errors;
+    EXPECT_EQ(errors, 4u) << r.err;
+    EXPECT_FALSE(fs::exists(nc));
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace clpost::test
