@@ -132,8 +132,9 @@ namespace {
 // its three peripheral operations contour a flat across the bar (tool axis 1,0,0 at x 3.9 with
 // y from -0.75 to 0.75; tool 4 along 0,1,0 at x 0.05): every point is off the line of the tool
 // axis through the centre line, work only a Y axis reaches. Each operation is one located error
-// at its first point naming the offset (its approach rapid at y 0.05: 0.0500 mm); the back-face
-// tool (0,0,-1, line 870) is the fourth. The turning between them posts.
+// at its first point naming the offset (its approach rapid at y 0.05: 0.0500 mm); the face
+// tool 5 on the -Z side (0,0,-1) is the fourth, for its CUTCOM/LEFT (line 875: without Y the
+// control's compensation does not offset an XZC path). The turning between them posts.
 TEST(MillTurnRealcam, MillTurn3xPath1WithoutYStopsAtItsYWork) {
   const std::string cl = realcam_dir() + "/catia_toussaint/MillTurn3x_PATH1.aptsource";
   if (!fs::exists(cl)) GTEST_SKIP() << cl << " not found";
@@ -160,9 +161,9 @@ TEST(MillTurnRealcam, MillTurn3xPath1WithoutYStopsAtItsYWork) {
                          "line of the tool axis (0, 1, 0)"),
               std::string::npos)
         << r.err;
-    EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:870:1: error: milling motion with live tool 5 "
-                         "(loaded at line 845): the tool axis (0, 0, -1) is neither the face's "
-                         "(0,0,1) nor radial (k 0)"),
+    EXPECT_NE(r.err.find("MillTurn3x_PATH1.aptsource:875:8: error: CUTCOM/LEFT with live tool 5: "
+                         "machine '" +
+                         m + "' has no Y axis"),
               std::string::npos)
         << r.err;
     size_t errors = 0;
