@@ -41,9 +41,11 @@ void MillViews::mill_move(const SimMillMove& m) {
   }
 }
 
-void MillViews::side_move(const Move& m, const CutState& state) {
-  if (m.kind == MoveKind::kRapid || (c_work_ && state.tool == c_tool_)) return;
-  stock_ = std::max({stock_, std::fabs(m.from.x), std::fabs(m.to.x)});
+bool MillViews::side_move(const Move& m, const CutState& state) {
+  if (m.mill || (c_work_ && state.tool == c_tool_)) return false;
+  if (m.kind != MoveKind::kRapid)
+    stock_ = std::max({stock_, std::fabs(m.from.x), std::fabs(m.to.x)});
+  return true;
 }
 
 double MillViews::unrolled(PartPoint p) {
