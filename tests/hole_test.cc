@@ -293,6 +293,32 @@ TEST(Holes, TheSheetSaysWhereALiveToolsHolesAre) {
   EXPECT_NE(face.out.find("<td>X60 C90 Z0</td>"), std::string::npos) << face.out;
 }
 
+// The sheet names what wrote each hole as its reader calls it, the cycle and its code (not the
+// machine file's template key), or the moves a fallback wrote; and the drill's diameter where
+// the CL gave it (CUTTER/ before the tool change it describes). On fanuc-0i-t a first peck of 3
+// then 5 cannot be one G83 Q: moves.
+TEST(Holes, TheSheetNamesTheCycleWrittenAndTheDrill) {
+  const std::string dir = temp_dir(), cl = dir + "/t.cl";
+  write_file(cl,
+             "FROM/0,0,20\nCUTTER/8.5\nLOADTL/1\nSPINDL/1000,RPM,CLW\n"
+             "CYCLE/DEEP,DEPTH,20,STEP,5,MMPM,100,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\n"
+             "CYCLE/DEEP2,FEDTO,20,1STPECK,3,SUBPECK,5,MMPM,100,RAPTO,2,RTRCTO,20\nGOTO/0,0,-5\n"
+             "CYCLE/OFF\nFINI\n");
+  RunResult html = run(quote(clpost_bin()) + " sheet -m fanuc-0i-t -o - " + quote(cl));
+  ASSERT_EQ(html.exit_code, 0) << html.err;
+  EXPECT_NE(html.out.find("<td>peck drilling</td><td class=\"num\">8.5</td><td>X0 Z0</td>"),
+            std::string::npos)
+      << html.out;
+  EXPECT_NE(html.out.find("<td>100 mm/min</td><td>peck drilling (G83)</td><td></td></tr>"),
+            std::string::npos)
+      << html.out;
+  EXPECT_NE(html.out.find("<td>100 mm/min</td><td>G0/G1 moves</td><td>hole_peck not used: "),
+            std::string::npos)
+      << html.out;
+  EXPECT_EQ(html.out.find("<td>hole_peck</td>"), std::string::npos) << html.out;
+  fs::remove_all(dir);
+}
+
 // Face and radial holes of one live tool in one program (tests/data/millturn-mixed-holes.apt:
 // a peck-drilled pair on the face at C0 and C90, radial holes at C0 and C-90 (GOTO/0,-40),
 // one face hole at radius 20) verify on the three live machines. On linuxcnc-lathe-c the face

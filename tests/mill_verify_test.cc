@@ -111,6 +111,37 @@ TEST(MillVerify, AYOffFailsOnHaasSt20y) {
       << r.err;
 }
 
+// haas-st-20y writes the CL's arc (CIRCLE/ and its GOTO at line 18, radius 14.1421 about the
+// centre, 270 degrees counter-clockwise from (10, -10) to (-10, -10) at C30) as G3 X-20. Y-10.
+// I-10. J10. in G17 (the posted program verifies: FaceMillingVerifiesOnTheLiveMachines). verify
+// follows an arc along its length, so an arc with its ends right but its way wrong fails at its
+// line:
+//  - G2: the short way round, 90 degrees clockwise; its first point, 5 degrees on at -50
+//    degrees, is 2 x 14.1421 x sin 2.5 = 1.2337 mm from the CL's start at -45 degrees;
+//  - the centre at (0, -5), as far from both ends (radius 11.1803): its first point at -21.605
+//    degrees is at radius 13.8263, 0.3158 inside the CL's circle (0.3140 from its chords);
+//  - the centre at (1, 0): radius 13.4536 from the start, 14.8661 to the end, 1.4124 apart.
+TEST(MillVerify, AnArcIsFollowedAlongItsLength) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"G2 X-20. Y-10. Z-1. I-10. J10.",
+       "the arc (G2 about X0.0000 (radius) Y0.0000 Z-1.0000) passes at X9.0904 (radius) Y-10.8335 "
+       "Z-1.0000 C30.0000, 1.2337 mm from the CL path at (13.6603, -3.6603, -1.0000) (the part "
+       "at C0)"},
+      {"G3 X-20. Y-10. Z-1. I-10. J5.",
+       "the arc (G3 about X0.0000 (radius) Y-5.0000 Z-1.0000) passes at X10.3949 (radius) "
+       "Y-9.1166 Z-1.0000 C30.0000, 0.3140 mm from the CL path at (13.8679, -2.7619, -1.0000) "
+       "(the part at C0)"},
+      {"G3 X-20. Y-10. Z-1. I-9. J10.",
+       "the arc (G3 about X1.0000 (radius) Y0.0000 Z-1.0000): its end is 1.4124 mm off the "
+       "circle through its start"}};
+  for (const auto& [edited, why] : cases) {
+    RunResult r = verify_edited("haas-st-20y", "G3 X-20. Y-10. Z-1. I-10. J10.", edited);
+    EXPECT_EQ(r.exit_code, 1) << edited;
+    EXPECT_NE(r.err.find(":21:1: error: milling at " + kCl + ":18: " + why), std::string::npos)
+        << edited << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace clpost::test
 

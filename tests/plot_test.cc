@@ -141,12 +141,14 @@ TEST(Plot, ABigProgramMakesASmallPicture) {
 TEST(Plot, FaceHolesAreMarksAtTheirCOnTheFaceView) {
   RunResult r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-holes.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("<circle class=\"stock\" cx=\"625\" cy=\"758\" r=\"259\""),
+  // The face view under an empty side view (the live tool's moves are all C-axis work, left to
+  // the face view): its centre 480 px lower than under the side view of those moves.
+  EXPECT_NE(r.out.find("<circle class=\"stock\" cx=\"625\" cy=\"1238\" r=\"259\""),
             std::string::npos);
-  EXPECT_NE(r.out.find("<circle class=\"hole\" cx=\"884\" cy=\"758\" r=\"4.5\"/>\n"
-                       "<circle class=\"hole\" cx=\"625\" cy=\"499\" r=\"4.5\"/>\n"
-                       "<circle class=\"hole\" cx=\"366\" cy=\"758\" r=\"4.5\"/>\n"
-                       "<circle class=\"hole\" cx=\"625\" cy=\"1017\" r=\"4.5\"/>"),
+  EXPECT_NE(r.out.find("<circle class=\"hole\" cx=\"884\" cy=\"1238\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"625\" cy=\"979\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"366\" cy=\"1238\" r=\"4.5\"/>\n"
+                       "<circle class=\"hole\" cx=\"625\" cy=\"1497\" r=\"4.5\"/>"),
             std::string::npos);
   // The three C indexes of 90 degrees at radius 30, rapids swept in 54 steps of 5 degrees:
   // 54 * 2 * 30 sin(2.5 deg) = 141.3 mm.
@@ -161,21 +163,43 @@ TEST(Plot, FaceHolesAreMarksAtTheirCOnTheFaceView) {
 // (10, -10), (10, 10), (-10, 10), (-10, -10) turned by 30 degrees are (13.6603, -3.6603),
 // (3.6603, 13.6603), (-13.6603, 3.6603), (-3.6603, -13.6603). The frame holds +-14.1421 (the
 // arc, the work's radius) * 1.1232 = +-15.8845, padded by 5 %: 34.9458 mm in 640 px, k =
-// 18.3141, left at 305 and top at 902, part (x, y) at (305 + (x + 17.4729) k, 1542 - (y +
-// 17.4729) k): (875.18, 1289.03), (692.03, 971.82), ... Its length is the CL path's: 80 of the
-// square, 270 degrees of the arc (66.6432) and the 24 of the slot, 170.6, on haas-st-20y as arcs
-// and on linuxcnc-lathe-c as the post's XZC pieces mapped back.
+// 18.3141, left at 305 and top at 918 (under the side view's note line), part (x, y) at
+// (305 + (x + 17.4729) k, 1558 - (y + 17.4729) k): (875.18, 1305.03), (692.03, 987.82), ... Its
+// length is the CL path's: 80 of the square, 270 degrees of the arc (66.6432) and the 24 of the
+// slot, 170.6, on haas-st-20y as arcs and on linuxcnc-lathe-c as the post's XZC pieces mapped back.
 TEST(Plot, FaceMillingIsDrawnInThePartFrame) {
   RunResult r = clpost("plot -m haas-st-20y tests/data/millturn-face-mill.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.18 1289.03 L692.03 971.82 L374.82 1154.97 "
-                       "L557.97 1472.18 L875.18 1289.03 "),
+  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.18 1305.03 L692.03 987.82 L374.82 1170.97 "
+                       "L557.97 1488.18 L875.18 1305.03 "),
             std::string::npos);
+  // Its G3 is not in the side view as a lathe arc (before: "1 arc (31.4 mm)" there).
+  EXPECT_NE(r.out.find(">1 move: 1 rapid (34.1 mm)</text>"), std::string::npos);
   EXPECT_NE(r.out.find(">61 moves: 2 rapid (24.2 mm), 59 feed (170.6 mm); 0 face holes"),
             std::string::npos);
   r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-mill.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find(" feed (170.6 mm); 0 face holes"), std::string::npos);
+}
+
+// The side view is the lathe's: the live tool's C-axis work (T3's 151 moves in X or Z: its XZC
+// pieces, the plunges and the slot through the centre at C fixed) is not drawn there as if it
+// were turned, but in the face view, and the note says so; what is left is the turning tool's
+// rapid from the milling's last point (radius 12, Z5) to GOTO/22,0,2: hypot(10, 3) = 10.4 mm.
+// --full leaves out the same moves.
+TEST(Plot, TheSideViewLeavesMillingToTheFaceView) {
+  for (const char* full : {"", " --full"}) {
+    RunResult r = clpost(std::string("plot -m linuxcnc-lathe-c") + full +
+                         " tests/data/millturn-face-mill.apt -o -");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(">1 move: 1 rapid (10.4 mm)</text>"), std::string::npos) << full;
+    EXPECT_NE(r.out.find(">151 moves of the C-axis work drawn in the views below, not here</text>"),
+              std::string::npos)
+        << full;
+    EXPECT_NE(r.out.find(">300 moves: 28 rapid (30.9 mm), 272 feed (170.6 mm); 0 face holes"),
+              std::string::npos)
+        << full;
+  }
 }
 
 // Radial holes (tests/data/millturn-radial-holes.apt: Z-10 C0, Z-20 C90, Z-30 C180) on the

@@ -48,22 +48,48 @@ struct Drawing {
   bool full = true;
   PathThinner thinner;
   std::unique_ptr<MillViews> mill;  // a machine with C: its face and peripheral views
+  size_t milling = 0;               // moves left to them (MillViews::side_move), unless --full
+  std::vector<bool> side_draws;     // --full with C: side_move's answer for each move, in order
   // Unless --full: no moves kept; each that goes somewhere (not the entries from an unknown
   // position, which are not drawn) streams into the thinner. With C, the moves in X, Y, Z and C
-  // stream into `mill` (not kept), and the side view's moves too (the turned stock).
+  // stream into `mill` (not kept), and the side view's moves too (the turned stock); the side
+  // view leaves out the C-axis work.
   SimOptions options() {
     SimOptions o;
     if (mill) o.on_mill_move = [this](const SimMillMove& m) { mill->mill_move(m); };
     if (full) {
-      if (mill) o.on_move = [this](const Move& m, const CutState& s) { mill->side_move(m, s); };
+      if (mill)
+        o.on_move = [this](const Move& m, const CutState& s) {
+          side_draws.push_back(mill->side_move(m, s));
+        };
       return o;
     }
     o.keep_moves = false;
     o.on_move = [this](const Move& m, const CutState& s) {
-      if (mill) mill->side_move(m, s);
-      if (!(m.from.x == m.to.x && m.from.z == m.to.z)) thinner.add(m);
+      const bool draws = !mill || mill->side_move(m, s);
+      if (m.from.x == m.to.x && m.from.z == m.to.z) return;
+      draws ? thinner.add(m) : void(++milling);
     };
     return o;
+  }
+  // --full: the kept moves the side view draws. Every move was handed to on_move in order, the
+  // entries from an unknown position (Toolpath::entries, not kept) among them before the kept
+  // move at their index.
+  void leave_out_c_work() {
+    if (side_draws.empty()) return;
+    std::vector<Move> kept;
+    size_t call = 0, entry = 0;
+    const std::vector<Move>& moves = sim.path.moves;
+    for (size_t k = 0; k < moves.size(); ++k, ++call) {
+      for (; entry < sim.path.entries.size() && sim.path.entries[entry].before == k; ++entry)
+        ++call;
+      if (call >= side_draws.size() || side_draws[call]) {
+        kept.push_back(moves[k]);
+      } else if (moves[k].from.x != moves[k].to.x || moves[k].from.z != moves[k].to.z) {
+        ++milling;  // as the thinner counts: moves in X or Z
+      }
+    }
+    sim.path.moves = std::move(kept);
   }
   // The C-axis work's views (none without C).
   MillViewsDrawn mill_views() {
@@ -194,6 +220,8 @@ std::string simplified_backplot(Drawing& d) {
   for (const ThreadSection& s : d.sections) groups.add(s);
   const std::vector<ThreadSection> drawn = groups.drawn();
   std::string note = simplified_note(path);
+  if (const std::string m = milling_note(d.milling); !m.empty())
+    note += (note.empty() ? "" : "; ") + m;
   if (drawn.size() < groups.total()) {
     std::string more = fmt::format("{} threads drawn as {} section{}", groups.total(), drawn.size(),
                                    drawn.size() == 1 ? "" : "s");
@@ -209,7 +237,8 @@ std::string simplified_backplot(Drawing& d) {
 bool render_svg(const PlotRequest& req, Drawing& d, std::string& svg, std::string& diagnostics) {
   if (req.thread <= 0 && d.full) {
     const MillViewsDrawn mill = d.mill_views();
-    svg = backplot_svg(d.sim.path, &d.sections, d.title, &mill);
+    d.leave_out_c_work();
+    svg = backplot_svg(d.sim.path, &d.sections, d.title, &mill, milling_note(d.milling));
     return true;
   }
   if (req.thread <= 0) {

@@ -5,8 +5,10 @@
 #include <filesystem>
 
 #include "cli/plot_command.h"
+#include "emitters/hole_output.h"
 #include "plot/path_thinner.h"
 #include "sheet/sheet.h"
+#include "sheet/sheet_text.h"
 #include "support/output_file.h"
 
 namespace clpost {
@@ -37,6 +39,10 @@ SheetData sheet_data(const std::string& input, const PostOutcome& r, SheetCaptur
   d.plans = std::move(capture.plans);
   d.holes = r.holes;
   d.outputs = r.outputs;
+  for (const Hole& h : d.holes) {
+    const OutputUsed* o = output_at(d.outputs, h.cl_line);
+    d.hole_outputs.push_back(o ? hole_output_text(m, h, o->name) : "-");
+  }
   for (const Diagnostic& g : r.kept)
     if (g.severity != Severity::kError) d.diagnostics.push_back(g);
   d.warnings = r.warnings;

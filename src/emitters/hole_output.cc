@@ -128,6 +128,66 @@ const TemplateSpec& hole_template(const Machine& m, const Hole& h) {
   return tmpl::kHoleBore;
 }
 
+namespace {
+
+// The cycle of hole_template(m, h), as its reader calls it.
+std::string cycle_name(const Machine& m, const Hole& h) {
+  std::string name = h.radial ? "radial " : "";
+  if (h.kind == HoleKind::kTap && (h.c || h.radial) && h.spindle == SpindleDir::kCcw)
+    name += "left-hand ";
+  if (h.kind == HoleKind::kTap && !h.c && !h.radial && m.rigid_tapping) name += "rigid ";
+  name += hole_kind_name(h.kind);
+  if (h.kind == HoleKind::kDrill && h.dwell > 0) name += " with a dwell";
+  return name;
+}
+
+// G83, G33.1, CYCLE81: a cycle's code word (a template's word is its text up to a '(').
+bool is_cycle_code(std::string_view w) {
+  std::string_view digits;
+  if (w.starts_with("CYCLE")) {
+    digits = w.substr(5);
+  } else if (w.starts_with("G")) {
+    digits = w.substr(1);
+    if (const size_t dot = digits.find('.'); dot != std::string_view::npos && dot > 0)
+      digits.remove_prefix(dot + 1);
+  } else {
+    return false;
+  }
+  return !digits.empty() &&
+         std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The cycle's code in a hole template: on its first line with the hole's {z}, the last code
+// word before it ("{feed_mode} G83 X{x} Z{z} …": G83; "G98 {feed_mode} G81 …": G81); "" when
+// none.
+std::string cycle_code(const std::vector<std::string>& lines) {
+  for (const std::string& l : lines) {
+    const size_t z = l.find("{z}");
+    if (z == std::string::npos) continue;
+    std::string code;
+    for (size_t i = 0; i < z;) {
+      const size_t end = std::min(l.find(' ', i), z);
+      const std::string_view w = std::string_view(l).substr(i, end - i);
+      if (const std::string_view head = w.substr(0, w.find('(')); is_cycle_code(head)) code = head;
+      i = end + 1;
+    }
+    return code;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string hole_output_text(const Machine& m, const Hole& h, std::string_view output) {
+  if (output == kHoleMoves) return fmt::format("{}/{} moves", m.code("rapid"), m.code("linear"));
+  const TemplateSpec& t = hole_template(m, h);
+  if (output != t.name) return std::string(output);
+  const auto lines = m.templates.find(std::string(t.name));
+  const std::string code = lines == m.templates.end() ? "" : cycle_code(lines->second);
+  const std::string name = cycle_name(m, h);
+  return code.empty() ? name : fmt::format("{} ({})", name, code);
+}
+
 std::string hole_misfit(const Machine& m, const Hole& h) {
   const TemplateSpec& t = hole_template(m, h);
   if (m.templates.count(std::string(t.name)) == 0)
@@ -230,7 +290,7 @@ class HoleCycleOutput : public CycleOutput<Hole> {
 // The hole as G0/G1/G4 moves (expand_hole): any hole, any machine.
 class HoleMovesOutput : public CycleOutput<Hole> {
  public:
-  std::string_view name() const override { return "moves"; }
+  std::string_view name() const override { return kHoleMoves; }
   Fit fit(const Hole&, const Machine&) const override { return {}; }
   bool emit(const Hole& h, NcProgram& prog, const EmitContext& ctx) override {
     return template_written(expand_hole(prog, h), prog.machine(), ctx);

@@ -18,6 +18,14 @@ namespace clpost {
 // The template that writes `h` on its machine (hole_drill, hole_peck, …).
 const TemplateSpec& hole_template(const Machine& m, const Hole& h);
 
+// The output of the holes written as G0/G1/G4 moves (OutputUsed::name).
+inline constexpr std::string_view kHoleMoves = "moves";
+
+// What wrote `h` as its reader calls it, from the name of its output (OutputUsed::name: the
+// hole's template, or kHoleMoves): the cycle and the code its template writes ("peck drilling
+// (G83)", "drilling (CYCLE81)"), or the machine's moves ("G0/G1 moves").
+std::string hole_output_text(const Machine& m, const Hole& h, std::string_view output);
+
 // Why the template cannot write `h` exactly, or "" when it can (the machine has it, and its one
 // peck word, dwell or retract say what the CL says).
 std::string hole_misfit(const Machine& m, const Hole& h);

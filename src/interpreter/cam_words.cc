@@ -117,13 +117,18 @@ void toolno_stmt(PostState& s, const Statement& st) {
     t.speed = fmt::format("{} {}", st.args[10].text, st.args[11].text);
 }
 
+void describe_diameter(PostState& s, double d) {
+  const bool unmoved = s.tool.number >= 0 && s.stats.motions == s.tool.motions_at_change;
+  (unmoved ? s.tool : s.next_tool).diameter = d;
+}
+
 void tprint_stmt(PostState& s, const Statement& st) {
   s.next_tool.text = std::string(st.text);
 }
 
 // CUTTER/d: the cutter diameter. On a lathe CATIA writes twice the nose radius (NC_CUTTER_LATHE:
 // CUTTER/2*%MFG_NOSE_RADIUS); milling cutters have more values, of which the first is the
-// diameter. Kept for TLLFT/TLRGT geometric motion.
+// diameter. Kept for TLLFT/TLRGT geometric motion, and as the tool's diameter (describe_diameter).
 void cutter_stmt(PostState& s, const Statement& st) {
   double d = 0;
   if (!number_arg(s, st, 0, "a cutter diameter", d)) return;
@@ -132,6 +137,7 @@ void cutter_stmt(PostState& s, const Statement& st) {
     return;
   }
   s.cutter_diameter = d;
+  if (d > 0) describe_diameter(s, d);
 }
 
 // SWITCH/n[,m]: the tool-tip quadrant (1..9) of the tool in use, for nose-radius compensation.

@@ -133,6 +133,50 @@ TEST(CycleTime, ProgramHeader) {
             "T0101\nG1 X20. Z-10. G94 F100.\n(done)\nM30\n%\n");
 }
 
+// A machine whose program_start writes nothing (`program_start: []`): the header is the
+// program's first lines.
+TEST(CycleTime, ProgramHeaderWithAnEmptyProgramStart) {
+  std::vector<std::string> sets = kRates;
+  sets.push_back("templates.program_header=[\"(HDR {text})\"]");
+  sets.push_back("templates.program_start=[]");
+  PostedText r = post_text("FEDRAT/100,MMPM\nFROM/10,0,5\nGOTO/10,0,-10\nFINI\n",
+                           load("generic-lathe", sets), "t.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  // 15 mm at 100 mm/min: 9 s; no tool.
+  EXPECT_EQ(r.program,
+            "(HDR machine generic-lathe, program t)\n"
+            "(HDR cycle time 0:09.0, 0 tool changes)\n"
+            "G1 X20. Z-10. G94 F100.\nM30\n%\n");
+}
+
+// A machine with a program_header and no program_start at all: load_machine refuses it (a
+// required template), but a post applied on its own (the machine_yaml_fuzzer's way) reaches the
+// post, which stops at the missing template, the header at the top of what was written. The
+// fuzzer found that the header's place was looked up in the start's lines with at(), which
+// threw out_of_range (ca2105a).
+TEST(CycleTime, ProgramHeaderWithoutProgramStart) {
+  Machine m;
+  std::string errors;
+  ASSERT_TRUE(apply_machine_yaml("bare.yaml",
+                                 "codes: {linear: G1, feed_per_min: G94}\n"
+                                 "formats: {default: {decimals: 3}}\n"
+                                 "time: {rapid_x: 6000, rapid_z: 12000, tool_change: 2}\n"
+                                 "templates:\n"
+                                 "  program_header: [\"(HDR {text})\"]\n"
+                                 "  program_end: [M30]\n",
+                                 true, m, errors))
+      << errors;
+  m.name = "bare";
+  PostedText r = post_text("FEDRAT/100,MMPM\nFROM/10,0,5\nGOTO/10,0,-10\nFINI\n", m, "t.cl");
+  EXPECT_EQ(r.diags.render_all(),
+            "t.cl: error: machine 'bare' has no template 'program_start' "
+            "(templates.program_start in its machine or post file)\n");
+  EXPECT_EQ(r.program,
+            "(HDR machine bare, program t)\n"
+            "(HDR cycle time 0:09.0, 0 tool changes)\n"
+            "G1 X20. Z-10. G94 F100.\nM30\n");
+}
+
 // Two tools, the first used twice (one line, its times summed), each described by the CL
 // (TPRINT, ICAM's PPRINT TOOL:). By hand, at 100 mm/min and 2 s a tool change:
 //   T1 line 4: 2 s + 15 mm (Z5 to Z-10) 9 s; again at line 10: 2 s + 6 mm 3.6 s  -> 16.6 s

@@ -12,9 +12,12 @@
 #include "interpreter/lathe_geometry.h"
 #include "interpreter/milling_motion.h"
 #include "interpreter/millturn.h"
+#include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
+
+using namespace point3_math;
 
 namespace {
 

@@ -379,5 +379,31 @@ TEST(HoleCycles, IcamWordsThatCannotBeWritten) {
   }
 }
 
+// Each hole carries the diameter the CL gave its tool (the setup sheet's): CUTTER/ before the
+// tool change it describes (CATIA, SolidWorks), CUTTER/ after a change before the tool moves,
+// NX's TLDATA/DRILL,MILL,d; a tool without any has none (not the last tool's), and UNITS/
+// converts what was given.
+TEST(HoleCycles, EachHoleCarriesItsToolsDiameter) {
+  const char* cl =
+      "FROM/0,0,20\nCUTTER/8.5\nLOADTL/1\nSPINDL/1000,RPM,CLW\n"        // lines 1-4
+      "CYCLE/DRILL,DEPTH,10,MMPM,100,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\n"  // line 6: 8.5
+      "LOADTL/2\nCUTTER/6\n"                                            // T2's own
+      "CYCLE/DRILL,DEPTH,10,MMPM,100,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\n"  // line 11: 6
+      "LOADTL/3\n"                                                      // none given
+      "CYCLE/DRILL,DEPTH,10,MMPM,100,CLEAR,2\nGOTO/0,0,0\nCYCLE/OFF\n"  // line 15: none
+      "TLDATA/DRILL,MILL,12.7,0,100,118,35\nLOADTL/4\nUNITS/INCHES\n"
+      "CYCLE/DRILL,DEPTH,0.5,IPM,4,CLEAR,0.1\nGOTO/0,0,0\nCYCLE/OFF\nFINI\n";  // line 21
+  PostedText r = post_text(cl, load("generic-lathe"), "t.cl");
+  ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
+  ASSERT_EQ(r.summary.holes.size(), 4u);
+  EXPECT_EQ(r.summary.holes[0].cl_line, 6u);
+  EXPECT_EQ(r.summary.holes[0].tool_diameter, 8.5);
+  EXPECT_EQ(r.summary.holes[1].tool_diameter, 6);
+  EXPECT_EQ(r.summary.holes[2].tool_diameter, std::nullopt);
+  // 12.7 mm is 0.5 in.
+  ASSERT_TRUE(r.summary.holes[3].tool_diameter);
+  EXPECT_NEAR(*r.summary.holes[3].tool_diameter, 0.5, 1e-12);
+}
+
 }  // namespace
 }  // namespace clpost

@@ -88,6 +88,7 @@ bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   h.kind = c.kind;
   h.cl_line = st.loc.line;
   h.name = fmt::format("hole at CL line {}", st.loc.line);
+  h.tool_diameter = s.tool.diameter;
   if (!s.tool.mills() && radius > 1e-4) {
     error(s, st, st.loc,
           fmt::format("CYCLE/{} {} is {} off the spindle's centre line (GOTO/{}): a hole off "

@@ -8,20 +8,13 @@
 #include <numbers>
 #include <span>
 
+#include "interpreter/point3_math.h"
+
 namespace clpost {
 
-double norm(Point3 a) {
-  return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
-}
+using namespace point3_math;
 
 namespace {
-
-Point3 sub(Point3 a, Point3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Point3 cross(Point3 a, Point3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 
 // The numbers of `args` (all of them), or nothing (reported).
 bool numbers(GeoReader& rd, std::span<const Arg> args, std::vector<double>& out) {

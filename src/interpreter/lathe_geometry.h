@@ -44,7 +44,6 @@ struct GeoReader {
   }
 };
 
-double norm(Point3 a);
 // The nested definition `a` as a 3D element; nothing (reported) when it cannot be read.
 std::optional<Geo> read_geo(GeoReader& rd, const Arg& a);
 // The definition `a` as a line or circle in the turning plane (the lathe frame found or checked

@@ -10,29 +10,16 @@
 
 #include "interpreter/lathe_geometry.h"
 #include "interpreter/milling_motion.h"
+#include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using namespace point3_math;
 
-Point3 sub(Point3 a, Point3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-double dot(Point3 a, Point3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-Point3 cross(Point3 a, Point3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Point3 scaled(Point3 a, double k) {
-  return {a.x * k, a.y * k, a.z * k};
-}
-Point3 sum(Point3 a, Point3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
+constexpr double kPi = 3.14159265358979323846;
 
 // The words after the drive surface: ON[,n,INTOF] and the check surface's index; false
 // (reported) for another condition.
@@ -54,7 +41,7 @@ bool on_cond(PostState& s, const Statement& st, size_t& check, int& nth) {
 
 // The angles (0 <= a < 2 pi) where the circle start + r0 cos a + side sin a meets the plane.
 std::vector<double> crossings(Point3 start_centre, Point3 r0, Point3 side, const Geo& plane) {
-  const double len = std::sqrt(dot(plane.v, plane.v));
+  const double len = norm(plane.v);
   const Point3 n = scaled(plane.v, 1 / len);
   const double a = dot(sub(start_centre, plane.p), n), b = dot(r0, n), c = dot(side, n);
   const double m = std::hypot(b, c);
@@ -108,15 +95,15 @@ void milling_go(PostState& s, const Statement& st) {
   if (!s.pos || !s.indirv)
     return error(s, st, st.loc,
                  fmt::format("{}/ needs a start point and INDIRV/ before it", st.major));
-  const Point3 axis = scaled(drive->v, 1 / std::sqrt(dot(drive->v, drive->v)));
+  const Point3 axis = scaled(drive->v, 1 / norm(drive->v));
   const Point3 u = sub(*s.pos, drive->p);
   const double h = dot(u, axis);
-  const Point3 r0 = sub(u, scaled(axis, h)), centre = sum(drive->p, scaled(axis, h));
-  if (std::abs(std::sqrt(dot(r0, r0)) - drive->r) > 1e-3)
+  const Point3 r0 = sub(u, scaled(axis, h)), centre = add(drive->p, scaled(axis, h));
+  if (std::abs(norm(r0) - drive->r) > 1e-3)
     return error(s, st, st.args[0].loc,
                  fmt::format("the tool is not on the drive surface: {:.6g} from its axis, its "
                              "radius {:.6g}",
-                             std::sqrt(dot(r0, r0)), drive->r));
+                             norm(r0), drive->r));
   const int sense = dot(cross(axis, r0), *s.indirv) >= 0 ? 1 : -1;
   const Point3 side = scaled(cross(axis, r0), sense);
   std::vector<double> at = crossings(centre, r0, side, *plane);
@@ -129,7 +116,7 @@ void milling_go(PostState& s, const Statement& st) {
                              "not {}",
                              at.size(), nth));
   const double t = at[nth - 1];
-  const Point3 end = sum(centre, sum(scaled(r0, std::cos(t)), scaled(side, std::sin(t))));
+  const Point3 end = add(centre, add(scaled(r0, std::cos(t)), scaled(side, std::sin(t))));
   milling_arc_to(s, st, centre, axis, sense, end);
 }
 

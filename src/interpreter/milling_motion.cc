@@ -11,10 +11,13 @@
 
 #include "interpreter/clock.h"
 #include "interpreter/millturn.h"
+#include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
 #include "laws/xzc_law.h"
 
 namespace clpost {
+
+using namespace point3_math;
 
 namespace {
 
@@ -276,27 +279,11 @@ struct MillArc {
   uint32_t line = 0;  // its CIRCLE/ or HELICAL/
 };
 
-Point3 sub(Point3 a, Point3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-double dot(Point3 a, Point3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-Point3 cross(Point3 a, Point3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Point3 along(Point3 a, double k) {
-  return {a.x * k, a.y * k, a.z * k};
-}
-Point3 add(Point3 a, Point3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-
 // The radius vector of `p` about the arc's axis, and its advance along it.
 Point3 radial_of(const MillArc& c, Point3 p, double& h) {
   const Point3 u = sub(p, c.center);
   h = dot(u, c.axis);
-  return sub(u, along(c.axis, h));
+  return sub(u, scaled(c.axis, h));
 }
 
 // Points on the arc from `from` to `to`, the chords within `tol` of it; the last is `to`. The
@@ -313,8 +300,8 @@ std::vector<Point3> arc_points(const MillArc& c, Point3 from, Point3 to, double 
   std::vector<Point3> out;
   for (int k = 1; k < n; ++k) {
     const double a = c.sense * sweep * k / n;
-    const Point3 rk = add(along(r0, std::cos(a)), along(side, std::sin(a)));
-    out.push_back(add(add(c.center, along(c.axis, h0 + (h1 - h0) * k / n)), rk));
+    const Point3 rk = add(scaled(r0, std::cos(a)), scaled(side, std::sin(a)));
+    out.push_back(add(add(c.center, scaled(c.axis, h0 + (h1 - h0) * k / n)), rk));
   }
   out.push_back(to);
   return out;
@@ -470,7 +457,7 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
     const double len =
         std::sqrt(dot({circle->ax, circle->ay, circle->az}, {circle->ax, circle->ay, circle->az}));
     const MillArc arc{{circle->cx, circle->cy, circle->cz},
-                      along({circle->ax, circle->ay, circle->az}, 1 / len),
+                      scaled({circle->ax, circle->ay, circle->az}, 1 / len),
                       1,
                       circle->loc.line};
     return mill_arc(s, st, arc, from, p, ms);
@@ -527,7 +514,7 @@ void helical_stmt(PostState& s, const Statement& st) {
   const double len = std::sqrt(dot(axis, axis));
   if (!(len > 0) || !s.pos)
     return error(s, st, st.loc, "HELICAL/ needs an axis and a start point (a GOTO before it)");
-  const Point3 a = along(axis, 1 / len);
+  const Point3 a = scaled(axis, 1 / len);
   double h = 0;
   const int sense = dot(cross(a, radial_of({c, a, 1, 0}, *s.pos, h)), dir) >= 0 ? 1 : -1;
   milling_arc_to(s, st, c, a, sense, end);

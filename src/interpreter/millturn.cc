@@ -142,6 +142,13 @@ bool milling_motion_refused(PostState& s, const Statement& st) {
 void tdata_stmt(PostState& s, const Statement& st) {
   if (!st.args.empty())
     if (auto k = kind_word(st.args[0])) s.next_tool.kind = said(st, *k, st.args[0].text);
+  // NX's TLDATA/MILL,d,… and TLDATA/DRILL,MILL,d,…: the first number is the cutter's diameter.
+  if (st.major == "TLDATA" && !st.args.empty() && (st.args[0].is("MILL") || st.args[0].is("DRILL")))
+    for (const Arg& a : st.args)
+      if (a.is_number()) {
+        if (a.number > 0 && within_limits(a.number)) describe_diameter(s, a.number);
+        break;
+      }
   skipped_stmt(s, st);
 }
 

@@ -109,6 +109,8 @@ struct ToolInfo {
                                       // compensation
   std::string feed, speed;            // its default feed and speed as written ("0.1 MMPR")
   std::optional<ToolKindWord> kind;   // what the CL said it does (none: it turns)
+  std::optional<double> diameter;     // CL units: CUTTER/d, TLDATA/MILL|DRILL,…,d
+  size_t motions_at_change = 0;       // PostStats::motions when it was loaded
   bool mills() const { return kind && kind->kind == ToolKind::kMill; }
 };
 

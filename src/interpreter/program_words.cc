@@ -24,6 +24,8 @@ void convert_units(PostState& s, LengthUnit to) {
   scale(s.thread.pitch.pitch);
   scale(s.thread.pitch.lead_change);
   if (s.tool.nose_radius) scale(*s.tool.nose_radius);
+  for (ToolInfo* t : {&s.tool, &s.next_tool})
+    if (t->diameter) scale(*t->diameter);
   scale(s.cutter_diameter);
   if (HoleCycle* h = s.hole_cycle ? &*s.hole_cycle : nullptr) {
     for (double* v : {&h->depth, &h->first_peck, &h->peck}) scale(*v);

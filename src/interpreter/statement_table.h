@@ -76,6 +76,10 @@ void cut_stmt(PostState& s, const Statement& st);
 void toolno_stmt(PostState& s, const Statement& st);
 void tprint_stmt(PostState& s, const Statement& st);
 void cutter_stmt(PostState& s, const Statement& st);
+// A cutter diameter the CL gave (CUTTER/, TLDATA/): the tool loaded when it has not moved yet,
+// else the next tool (tool data before the change it describes, as CATIA and SolidWorks write
+// it). Its holes carry it (Hole::tool_diameter).
+void describe_diameter(PostState& s, double d);
 void switch_stmt(PostState& s, const Statement& st);
 void indirv_stmt(PostState& s, const Statement& st);
 void psis_stmt(PostState& s, const Statement& st);

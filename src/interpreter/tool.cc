@@ -68,6 +68,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   s.prog.writer().number_next();
   tool_change_position(s, st);
   s.tool.number = static_cast<int>(tool);
+  s.tool.motions_at_change = s.stats.motions;
   s.tool_line = st.loc.line;
   s.hole_axis_radial = false;  // a tool axis the CL gave the last tool is not the new one's
   s.tool_axis = Point3{0, 0, 1};

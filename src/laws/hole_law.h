@@ -46,6 +46,7 @@ struct Hole {
   double lead = 0;  // taps
   double rpm = 0;   // taps and dwells (0: unknown)
   SpindleDir spindle = SpindleDir::kCw;
+  std::optional<double> tool_diameter;  // the drill's, where the CL gave it (the setup sheet)
 };
 
 // The most pecks of one hole (a peck of 1e-6 into a deep hole is refused, not written).

@@ -659,16 +659,18 @@ double backplot_scale(const Bounds& all, const Bounds& cut) {
   return frame_of(plot_bounds(all, cut, clipped)).k;
 }
 
+std::string milling_note(size_t milling) {
+  if (milling == 0) return {};
+  return fmt::format("{} move{} of the C-axis work drawn in the views below, not here", milling,
+                     milling == 1 ? "" : "s");
+}
+
 std::string backplot_svg(const Toolpath& tp, const std::vector<ThreadSection>* sections,
-                         std::string_view title, const MillViewsDrawn* mill) {
+                         std::string_view title, const MillViewsDrawn* mill,
+                         std::string_view note) {
   PathMeasure pm;
   for (const Move& m : tp.moves) pm.add(m);
-  return render({tp.moves,
-                 pm,
-                 tp.units,
-                 sections,
-                 title,
-                 {},
+  return render({tp.moves, pm, tp.units, sections, title, note,
                  mill != nullptr && mill->any() ? mill : nullptr});
 }
 

@@ -34,10 +34,13 @@ namespace clpost {
 //    face holes as marks) and the unrolled peripheral view (Z across, the arc length up, lines
 //    at C0, C90, ..., radial holes as marks), each only when there is such work; without it the
 //    document is the lathe's side view alone, as it always was.
+// The side view is the lathe's: the caller leaves a live tool's C-axis work out of it
+// (MillViews::side_move), which the face and peripheral views draw; `note` says so.
 // An empty toolpath gives a valid document with an empty grid and the words "no moves".
 std::string backplot_svg(const Toolpath& toolpath,
                          const std::vector<ThreadSection>* sections = nullptr,
-                         std::string_view title = {}, const MillViewsDrawn* mill = nullptr);
+                         std::string_view title = {}, const MillViewsDrawn* mill = nullptr,
+                         std::string_view note = {});
 
 // The same picture of a thinned path (path_thinner.h): its moves drawn, the line of move counts
 // and lengths and the frame from what every move of the program measures; `note`, when not
@@ -45,6 +48,9 @@ std::string backplot_svg(const Toolpath& toolpath,
 std::string backplot_svg(const ThinnedPath& path, const std::vector<ThreadSection>* sections,
                          std::string_view title, std::string_view note,
                          const MillViewsDrawn* mill = nullptr);
+
+// The side view's note on the `milling` moves left to the C-axis views ("" for none).
+std::string milling_note(size_t milling);
 
 // The scale (px per program unit) backplot_svg draws at, for a program whose moves cover `all`
 // and whose cutting moves cover `cut`. It only shrinks as the boxes grow.

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "laws/xzc_law.h"
+#include "simulator/mill_arc.h"
 
 namespace clpost {
 namespace {
@@ -17,48 +18,7 @@ double angle_near(double a, double near) {
 }
 
 // A machine position in X (a radius), Y, Z, C.
-struct Axes {
-  double x = 0, y = 0, z = 0, c = 0;
-};
-
-// The points along a G2/G3 move from `a` to `b` (at b's C) in steps of at most kStepDegrees, in
-// its plane (G17 X/Y, G18 Z/X, G19 Y/Z; its centre words I, J, K from its start), turning
-// positively about the plane's normal for G3 (ISO 6983), the axis along the normal linear.
-std::vector<Axes> arc_points(const SimMillMove& a, const SimMillMove& b) {
-  const auto uvw = [&](const SimMillMove& m) -> std::array<double, 3> {
-    if (b.plane == 17) return {m.x, m.y, m.z};
-    if (b.plane == 19) return {m.y, m.z, m.x};
-    return {m.z, m.x, m.y};
-  };
-  const std::array<double, 3> p = uvw(a), q = uvw(b);
-  const double cu = p[0] + (b.plane == 17 ? b.i : b.plane == 19 ? b.j : b.k);
-  const double cv = p[1] + (b.plane == 17 ? b.j : b.plane == 19 ? b.k : b.i);
-  const double r = std::hypot(p[0] - cu, p[1] - cv);
-  const double a0 = std::atan2(p[1] - cv, p[0] - cu);
-  double sweep = std::atan2(q[1] - cv, q[0] - cu) - a0;
-  const double turn = 2 * std::numbers::pi;
-  if (!(r > 0)) return {};
-  if (b.ccw) {
-    while (sweep <= 1e-12) sweep += turn;
-  } else {
-    while (sweep >= -1e-12) sweep -= turn;
-  }
-  const int n = std::max(
-      1, static_cast<int>(std::ceil(std::fabs(sweep) / (kStepDegrees * std::numbers::pi / 180))));
-  std::vector<Axes> out;
-  for (int i = 1; i <= n; ++i) {
-    const double t = static_cast<double>(i) / n, g = a0 + sweep * t;
-    const std::array<double, 3> m = {cu + r * std::cos(g), cv + r * std::sin(g),
-                                     p[2] + (q[2] - p[2]) * t};
-    if (b.plane == 17)
-      out.push_back({m[0], m[1], m[2], b.c});
-    else if (b.plane == 19)
-      out.push_back({m[2], m[0], m[1], b.c});
-    else
-      out.push_back({m[1], m[2], m[0], b.c});
-  }
-  return out;
-}
+using Axes = MillAxes;
 
 }  // namespace
 
@@ -81,9 +41,11 @@ void MillViews::mill_move(const SimMillMove& m) {
   }
 }
 
-void MillViews::side_move(const Move& m, const CutState& state) {
-  if (m.kind == MoveKind::kRapid || (c_work_ && state.tool == c_tool_)) return;
-  stock_ = std::max({stock_, std::fabs(m.from.x), std::fabs(m.to.x)});
+bool MillViews::side_move(const Move& m, const CutState& state) {
+  if (m.mill || (c_work_ && state.tool == c_tool_)) return false;
+  if (m.kind != MoveKind::kRapid)
+    stock_ = std::max({stock_, std::fabs(m.from.x), std::fabs(m.to.x)});
+  return true;
 }
 
 double MillViews::unrolled(PartPoint p) {
@@ -100,7 +62,7 @@ double MillViews::unrolled(PartPoint p) {
 void MillViews::draw(const SimMillMove& a, const SimMillMove& b) {
   const double c0 = a.c;
   const double c1 = rollover_ ? c0 + std::remainder(b.c - c0, 360.0) : b.c;
-  std::vector<Axes> steps = b.arc ? arc_points(a, b) : std::vector<Axes>{};
+  std::vector<Axes> steps = b.arc ? mill_arc_points(a, b, kStepDegrees) : std::vector<Axes>{};
   if (steps.empty()) {
     const int n = std::max(1, static_cast<int>(std::ceil(std::fabs(c1 - c0) / kStepDegrees)));
     for (int i = 1; i <= n; ++i) {

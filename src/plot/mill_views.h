@@ -54,7 +54,10 @@ class MillViews {
   // Each move in X, Y, Z, C as the simulation hands it over (SimOptions::on_mill_move).
   void mill_move(const SimMillMove& m);
   // Each move of the side view (SimOptions::on_move): the feeds of other tools turn the stock.
-  void side_move(const Move& m, const CutState& state);
+  // Whether the side view draws it: not the C-axis work of the tool that writes C, nor a
+  // milling feed (Move::mill), which are not turning and which the face and peripheral views
+  // draw.
+  bool side_move(const Move& m, const CutState& state);
   // The program's holes (Simulation::holes), at the end; then the views.
   MillViewsDrawn finish(const std::vector<SimHole>& holes, LengthUnit units);
 

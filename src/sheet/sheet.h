@@ -28,6 +28,9 @@ struct SheetData {
   CycleTime cycle_time;
   std::vector<ThreadPlan> plans;
   std::vector<Hole> holes;
+  // Per hole, in order: what wrote it as its reader calls it ("peck drilling (G83)",
+  // hole_output_text); none: the output's name.
+  std::vector<std::string> hole_outputs;
   std::vector<OutputUsed> outputs;      // what wrote each thread and hole
   std::vector<Diagnostic> diagnostics;  // the kept ones (warnings and notes)
   size_t warnings = 0;                  // all, kept or not

@@ -32,18 +32,21 @@ std::string position(const SheetData& d, const Hole& h) {
   return fmt::format("X{}{} Z{}", num_text(h.x * k), c, num_text(h.top));
 }
 
-std::string hole_row(const SheetData& d, const Hole& h) {
+std::string hole_row(const SheetData& d, size_t i) {
+  const Hole& h = d.holes[i];
   const OutputUsed* o = output_at(d.outputs, h.cl_line);
   const FeedUsed feed{h.feed, h.feed_mode};
+  const std::string output = i < d.hole_outputs.size() ? d.hole_outputs[i] : o ? o->name : "-";
   return row({{std::to_string(h.cl_line), true},
               {std::string(hole_kind_name(h.kind))},
+              {h.tool_diameter ? num_text(*h.tool_diameter) : "-", true},
               {position(d, h)},
               {num_text(std::fabs(h.bottom - h.top)), true},
               {num_text(h.r), true},
               {pecks(h), true},
               {h.dwell > 0 ? fmt::format("{} s", num_text(h.dwell)) : "-", true},
               {feed_text(feed, d.units)},
-              {o ? o->name : "-"},
+              {output},
               {o && !o->unfit.empty() ? fallback_text(*o) : ""}});
 }
 
@@ -58,10 +61,10 @@ std::string holes_section(const SheetData& d) {
       live ? "On the spindle axis and off it with a live tool (at C)" : "On the spindle axis",
       units_name(d.units));
   o += "<table class=\"holes\">\n";
-  o += head_row({"CL line", "Cycle", "Position", "Depth", "R plane", "Pecks", "Dwell", "Feed",
-                 "Output", "Fallback"});
+  o += head_row({"CL line", "Cycle", "Tool diameter", "Position", "Depth", "R plane", "Pecks",
+                 "Dwell", "Feed", "Output", "Fallback"});
   o += "<tbody>\n";
-  for (const Hole& h : d.holes) o += hole_row(d, h);
+  for (size_t i = 0; i < d.holes.size(); ++i) o += hole_row(d, i);
   return o + "</tbody>\n</table>\n</section>\n";
 }
 

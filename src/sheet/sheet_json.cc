@@ -63,11 +63,12 @@ std::string hole_json(const Hole& h) {
   return fmt::format(
       "    {{\"line\": {}, \"cycle\": {}, \"x\": {}, \"z\": {}, \"axis\": \"{}\", \"c\": {}, "
       "\"depth\": {}, \"r\": {}, \"first_peck\": {}, \"peck\": {}, \"dwell\": {}, \"feed\": {}, "
-      "\"per\": \"{}\"}}",
+      "\"per\": \"{}\", \"tool_diameter\": {}}}",
       h.cl_line, json_string(hole_kind_name(h.kind)), num(h.radial ? h.top : h.x),
       num(h.radial ? h.z : h.top), h.radial ? "x" : "z", h.c ? num(*h.c) : std::string("null"),
       num(std::fabs(h.bottom - h.top)), num(h.r), num(h.first_peck), num(h.peck), num(h.dwell),
-      num(h.feed), h.feed_mode == FeedMode::kPerRev ? "rev" : "min");
+      num(h.feed), h.feed_mode == FeedMode::kPerRev ? "rev" : "min",
+      h.tool_diameter ? num(*h.tool_diameter) : std::string("null"));
 }
 
 std::string diagnostic_json(const Diagnostic& g) {

@@ -62,7 +62,7 @@ struct SimMillMove {
   uint32_t line = 0;
   std::string line_text;
   bool rapid = false;
-  bool arc = false;            // G2/G3: checked at its end
+  bool arc = false;            // G2/G3 (simulator/mill_arc.h: its path)
   double x = 0, y = 0, z = 0;  // X a radius
   double c = 0;                // degrees, as written (0 before any C)
   bool c_known = false;        // a C word came before (or in) this block

@@ -8,15 +8,16 @@
 #include <optional>
 
 #include "laws/cut_pass.h"
+#include "simulator/mill_arc.h"
 
 namespace clpost {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kSamples = 8;
-constexpr size_t kWindow = 1 << 14;  // program moves held for CL motions not yet posted  // each
-                                     // feed move is checked at eighths, as the control moves
+constexpr int kSamples = 8;            // each feed move is checked at eighths, as the control moves
+constexpr double kArcStepDegrees = 5;  // an arc at least at its eighths, at most 5 degrees apart
+constexpr size_t kWindow = 1 << 14;    // program moves held for CL motions not yet posted
 
 // A CL motion: its points in the part frame at C0 (turned by its index), from its start.
 struct ClMill {
@@ -35,9 +36,7 @@ double distance(PartPoint a, PartPoint b) {
 }
 
 // A program position: X (a radius), Y, Z, C.
-struct Axes {
-  double x = 0, y = 0, z = 0, c = 0;
-};
+using Axes = MillAxes;
 Axes axes(const SimMillMove& m) {
   return {m.x, m.y, m.z, m.c};
 }
@@ -88,7 +87,8 @@ std::string difference(Axes a, PartPoint p, double tol) {
 struct MillStream::Impl {
   enum class Phase { kIdle, kSeek, kFollow };
   double tol = 0, shown = 0;
-  bool rollover = false;  // millturn.c_rotation: the control turns C the shortest way
+  bool rollover = false;        // millturn.c_rotation: the control turns C the shortest way
+  std::string arc_cw, arc_ccw;  // the machine's G2 and G3
   std::string plan_name;
   std::deque<ClMill> motions;                    // complete, not yet walked
   ClMill open;                                   // the motion being received
@@ -155,15 +155,39 @@ struct MillStream::Impl {
     Axes b = axes(m);
     if (rollover) b.c = a.c + std::remainder(b.c - a.c, 360.0);
     // The end first (a C off at a point is said as such), then the way there.
-    for (int i = kSamples; i >= (m.arc ? kSamples : 1); --i) {
+    const PartPoint end = nearest(mo.points, part(b));
+    if (distance(end, part(b)) > tol) return fail(&m, difference(b, end, tol));
+    if (m.arc) return follow_arc(m);
+    for (int i = kSamples - 1; i >= 1; --i) {
       const double t = static_cast<double>(i) / kSamples;
       const Axes q{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t,
                    a.c + (b.c - a.c) * t};
       const PartPoint p = nearest(mo.points, part(q));
       if (distance(p, part(q)) > tol) return fail(&m, difference(q, p, tol));
     }
+    followed(m);
+  }
+  void followed(const SimMillMove& m) {
     prev = m;
-    if (distance(part(b), mo.points.back()) <= tol) done();
+    if (distance(part(axes(m)), current().points.back()) <= tol) done();
+  }
+  // A G2/G3 along its length, as the control moves it: its end on its circle (the centre as
+  // far from both ends), then its points on the CL path, the way it turns.
+  void follow_arc(const SimMillMove& m) {
+    const std::vector<Axes> pts = mill_arc_points(*prev, m, kArcStepDegrees, kSamples);
+    const Axes o = mill_arc_centre(*prev, m);
+    const std::string arc = fmt::format("the arc ({} about X{:.4f} (radius) Y{:.4f} Z{:.4f})",
+                                        m.ccw ? arc_ccw : arc_cw, o.x, o.y, o.z);
+    if (pts.empty()) return fail(&m, arc + " starts at its centre");
+    const double off = distance(part(pts.back()), part(axes(m)));
+    if (off > tol)
+      return fail(
+          &m, fmt::format("{}: its end is {:.4f} mm off the circle through its start", arc, off));
+    for (const Axes& q : pts) {
+      const PartPoint p = nearest(current().points, part(q));
+      if (distance(p, part(q)) > tol) return fail(&m, arc + " passes " + difference(q, p, tol));
+    }
+    followed(m);
   }
   // The program ended with the walk at a motion: it is not reached.
   void ended() {
@@ -196,6 +220,7 @@ MillStream::MillStream(const Machine& m, const VerifyOptions& options)
                      m.xzc_tolerance + 0.001);
   w.tol = w.shown + 1e-9;
   w.rollover = m.c_rotation == CRotation::kRollover;
+  w.arc_cw = m.code("arc_cw"), w.arc_ccw = m.code("arc_ccw");
   w.plan_name = options.plan_name;
 }
 

@@ -275,8 +275,13 @@ class PartTurned(unittest.TestCase):
         self.assertEqual([r["Position"] for r in rows], ["X0 Z0"] * 3)
         self.assertEqual(rows[1]["Pecks"], "5")
         self.assertEqual(rows[0]["Dwell"], "0.5 s")
-        for r in rows:
-            self.assertTrue(r["Output"])
+        # What the program writes, as its reader calls it: fanuc-0i-t's hole_dwell, hole_peck
+        # and hole_tap_rigid templates (posts/fanuc-lathe.yaml: G83 P, G83 Q, M29 G84).
+        self.assertEqual([r["Output"] for r in rows],
+                         ["drilling with a dwell (G83)", "peck drilling (G83)",
+                          "rigid tapping (G84)"])
+        # The sample gives no CUTTER/ or TLDATA/.
+        self.assertEqual([r["Tool diameter"] for r in rows], ["-"] * 3)
 
     def test_json_is_the_same_data(self):
         j = json.loads(run("sheet", "-m", MACHINE, "--date", DATE, "--format", "json",
@@ -285,6 +290,7 @@ class PartTurned(unittest.TestCase):
         self.assertEqual([t["time"] for t in j["tools"]], [t[2] for t in self.check_tools])
         self.assertEqual(j["plan"], self.plan)
         self.assertEqual(len(j["holes"]), 3)
+        self.assertEqual([h["tool_diameter"] for h in j["holes"]], [None] * 3)
         self.assertEqual(j["date"], DATE)
 
     def test_source_date_epoch(self):
