@@ -86,8 +86,12 @@ TEST(MillTurnRealcam, MillTurn3xPath1PostsAndVerifiesOnHaasSt20y) {
   const std::string out = read_file(nc);
   // Line 75: around the cylinder of radius 0.6 about X from (3.92906, 0.15, 1.77946), INDIRV +Y,
   // ON the plane z 2.37946: a quarter turn, positive about +X (G3 in G19), K0.6 from the start.
+  // G19 comes at CUTCOM/LEFT (line 67), before G41: no plane change under compensation.
   // Line 84: HELICAL/ half a turn about X, X 0.00737 deeper.
-  EXPECT_NE(out.find("G19\nG3 X7.858 Y0.75 Z2.379 J0. K0.6 F300.\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("G19\nG41\nG1 X7.858 Y0.15 Z1.779 F300.\n"
+                     "G3 X7.858 Y0.75 Z2.379 J0. K0.6 F300.\n"),
+            std::string::npos)
+      << out;
   EXPECT_NE(out.find("G3 X7.832 Y-0.75 Z3. J-0.75 K0. F150.\n"), std::string::npos) << out;
   // Tool 5 (lines 870-881): C back to 0 from tool 4's C90, G17; GOTO/-0.1,0.05,-5.5 is
   // (diameter) Y0.05 Z-5.5; CUTCOM/LEFT seen from the tool on the -Z side is G42 from +Z; the
@@ -102,8 +106,11 @@ TEST(MillTurnRealcam, MillTurn3xPath1PostsAndVerifiesOnHaasSt20y) {
                      "G2 X3. Y-0.75 Z0.015 I0. J-0.75 F150.\n"),
             std::string::npos)
       << out;
+  // The program ends milling: as before a tool change, Y0 from the retract and G18, the live
+  // tool stopped; then C unclamped and disengaged before M30.
   EXPECT_NE(out.find("G2 X1.2 Y0.15 Z0.5 I0. J-0.6 F500.\nG40\nG1 X0.2 Y0.05 Z0.5 F500.\n"
-                     "G1 X0.2 Y0.05 Z0. F500.\nG0 X0.2 Y0.05 Z-5.\n(END_OP/MILL)\nM30\n"),
+                     "G1 X0.2 Y0.05 Z0. F500.\nG0 X0.2 Y0.05 Z-5.\n(END_OP/MILL)\nG0 Y0.\n"
+                     "G18\nM135\nM15\nM155\nM30\n"),
             std::string::npos)
       << out;
   // verify can fail on this operation: Y0.75 moved to Y0.76 at CL line 886.

@@ -192,6 +192,38 @@ TEST(Rs274, MillTurnFaceBoltCircle) {
   fs::remove_all(dir);
 }
 
+// A program that ends milling (face milling at C 26.5651, then FINI: src/interpreter/
+// milling_end_test.cc) on linuxcnc-lathe-c: rs274 runs it, and the live tool (spindle 1) stops
+// after the last motion and before M2, as before a tool change, not by the program end (M2's
+// own reset comes after: SET_G5X_OFFSET, then the stops of both spindles, then PROGRAM_END).
+TEST(Rs274, MillTurnEndsMillingBeforeTheProgramEnd) {
+  if (!have_rs274())
+    GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
+  const std::string dir = temp_dir(), cl = dir + "/face.cl", ngc = dir + "/face.ngc";
+  write_file(cl,
+             "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,5,2\n"
+             "FEDRAT/100,MMPM\nGOTO/10,5,-1\nGOTO/20,10,-1\nRAPID\nGOTO/20,10,2\nFINI\n");
+  RunResult post =
+      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  ASSERT_EQ(post.exit_code, 0) << post.err;
+  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
+                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const size_t last_move = r.out.rfind("STRAIGHT_TRAVERSE(22.3607, 0.0000, 2.0000");
+  ASSERT_NE(last_move, std::string::npos) << r.out;
+  const size_t stop = r.out.find("STOP_SPINDLE_TURNING(1)", last_move);
+  const size_t reset = r.out.find("SET_G5X_OFFSET", last_move);
+  const size_t end = r.out.find("PROGRAM_END()", last_move);
+  ASSERT_NE(stop, std::string::npos) << r.out;
+  ASSERT_NE(end, std::string::npos) << r.out;
+  EXPECT_LT(stop, reset) << r.out;
+  EXPECT_LT(reset, end) << r.out;
+  // Nothing moves between the last motion and the program end.
+  EXPECT_EQ(r.out.find("STRAIGHT_", last_move + 1), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
 // Radial holes of a live tool on linuxcnc-lathe-c (G19 G81, docs/millturn.md): rs274 drills each
 // along X at its Z and C. Mapped back to the part (x = X cos C, y = X sin C), the bottoms are
 // the CL's by hand: radius 40 drilled 10 deep is radius 30; hole 1 at C0 is (30, 0, -10),

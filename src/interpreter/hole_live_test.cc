@@ -51,21 +51,22 @@ TEST(LiveHoles, RadialHolesAreTimedAlongX) {
 
 // On haas-st-20y C is clamped (M14) after each index and unclamped (M15) before the next:
 // time.c_clamp 0.5 s each. The same holes as above: the first C0 clamps once (0.5 s), C90 and
-// C180 each unclamp, turn 90 degrees (0.3 s) and clamp (1 s): 3 * hole + 2 * 0.04 + 1.5 + 0.5
-// + 2 * 1.3 = 26.784 s. Without time.rapid_c the turns count nothing, and the cycle time says so.
+// C180 each unclamp, turn 90 degrees (0.3 s) and clamp (1 s), and FINI unclamps C to release it
+// (0.5 s): 3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.3 + 0.5 = 27.284 s. Without time.rapid_c the
+// turns count nothing, and the cycle time says so.
 TEST(LiveHoles, CIndexAndClampsAreTimed) {
   PostedText r = post_text(kRadial, load("haas-st-20y"), "t.cl");
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
   const double hole = 0.048 + 7.2 + 0.12;
   ASSERT_EQ(r.summary.cycle_time.tools.size(), 1u);
-  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.3,
-              1e-6);
+  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds,
+              3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.3 + 0.5, 1e-6);
   PostedText untimed = post_text(kRadial, load("haas-st-20y", {"time.rapid_c=0"}), "t.cl");
   EXPECT_NEAR(untimed.summary.cycle_time.tools[0].seconds,
-              3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.0, 1e-6);
+              3 * hole + 2 * 0.04 + 1.5 + 0.5 + 2 * 1.0 + 0.5, 1e-6);
   EXPECT_TRUE(untimed.summary.cycle_time.c_untimed);
   EXPECT_EQ(cycle_time_lines(untimed.summary.cycle_time, LengthUnit::kMm, true).back(),
-            "cycle time 0:26.2, 1 tool change; C moves not timed: no time.rapid_c");
+            "cycle time 0:26.7, 1 tool change; C moves not timed: no time.rapid_c");
 }
 
 // Haas G241 with R the R plane as a diameter (84 = 2 x 42), and Fanuc G87 with R relative to

@@ -54,7 +54,9 @@ void Interpreter::end_of_input(uint32_t last_line) {
   end_sequences(s);  // an unterminated thread is the first thing to say
   s.diags.warning(SourceLoc{last_line, 0}, {},
                   "the file ends without FINI: the program end was added");
-  finish_program(s);
+  Statement end;  // what the program end writes belongs to the file's last line
+  end.loc = SourceLoc{last_line, 0};
+  finish_program(s, end);
 }
 
 const std::string& Interpreter::partno() const {
@@ -67,7 +69,7 @@ ClPath Interpreter::take_path() {
 }
 
 void Interpreter::finish() {
-  finish_program(*state_);
+  finish_program(*state_, Statement{});
 }
 
 }  // namespace clpost

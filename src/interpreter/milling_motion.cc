@@ -308,7 +308,8 @@ std::vector<Point3> arc_points(const MillArc& c, Point3 from, Point3 to, double 
 }
 
 // The arc in the machine's plane (C turned `turn` past the index): G2/G3 with the two centre
-// words of the plane; false when its axis is along none of X, Y, Z there.
+// words of the plane; false when its axis is along none of X, Y, Z there, or its plane is not
+// the one cutter compensation is on in.
 bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn, double feed) {
   const Point3 a = machine_xyz(c.axis, turn), m0 = machine_xyz(from, turn);
   const Point3 m1 = machine_xyz(to, turn), mc = machine_xyz(c.center, turn);
@@ -316,11 +317,12 @@ bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn
   int axis = -1;
   for (int i = 0; i < 3; ++i)
     if (std::abs(std::abs(n[i]) - 1) < 1e-6) axis = i;
-  if (axis < 0) return false;
+  const int plane = axis == 2 ? 17 : axis == 1 ? 18 : 19;
+  if (axis < 0 || (s.mill.comp != CutterComp::kOff && plane != s.mill.plane)) return false;
   // G3 turns positively about the plane's normal (+Z in G17, +Y in G18, +X in G19: ISO 6983).
   const bool ccw = c.sense * n[axis] > 0;
   NcWriter& w = s.prog.writer();
-  plane_code(s, w, axis == 2 ? 17 : axis == 1 ? 18 : 19);
+  plane_code(s, w, plane);
   per_minute_code(s, w);
   w.code(s.m.code(ccw ? "arc_ccw" : "arc_cw"));
   w.word("X", diameter_factor(s.m) * m1.x).word("Y", m1.y).word("Z", m1.z);
@@ -394,8 +396,14 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
     if (!s.m.y_axis) xzc_move(s, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
     at = p;
   }
-  if (s.m.y_axis && !xyz_arc(s, c, from, to, ms.turn, ms.feed))
-    refuse(s, st, "the arc's axis is along none of the machine's X, Y, Z at this C");
+  if (!s.m.y_axis || xyz_arc(s, c, from, to, ms.turn, ms.feed)) return;
+  if (s.mill.comp != CutterComp::kOff)
+    return refuse(s, st,
+                  fmt::format("the arc is not in G{}, the plane cutter compensation (CUTCOM) is on "
+                              "in, and a control refuses a plane change under G41/G42: give "
+                              "the tool centre's path (CUTCOM/OFF)",
+                              s.mill.plane));
+  refuse(s, st, "the arc's axis is along none of the machine's X, Y, Z at this C");
 }
 
 // Without Y, a radial tool's CL point: on the line of its axis through the centre line.
@@ -531,6 +539,7 @@ void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axi
 }
 
 void end_milling(PostState& s, const Statement& st, bool c_back) {
+  if (s.mill.comp != CutterComp::kOff) s.prog.cutter_comp(CutterComp::kOff);  // before the plane
   if (s.mill.plane != 18) {
     NcWriter& w = s.prog.writer();
     if (s.mill.y != 0) w.code(s.m.code("rapid")).word("Y", 0.0).end_block();
@@ -541,6 +550,10 @@ void end_milling(PostState& s, const Statement& st, bool c_back) {
   }
   s.mill = MillState{};
   if (c_back && s.c.index && s.c.angle) c_to(s, st, *s.c.index);
+}
+
+void milling_comp_plane(PostState& s) {
+  if (s.m.y_axis) plane_code(s, s.prog.writer(), s.hole_axis_radial ? 19 : 17);
 }
 
 }  // namespace clpost

@@ -32,7 +32,7 @@ TEST(MillingMotion, XzcArcAndCentreCrossingOnFanuc) {
       << p.nc;
   EXPECT_NE(p.nc.find("G1 X20. Z-1. C90. F573.0032\nG1 X0. Z-1. G98 F100.\n"
                       "G1 X0. Z-1. C180. F100.\nG1 X0. Z-1. C270. F100.\nG1 X20. Z-1. G98 F100.\n"
-                      "M30\n"),
+                      "M72\nM75\nM30\n"),
             std::string::npos)
       << p.nc;
 }
@@ -66,7 +66,7 @@ TEST(MillingMotion, ContinuousCGoesOnRolloverCWraps) {
   EXPECT_EQ(l.errors, 0u) << l.diags;
   EXPECT_NE(l.nc.find("C360. F224.427\nG1 X20. Z-1. C362.5532 F224.427\n"), std::string::npos)
       << l.nc;
-  EXPECT_NE(l.nc.find("C720. F224.427\nM2\n"), std::string::npos) << l.nc;
+  EXPECT_NE(l.nc.find("C720. F224.427\nM5 $1\nM2\n"), std::string::npos) << l.nc;
   Posted f = post(cl, load("fanuc-0i-tf-live"));
   EXPECT_EQ(f.errors, 0u) << f.diags;
   EXPECT_NE(f.nc.find("C357.447 F573.0052\nG1 X20. Z-1. C0. F573.0051\nG1 X20. Z-1. C2.553 "),
@@ -77,13 +77,13 @@ TEST(MillingMotion, ContinuousCGoesOnRolloverCWraps) {
 
 // haas-st-20y: the face work in G17 at the C index (clamped), X a diameter, Y and Z as the
 // CL's; the arc (counter-clockwise about +Z) is G3 with I and J from its start; Y0 and G18 before
-// the tool change.
+// the tool change and at the program end (milling_end_test.cc).
 TEST(MillingMotion, FaceMillingInXyzOnHaasSt20y) {
   Posted p = post(kQuarterAndSlot, load("haas-st-20y"));
   EXPECT_EQ(p.errors, 0u) << p.diags;
   EXPECT_NE(p.nc.find("M154\nM133 P2000\nG0 C0.\nM14\nG17\nG0 X20. Y0. Z2.\n"
                       "G98 G1 X20. Y0. Z-1. F100.\nG3 X0. Y10. Z-1. I-10. J0. F100.\n"
-                      "G1 X0. Y-10. Z-1. F100.\nM30\n"),
+                      "G1 X0. Y-10. Z-1. F100.\nG0 Y0.\nG18\nM135\nM15\nM155\nM30\n"),
             std::string::npos)
       << p.nc;
   Posted q = post(std::string(kQuarterAndSlot)

@@ -90,10 +90,17 @@ bool millturn_tool_change(PostState& s, const Statement& st, int tool,
     s.mill_motion_reported = true;  // its motions are not reported again
     return false;
   }
-  if (s.tool.mills()) end_milling(s, st, false);
-  if (s.tool.mills()) stop_live(s, st);
+  end_milling_section(s, st, false);
   if (mills) hold_main_spindle(s, st);
   return true;
+}
+
+void end_milling_section(PostState& s, const Statement& st, bool release) {
+  if (s.tool.mills()) {
+    end_milling(s, st, false);
+    stop_live(s, st);
+  }
+  if (release) release_c(s);
 }
 
 void millturn_after_tool_change(PostState& s, const Statement& st) {

@@ -18,6 +18,12 @@ std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st,
 // without live tools.
 bool millturn_tool_change(PostState& s, const Statement& st, int tool,
                           const std::optional<ToolKindWord>& kind, SourceLoc at);
+// The end of a live tool's work, the same before a tool change and at the program end: cutter
+// compensation off, Y back to 0 (a rapid from where the CL left the tool) and the lathe plane
+// (end_milling), the live tool stopped. With `release` (the program end) C is unclamped and
+// disengaged too, whatever the tool; across a tool change C stays engaged for a next milling
+// tool, until the main spindle turns again (release_c).
+void end_milling_section(PostState& s, const Statement& st, bool release);
 // After the tool change block: a milling tool engages C.
 void millturn_after_tool_change(PostState& s, const Statement& st);
 // Before the main spindle turns: C is unclamped and disengaged.

@@ -187,7 +187,8 @@ TEST(MillTurn, CStepsTakeTheClsDirectionElseTheShortestWay) {
   EXPECT_EQ(c_steps(cont, 10.0, 30, true, -1), V{-20});
 }
 
-// CLW decreases C by default (millturn.c_clw); ROTATE/ (NX) reads as ROTABL/.
+// CLW decreases C by default (millturn.c_clw); ROTATE/ (NX) reads as ROTABL/. At FINI C is
+// unclamped and disengaged (M15, M155).
 TEST(MillTurn, RotablDirectionsAndRotate) {
   Machine m = haas_live();
   Posted p = post(
@@ -197,7 +198,7 @@ TEST(MillTurn, RotablDirectionsAndRotate) {
   EXPECT_EQ(p.errors, 0u) << p.diags;
   EXPECT_EQ(p.nc,
             "%\nO00001\nG18 G21 G40 G97\nT0303\nM154\nG0 C0.\nM14\nM15\nG0 C225.\nG0 C90.\nM14\n"
-            "M15\nG0 C120.\nM14\nM30\n%\n");
+            "M15\nG0 C120.\nM14\nM15\nM155\nM30\n%\n");
 }
 
 // Without a C axis and without an axis word, ROTABL stays the comment it was (CATIA with ICAM
@@ -290,9 +291,10 @@ TEST(MillTurn, FaceHolesOnHaasSt20y) {
 // The CL's own C clamp (ICAM CLAMP/ON|OFF|AUTO,CAXIS, NX-to-APT CLAMP/CAXIS,ON|OFF) on
 // haas-st-20y (M14 clamp, M15 unclamp): OFF unclamps and C stays unclamped after the next index
 // (C180 without M14); ON clamps; the NX form unclamps; AUTO clamps again and gives the clamping
-// back to the post (C0 unclamped, indexed, clamped). Each of the 9 clamps and unclamps takes
-// time.c_clamp (0.5 s); C90 (the first, from an unknown angle) is not timed, C180, C270 and C0
-// turn 90 degrees each at 18000 per minute (0.9 s in all); the tool change 1.5 s: 6.9 s.
+// back to the post (C0 unclamped, indexed, clamped). Each of the 9 clamps and unclamps, and the
+// unclamp at FINI, takes time.c_clamp (0.5 s); C90 (the first, from an unknown angle) is not
+// timed, C180, C270 and C0 turn 90 degrees each at 18000 per minute (0.9 s in all); the tool
+// change 1.5 s: 7.4 s.
 TEST(MillTurn, TheClsOwnCClampOnHaas) {
   constexpr const char* kClamp =
       "LOADTL/3,MILL\nSPINDL/1000,RPM,CLW\nROTABL/90,CAXIS\nCLAMP/OFF,CAXIS\n"
@@ -301,12 +303,12 @@ TEST(MillTurn, TheClsOwnCClampOnHaas) {
   Posted p = post(kClamp, load("haas-st-20y"));
   EXPECT_EQ(p.errors, 0u) << p.diags;
   EXPECT_NE(p.nc.find("G0 C90.\nM14\nM15\nG0 C180.\nM14\nM15\nG0 C270.\nM14\nM15\nM14\n"
-                      "M15\nG0 C0.\nM14\nM135\n"),
+                      "M15\nG0 C0.\nM14\nM135\nM15\nM155\nM30\n"),
             std::string::npos)
       << p.nc;
   PostedText r = post_text(kClamp, load("haas-st-20y"), "t.cl");
   ASSERT_EQ(r.summary.cycle_time.tools.size(), 1u);
-  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 9 * 0.5 + 0.9 + 1.5, 1e-6);
+  EXPECT_NEAR(r.summary.cycle_time.tools[0].seconds, 10 * 0.5 + 0.9 + 1.5, 1e-6);
 }
 
 // CLAMP/…,CAXIS on a machine without C, with ICAM's axis position (not read), before C is

@@ -95,6 +95,9 @@ struct MillState {
   double y = 0;               // Y as last written (output units)
   bool inverse_time = false;  // codes.inverse_time in force
   bool per_minute = false;    // codes.feed_per_min written for this tool's milling
+  // The live tool's G41/G42 in force (CUTCOM): the plane does not change under it, and G40 is
+  // written before the plane goes back (end_milling).
+  CutterComp comp = CutterComp::kOff;
 };
 
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number

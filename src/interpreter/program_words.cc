@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "interpreter/clock.h"
+#include "interpreter/milling_motion.h"
+#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -177,6 +179,11 @@ void cutcom_stmt(PostState& s, const Statement& st) {
                              a.text, s.tool.number, s.m.name));
   }
   ensure_started(s);
+  if (s.tool.mills()) {
+    // The plane first: a control refuses a plane change under G41/G42 (docs/millturn.md).
+    if (c != CutterComp::kOff) milling_comp_plane(s);
+    s.mill.comp = c;
+  }
   s.prog.cutter_comp(face_tool_from_minus_z(s) ? opposite_side(s, st, c) : c);
 }
 
@@ -189,11 +196,12 @@ void end_stmt(PostState&, const Statement&) {
   // APT's END (end of a tape section) asks nothing of a lathe program.
 }
 
-void finish_program(PostState& s) {
+void finish_program(PostState& s, const Statement& at) {
   if (s.ended) return;
   end_sequences(s);
   ensure_started(s);
-  end_nc_lines(s);  // the program end is no tool's
+  end_milling_section(s, at, true);  // as before a tool change, and C released
+  end_nc_lines(s);                   // the program end is no tool's
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
   const NcWriter& w = s.prog.writer();
@@ -210,8 +218,8 @@ void finish_program(PostState& s) {
   s.ended = true;
 }
 
-void fini_stmt(PostState& s, const Statement&) {
-  finish_program(s);
+void fini_stmt(PostState& s, const Statement& st) {
+  finish_program(s, st);
 }
 
 void multax_stmt(PostState& s, const Statement& st) {

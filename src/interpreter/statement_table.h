@@ -117,9 +117,10 @@ bool sequence_accepts(PostState& s, const Statement& st);
 // The input ends: a single-pass thread is cut, an open THREAD/ON or COUPLE/ON is an error.
 void end_sequences(PostState& s);
 
-// FINI or the end of input: a single-pass thread is cut, open sequences reported, the program
-// end written (once).
-void finish_program(PostState& s);
+// FINI or the end of input (`at`: the FINI, or an empty statement at the file's last line): a
+// single-pass thread is cut, open sequences reported, a live tool's milling ended
+// (end_milling_section), the program end written (once).
+void finish_program(PostState& s, const Statement& at);
 
 // The ordinary move to `p` (motion.cc): rapid, feed or the arc of a CIRCLE/ before it.
 void move_to(PostState& s, const Statement& st, Point3 p);
