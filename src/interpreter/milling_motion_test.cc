@@ -300,7 +300,7 @@ TEST(MillingMotion, PeripheralSlotGrooveAndHelixWithoutY) {
                       "G1 X15.95436 Z-10.25 C182.4952 F233.1023\n"
                       "G1 X15.93912 Z-10.5 C185. F233.1023\n"
                       "G1 X15.95436 Z-10.75 C187.5048 F233.1023\n"
-                      "G1 X16. Z-11. C190. F233.1023\nG1 X30. Z-11. G94 F100.\nM2\n"),
+                      "G1 X16. Z-11. C190. F233.1023\nG1 X30. Z-11. G94 F100.\nG18\nM5 $1\nM2\n"),
             std::string::npos)
       << l.nc;
   size_t groove = 0;
@@ -382,7 +382,7 @@ TEST(MillingMotion, PeripheralWithoutYRefusesWhatNeedsY) {
   EXPECT_EQ(xz.errors, 0u) << xz.diags;
   EXPECT_EQ(xz.nc.find("G93"), std::string::npos) << xz.nc;
   EXPECT_NE(xz.nc.find("G19\nG1 X11.98289 Z-0.13053 G94 F150.\n"), std::string::npos) << xz.nc;
-  EXPECT_NE(xz.nc.find("X10. Z-1.\nM2\n"), std::string::npos) << xz.nc;
+  EXPECT_NE(xz.nc.find("X10. Z-1.\nG18\nM5 $1\nM2\n"), std::string::npos) << xz.nc;
 }
 
 }  // namespace
