@@ -139,6 +139,7 @@ class NcProgram {
   void axes(LathePoint p, bool force_both);
 
   void feed_words();
+  void spindle_mode_written(bool css);
   double x_out(double r) const { return diameter_factor(m_) * r; }
 
   const Machine& m_;
@@ -164,6 +165,7 @@ class NcProgram {
   FeedMode feed_mode_ = FeedMode::kPerMinute;
   std::optional<WrittenNumber> written_feed_;
   std::optional<FeedMode> written_feed_mode_;
+  bool css_on_ = false;  // the control's group 15 is at constant surface speed (Control)
 };
 
 }  // namespace clpost
