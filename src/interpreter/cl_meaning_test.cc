@@ -343,6 +343,13 @@ TEST(ClMeaning, SinumerikWritesTheFeedTypeWithTheSpindleMode) {
   // Feed per revolution throughout: G96 and G97 keep it, F is not written again.
   expect_lines("sinumerik-840d", cl("GOTO/20,0,5\nSPINDL/200,SMM\nGOTO/15,0,-5\n"),
                "G1 X40 Z5 G95 F0.2\nLIMS=4000\nG96 S200 M3\nX30 Z-5\n");
+  // A hole cycle's and CYCLE96's feed under constant surface speed: G96, not G95 (which ended
+  // it before the cycle).
+  const std::string cycles =
+      cl("SPINDL/200,SMM\nGOTO/20,0,5\nGOTO/0,0,3\nCYCLE/DRILL,DEPTH,5,MMPR,0.05,CLEAR,2\n"
+         "GOTO/0,0,0\nCYCLE/OFF\nGOTO/20,0,5\nCYCLE/UNDCUT,DIAM,20,AT,-10,FORM,A\n");
+  expect_lines("sinumerik-840d", cycles, "G17 G96 F0.05\nCYCLE81(3, 2, 0, -5)\n");
+  expect_lines("sinumerik-840d", cycles, "G96 F0.2\nCYCLE96(20, -10, \"A\")\n");
 }
 
 }  // namespace

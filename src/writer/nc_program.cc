@@ -204,13 +204,16 @@ void NcProgram::axes(LathePoint p, bool force_both) {
   at_machine_position_ = false;
 }
 
+std::string NcProgram::feed_mode_code(FeedMode mode) const {
+  const bool per_rev = mode == FeedMode::kPerRev;
+  if (css_on_)
+    return std::string(per_rev ? m_.control->css_feed_per_rev : m_.control->css_feed_per_min);
+  return m_.code(per_rev ? "feed_per_rev" : "feed_per_min");
+}
+
 void NcProgram::feed_words() {
   if (!written_feed_mode_ || *written_feed_mode_ != feed_mode_) {
-    const bool per_rev = feed_mode_ == FeedMode::kPerRev;
-    if (css_on_)
-      w_.code(std::string(per_rev ? m_.control->css_feed_per_rev : m_.control->css_feed_per_min));
-    else
-      w_.code(m_.code(per_rev ? "feed_per_rev" : "feed_per_min"));
+    w_.code(feed_mode_code(feed_mode_));
     written_feed_mode_ = feed_mode_;
     written_feed_.reset();
   }

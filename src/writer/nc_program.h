@@ -64,6 +64,10 @@ class NcProgram {
   [[nodiscard]] TemplateWrite end(std::string_view program_name);
 
   [[nodiscard]] TemplateWrite tool_change(int tool, int offset, std::string_view name);
+  // The code that sets feed mode `mode`: codes.feed_per_min or feed_per_rev, or under constant
+  // surface speed on a control whose feed type and spindle mode are one G group its codes that
+  // keep it (Control::css_feed_per_min, css_feed_per_rev: SINUMERIK's G961, G96).
+  std::string feed_mode_code(FeedMode mode) const;
   [[nodiscard]] TemplateWrite spindle_rpm(double rpm, SpindleDir dir);
   [[nodiscard]] TemplateWrite spindle_css(double speed, double max_rpm, SpindleDir dir);
   [[nodiscard]] TemplateWrite spindle_stop();
