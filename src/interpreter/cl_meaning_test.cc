@@ -350,6 +350,11 @@ TEST(ClMeaning, SinumerikWritesTheFeedTypeWithTheSpindleMode) {
          "GOTO/0,0,0\nCYCLE/OFF\nGOTO/20,0,5\nCYCLE/UNDCUT,DIAM,20,AT,-10,FORM,A\n");
   expect_lines("sinumerik-840d", cycles, "G17 G96 F0.05\nCYCLE81(3, 2, 0, -5)\n");
   expect_lines("sinumerik-840d", cycles, "G96 F0.2\nCYCLE96(20, -10, \"A\")\n");
+  // A machine without limits.max_rpm: the speed is its own limit (before: an error, "template
+  // 'spindle_rpm' needs {max_rpm}").
+  const Posted p = post(cl("GOTO/20,0,5\n"), load("sinumerik-840d", {"limits.max_rpm=0"}));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G97 S500 LIMS=500 M3\n"), std::string::npos) << p.nc;
 }
 
 }  // namespace

@@ -108,7 +108,8 @@ const std::string& direction(const Machine& m, SpindleDir dir) {
 TemplateWrite NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
   TemplateFill<tmpl::kSpindleRpm> a;
   a.text<"rpm">(number_text(rpm, m_.format_for("S"))).text<"direction">(direction(m_, dir));
-  if (m_.max_rpm > 0) a.text<"max_rpm">(number_text(m_.max_rpm, m_.format_for("S")));
+  // Without a machine limit, the speed itself: no lower limit given before holds it down.
+  a.text<"max_rpm">(number_text(m_.max_rpm > 0 ? m_.max_rpm : rpm, m_.format_for("S")));
   TemplateWrite r = write_lines(w_, m_, a);
   if (r) spindle_mode_written(false);
   return r;
