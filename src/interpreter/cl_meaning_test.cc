@@ -34,7 +34,7 @@ TEST(ClMeaning, UnitsKeepTheFeedAndPitchAlreadyGiven) {
       cl("PITCH/1.5,MMPR\nGOTO/15,0,5\nUNITS/INCHES\nTHREAD/TURN\nGOTO/0.4,0,0.2\n"
          "GOTO/0.4,0,-1\n");
   expect_lines("linuxcnc-lathe", a, "G20\nX0.8 Z0.2 F0.007874\nG33 Z-1. K0.05905512\n");
-  expect_lines("sinumerik-840d", a, "G70\nX0.8 Z0.2 F0.007874\n");
+  expect_lines("sinumerik-840d", a, "G700\nX0.8 Z0.2 F0.007874\n");
 }
 
 // HEIDENHAIN DIN reads a whole program in one unit, its PROGRAM HEAD's UNIT or else control
