@@ -14,10 +14,9 @@
 #   --oracle: the oracle's differential test (tests/oracle/, docs/cl-meaning.md) on fresh seeds
 #     for SECONDS (default 60) on each control in turn: random lathe programs posted on
 #     linuxcnc-lathe and run through LinuxCNC's rs274, and posted on fanuc-0i-t, haas-st,
-#     heidenhain-pilot and nct-2000t and read by the oracle's readers of their documented
-#     meanings, with block delete off and on, every event compared with the model of what the CL
-#     means. Builds build/ (Release, the tests'
-#     build) rather than build-fuzz/; prints for each control the count, the classes of
+#     heidenhain-pilot, nct-2000t and sinumerik-840d and read by the oracle's readers of their
+#     documented meanings, with block delete off and on, every event compared with the model of
+#     what the CL means. Builds build/ (Release, the tests' build) rather than build-fuzz/; prints for each control the count, the classes of
 #     difference with their first seed, the refusals, and the first program that differs in full
 #     (any other: build/tests/oracle_run --control C --seed N). Exit status 1 when one differs.
 #
@@ -37,7 +36,7 @@ if [ "${1:-}" = --oracle ]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build "$build" -j "$(nproc)" --target oracle_run
   status=0
-  for control in linuxcnc fanuc haas heidenhain nct; do
+  for control in linuxcnc fanuc haas heidenhain nct sinumerik; do
     echo "== oracle on $control: fresh seeds for $seconds s"
     "$build/tests/oracle_run" --control "$control" --seconds "$seconds" || status=1
   done

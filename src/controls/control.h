@@ -63,6 +63,15 @@ struct Control {
   // the PROGRAM HEAD's UNIT, else control parameter 1): a UNITS/ other than the machine's
   // `units` is an error at the CL line (interpreter/program_words.cc).
   bool one_unit_per_program = false;
+  // Its feed type and its spindle mode are one G group (SINUMERIK's group 15: G96 is feed per
+  // revolution at constant cutting speed, G97 feed per revolution at a constant speed, G94 and
+  // G95 end constant cutting speed, and a change of feed type deletes F): the codes that set feed
+  // per minute and per revolution while constant cutting speed stays on. Where they are given,
+  // the writer writes them under constant surface speed in place of codes.feed_per_min and
+  // feed_per_rev, and after a spindle template (G96, G97: feed per revolution) it writes the feed
+  // mode and F again at the next feed that is not per revolution. Empty: the feed mode codes
+  // leave the spindle alone.
+  std::string_view css_feed_per_min = {}, css_feed_per_rev = {};
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

@@ -55,8 +55,7 @@ TemplateWrite write_radial_cycle(NcProgram& prog, const Hole& h, const TemplateS
   v.set_text(radial_field("dwell"), prog.num("dwell", h.dwell));
   v.set_whole(radial_field("dwell_ms", FieldKind::kWhole), std::llround(h.dwell * 1000));
   v.set_text(radial_field("feed"), prog.num("F", h.feed));
-  v.set_text(radial_field("feed_mode"),
-             m.code(h.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+  v.set_text(radial_field("feed_mode"), prog.feed_mode_code(h.feed_mode));
   v.set_text(radial_field("lead"), prog.num("F", h.lead));
   v.set_text(radial_field("rpm"), prog.num("S", h.rpm));
   return prog.write_template(v);
@@ -64,7 +63,6 @@ TemplateWrite write_radial_cycle(NcProgram& prog, const Hole& h, const TemplateS
 
 TemplateWrite write_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t) {
   if (h.radial) return write_radial_cycle(prog, h, t);
-  const Machine& m = prog.machine();
   TemplateValues v(t);
   v.set_text(field("x"), prog.num("X", h.x * diameter_factor(prog.machine())));
   v.set_text(field("z"), prog.num("Z", h.bottom));
@@ -78,8 +76,7 @@ TemplateWrite write_cycle(NcProgram& prog, const Hole& h, const TemplateSpec& t)
   v.set_text(field("dwell"), prog.num("dwell", h.dwell));
   v.set_whole(field("dwell_ms", FieldKind::kWhole), std::llround(h.dwell * 1000));
   v.set_text(field("feed"), prog.num("F", h.feed));
-  v.set_text(field("feed_mode"),
-             m.code(h.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+  v.set_text(field("feed_mode"), prog.feed_mode_code(h.feed_mode));
   v.set_text(field("lead"), prog.num("F", h.lead));
   v.set_text(field("rpm"), prog.num("S", h.rpm));
   return prog.write_template(v);

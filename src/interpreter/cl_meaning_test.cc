@@ -34,7 +34,7 @@ TEST(ClMeaning, UnitsKeepTheFeedAndPitchAlreadyGiven) {
       cl("PITCH/1.5,MMPR\nGOTO/15,0,5\nUNITS/INCHES\nTHREAD/TURN\nGOTO/0.4,0,0.2\n"
          "GOTO/0.4,0,-1\n");
   expect_lines("linuxcnc-lathe", a, "G20\nX0.8 Z0.2 F0.007874\nG33 Z-1. K0.05905512\n");
-  expect_lines("sinumerik-840d", a, "G70\nX0.8 Z0.2 F0.007874\n");
+  expect_lines("sinumerik-840d", a, "G700\nX0.8 Z0.2 F0.007874\n");
 }
 
 // HEIDENHAIN DIN reads a whole program in one unit, its PROGRAM HEAD's UNIT or else control
@@ -300,7 +300,8 @@ TEST(ClMeaning, InchOutputHasTheControlsLeastIncrement) {
   const std::string in = cl("GOTO/10,0,5\nUNITS/INCHES\nGOTO/1.23456,0,-0.54321\n");
   expect_lines("fanuc-0i-t", in, "G20\nX2.4691 Z-0.5432 F0.007874\n");
   expect_lines("haas-st", in, "G20\nX2.4691 Z-0.5432 F0.0079\n");
-  expect_lines("sinumerik-840d", in, "G70\nX2.4691 Z-0.5432 F0.007874\n");
+  // SINUMERIK: G700, whose F is read in inches too (G70's F is in the basic system, MD10240).
+  expect_lines("sinumerik-840d", in, "G700\nX2.4691 Z-0.5432 F0.007874\n");
   expect_lines("generic-lathe", in, "X2.4691 Z-0.5432 F0.007874\n");
   expect_lines("nct-2000t", in, "X2.4691 Z-0.5432 F0.007874\n");
   expect_lines("linuxcnc-lathe", in, "G20\nX2.46912 Z-0.54321 F0.007874\n");
@@ -314,6 +315,46 @@ TEST(ClMeaning, InchOutputHasTheControlsLeastIncrement) {
                cl("UNITS/INCHES\nGOTO/1,0,0\nCIRCLE/0.1234,0,0,0,1,0,0.8766\nGOTO/0.1234,0,"
                   "-0.8766\n"),
                "G3 X0.2468 Z-0.8766 I-0.8766 K0.\n");
+}
+
+}  // namespace
+}  // namespace clpost
+
+namespace clpost {
+namespace {
+
+// SINUMERIK's feed type and spindle mode are one G group (group 15): G96 is feed per revolution
+// at constant cutting speed, G97 feed per revolution at a constant speed, G94/G95 end constant
+// cutting speed, and a change of feed type deletes F; LIMS limits G97's speed too (the SINUMERIK
+// Programming Manual Fundamentals, "Constant cutting speed"; controls/sinumerik). The oracle's
+// reader of SINUMERIK programs (tests/oracle/sinumerik_reader.h) found each. Before:
+// "G96 S200 M3" then "X30 Z-5" (G96 had made the feed 100 mm/rev with F deleted: alarm 10860),
+// "G94 F100" under G96 (constant cutting speed ended), "G97 S900 M3" at LIMS=2500's limit, and
+// then "X24 Z-8" at feed per revolution.
+TEST(ClMeaning, SinumerikWritesTheFeedTypeWithTheSpindleMode) {
+  const std::string in =
+      "UNITS/MM\nLOADTL/1\nFEDRAT/100,MMPM\nSPINDL/800,RPM,CLW\nGOTO/20,0,5\n"
+      "SPINDL/200,SMM,MAXRPM,2500\nGOTO/15,0,-5\nSPINDL/900,RPM\nGOTO/12,0,-8\n"
+      "FEDRAT/0.1,MMPR\nGOTO/10,0,-9\nSPINDL/150,SMM\nFEDRAT/120,MMPM\nGOTO/9,0,-10\nFINI\n";
+  expect_lines("sinumerik-840d", in,
+               "G97 S800 LIMS=4000 M3\nG1 X40 Z5 G94 F100\nLIMS=2500\nG96 S200 M3\n"
+               "X30 Z-5 G961 F100\nG97 S900 LIMS=4000 M3\nX24 Z-8 G94 F100\nX20 Z-9 G95 F0.1\n"
+               "LIMS=2500\nG96 S150 M3\nX18 Z-10 G961 F120\n");
+  // Feed per revolution throughout: G96 and G97 keep it, F is not written again.
+  expect_lines("sinumerik-840d", cl("GOTO/20,0,5\nSPINDL/200,SMM\nGOTO/15,0,-5\n"),
+               "G1 X40 Z5 G95 F0.2\nLIMS=4000\nG96 S200 M3\nX30 Z-5\n");
+  // A hole cycle's and CYCLE96's feed under constant surface speed: G96, not G95 (which ended
+  // it before the cycle).
+  const std::string cycles =
+      cl("SPINDL/200,SMM\nGOTO/20,0,5\nGOTO/0,0,3\nCYCLE/DRILL,DEPTH,5,MMPR,0.05,CLEAR,2\n"
+         "GOTO/0,0,0\nCYCLE/OFF\nGOTO/20,0,5\nCYCLE/UNDCUT,DIAM,20,AT,-10,FORM,A\n");
+  expect_lines("sinumerik-840d", cycles, "G17 G96 F0.05\nCYCLE81(3, 2, 0, -5)\n");
+  expect_lines("sinumerik-840d", cycles, "G96 F0.2\nCYCLE96(20, -10, \"A\")\n");
+  // A machine without limits.max_rpm: the speed is its own limit (before: an error, "template
+  // 'spindle_rpm' needs {max_rpm}").
+  const Posted p = post(cl("GOTO/20,0,5\n"), load("sinumerik-840d", {"limits.max_rpm=0"}));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G97 S500 LIMS=500 M3\n"), std::string::npos) << p.nc;
 }
 
 }  // namespace

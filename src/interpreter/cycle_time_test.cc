@@ -218,7 +218,7 @@ TEST(CycleTime, HeaderOnSinumerikInItsCommentStyle) {
   ASSERT_EQ(r.diags.error_count(), 0u) << r.diags.render_all();
   // `;` comments keep their case, their parentheses and '%'; unnumbered like every `;` line.
   const std::string expected =
-      "N10 G18 G71 G40 G90 DIAMON\n"
+      "N10 G18 G710 G40 G90 DIAMON\n"
       "; machine sinumerik-840d, program SHAFT 7\n"
       "; T1 offset 1, OD TURN (R0.8) 50%, first at CL line 4, 0:16.6\n"
       "; T2 offset 2, GROOVE 3MM, first at CL line 8, 0:08.0\n"

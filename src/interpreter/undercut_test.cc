@@ -72,7 +72,7 @@ TEST(Undercut, Cycle96OnSinumerik) {
   // The feed in force is written before the cycle (it cuts at the feed programmed before it);
   // the cycle returns to its starting point, so the next move writes both axes.
   EXPECT_EQ(p.nc,
-            "G18 G71 G40 G90 DIAMON\n"
+            "G18 G710 G40 G90 DIAMON\n"
             "T3 D3\n"
             "G0 X30 Z5\n"
             "; thread undercut M42 form A (external, normal) at Z60\n"

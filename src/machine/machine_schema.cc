@@ -271,7 +271,7 @@ const FormatKeySpec kFormatKeys[] = {
      "`12.` rather than `12` for whole numbers"},
     {"leading_zero", kBool, &NumberFormat::leading_zero, "`0.5` rather than `.5`"},
     {"inch_decimals", kInt, &NumberFormat::inch_decimals,
-     "digits after the point in an inch program (G20/G70); default: for X, Z, I, K, R, U and W "
+     "digits after the point in an inch program (G20/G700); default: for X, Z, I, K, R, U and W "
      "the control's least input increment in inch where it is finer than `decimals` (0.0001 in: "
      "4 on Fanuc, Haas, SINUMERIK and HEIDENHAIN), else `decimals`",
      0, 9, "see its meaning"},
@@ -286,8 +286,8 @@ constexpr NameSpec kEarlierCodes[] = {
     {"arc_cw", "clockwise arc (G2)", true},
     {"arc_ccw", "counter-clockwise arc (G3)", true},
     {"thread", "synchronized (thread) move (G33, G32)", true},
-    {"metric", "millimetre input (G21, G71): the start template's {units_code}", true},
-    {"inch", "inch input (G20, G70)", true},
+    {"metric", "millimetre input (G21, G710): the start template's {units_code}", true},
+    {"inch", "inch input (G20, G700)", true},
     {"spindle_cw", "spindle clockwise (M3): the spindle templates' {direction}", true},
     {"spindle_ccw", "spindle counter-clockwise (M4)", true},
     {"feed_per_min", "feed per minute (G94, G98)"},

@@ -117,7 +117,11 @@ inline constexpr TemplateField kToolChangeFields[] = {
     {"offset", kWhole, "offset number (LOADTL ADJUST/OSETNO, else the tool number)"},
     {"tool_name", kText, "tool name (empty)"}};
 inline constexpr TemplateField kSpindleRpmFields[] = {
-    {"rpm", kText, "speed, format S"}, {"direction", kText, "codes.spindle_cw or spindle_ccw"}};
+    {"rpm", kText, "speed, format S"},
+    {"direction", kText, "codes.spindle_cw or spindle_ccw"},
+    {"max_rpm", kText,
+     "the machine's speed limit (limits.max_rpm; without one, the speed), format S: where a "
+     "limit given for constant surface speed also limits a speed (SINUMERIK's LIMS under G97)"}};
 inline constexpr TemplateField kSpindleCssFields[] = {
     {"speed", kText, "surface speed, format S"},
     {"max_rpm", kText, "speed limit (MAXRPM, limits.max_rpm), format S"},

@@ -76,7 +76,7 @@ TEST(ControlSim, ArcsTakeTheirCentreFromIAndKAsRadii) {
 
 TEST(ControlSim, SiemensLeadKStartAngleSfAndInch) {
   SimRun r = run(shipped("sinumerik-840d"),
-                 "N10 G18 G70 G40 G90 DIAMON\nN20 G0 X1 Z0.2\nN30 G33 Z-1 K0.0625 SF=180\n");
+                 "N10 G18 G700 G40 G90 DIAMON\nN20 G0 X1 Z0.2\nN30 G33 Z-1 K0.0625 SF=180\n");
   ASSERT_TRUE(r.ok) << r.diagnostics;
   EXPECT_EQ(r.sim.units, LengthUnit::kInch);
   ASSERT_EQ(r.sim.cuts.size(), 1u);
@@ -133,7 +133,7 @@ TEST(ControlSim, FanucG76TwoBlocksExpandedWithTheLaw) {
 TEST(ControlSim, SiemensCycle99ArgumentsByTheTemplatesFieldOrder) {
   // VARI 300103: constant cross-section, depth TDEP root(i / NRC).
   SimRun r = run(shipped("sinumerik-840d"),
-                 "N10 G18 G71 G40 G90 DIAMON\nN20 G0 X18.598 Z2\n"
+                 "N10 G18 G710 G40 G90 DIAMON\nN20 G0 X18.598 Z2\n"
                  "N30 CYCLE99(2, 16, -20, 16, 0, 0, 0.92, 0, 0, 0, 6, 0, 1.5, 300103, 0, 1.299, 0, "
                  "0, 0, 0, 0, 0, 1, \"\", \"\", \"\", 0)\n");
   ASSERT_TRUE(r.ok) << r.diagnostics;
@@ -245,7 +245,7 @@ namespace {
 // and running out at 45 degrees over 10; then the idle pass at 0.92.
 TEST(ControlSim, SiemensCycle98TheSeedsExample) {
   SimRun r = run(shipped("sinumerik-840d"),
-                 "N10 G18 G71 G40 G90 DIAMON\nN20 G0 X70 Z15\n"
+                 "N10 G18 G710 G40 G90 DIAMON\nN20 G0 X70 Z15\n"
                  "N30 CYCLE98(0, 30, -30, 30, -60, 36, -80, 50, 10, 10, 0.92, , , , 5, 1, 2, 2, "
                  "2, 3, 1,)\n");
   ASSERT_TRUE(r.ok) << r.diagnostics;
@@ -273,7 +273,7 @@ TEST(ControlSim, SiemensCycle98TheSeedsExample) {
 TEST(ControlSim, SiemensCycle98WithOneLeadPerSegmentIsNotExpanded) {
   // The seed's call as printed: PP1 1.5, PP2 2, PP3 2.
   SimRun r = run(shipped("sinumerik-840d"),
-                 "N10 G18 G71 G40 G90 DIAMON\nN20 G0 X70 Z15\n"
+                 "N10 G18 G710 G40 G90 DIAMON\nN20 G0 X70 Z15\n"
                  "N30 CYCLE98(0, 30, -30, 30, -60, 36, -80, 50, 10, 10, 0.92, , , , 5, 1, 1.5, 2, "
                  "2, 3, 1,)\n");
   EXPECT_FALSE(r.ok);

@@ -145,8 +145,8 @@ void learn_letters(ModalWords& w) {
     w.letters |= bit;
     w.longer = w.longer || bit == 0;
   };
-  for (const Code* c :
-       {&w.per_min, &w.per_rev, &w.cw, &w.ccw, &w.stop, &w.rpm_mode, &w.css_mode, &w.limit_code})
+  for (const Code* c : {&w.per_min, &w.per_rev, &w.css_per_min, &w.css_per_rev, &w.cw, &w.ccw,
+                        &w.stop, &w.rpm_mode, &w.css_mode, &w.limit_code})
     add(c->address);
   for (const Code& c : w.tool_codes) add(c.address);
   for (const std::string* a :
@@ -160,6 +160,10 @@ ModalWords modal_words(const Machine& m) {
   ModalWords w;
   w.per_min = parse_code(m.code("feed_per_min"));
   w.per_rev = parse_code(m.code("feed_per_rev"));
+  if (m.control != nullptr && !m.control->css_feed_per_rev.empty()) {
+    w.css_per_min = parse_code(m.control->css_feed_per_min);
+    w.css_per_rev = parse_code(m.control->css_feed_per_rev);
+  }
   w.readback.feed_mode = !w.per_min.empty() && !w.per_rev.empty();
   learn_spindle(m, w);
   learn_tool(m, w);
@@ -171,6 +175,11 @@ void read_modal_words(State& s, const NcBlock& b, const ModalWords& w) {
   if (!w.longer && (b.letters & w.letters) == 0) return;  // most blocks: X and Z alone
   if (has_code(b, w.per_min)) s.cut.per_rev = 0;
   if (has_code(b, w.per_rev)) s.cut.per_rev = 1;
+  if (!w.css_per_min.empty()) {
+    if (has_code(b, w.per_min) || has_code(b, w.per_rev)) s.cut.css = false;
+    if (has_code(b, w.css_per_min)) s.cut.per_rev = 0, s.cut.css = true;
+    if (has_code(b, w.css_per_rev)) s.cut.per_rev = 1;
+  }
   if (!w.tool_address.empty())
     if (const NcWord* t = b.find(w.tool_address); t != nullptr && t->has_value()) {
       const bool all = std::all_of(w.tool_codes.begin(), w.tool_codes.end(),

@@ -53,11 +53,15 @@ TEST(ModalWords, FanucToolWordSplitsByWidthAndG50SetsTheLimit) {
 TEST(ModalWords, SiemensToolAndOffsetWordsAndLims) {
   const std::vector<CutState> s =
       move_states("sinumerik-840d",
-                  "T4 D7\nLIMS=3200\nG96 S150 M3\nG0 X30 Z2\nG1 Z-5 G95 F0.2\nG97 S900 M3\n"
-                  "G1 X32 G94 F120\n");
-  ASSERT_EQ(s.size(), 3u);
+                  "T4 D7\nLIMS=3200\nG96 S150 M3\nG0 X30 Z2\nG1 Z-5 F0.2\nG97 S900 M3\n"
+                  "G1 X32 G94 F120\nG96 S150\nX34 G961 F120\nX36 G94\n");
+  ASSERT_EQ(s.size(), 5u);
+  // G96 is feed per revolution at constant cutting speed (SINUMERIK's group 15).
   EXPECT_EQ(s[1], state(0.2, 1, SpindleRun::kCw, true, 150, 3200, 4, 7));
   EXPECT_EQ(s[2], state(120, 0, SpindleRun::kCw, false, 900, 3200, 4, 7));
+  // G961 per minute at constant cutting speed; G94 ends constant cutting speed.
+  EXPECT_EQ(s[3], state(120, 0, SpindleRun::kCw, true, 150, 3200, 4, 7));
+  EXPECT_EQ(s[4].css, false);
 }
 
 TEST(ModalWords, LinuxcncChangesToolsOnlyWithM6AndReadsG96D) {

@@ -64,6 +64,9 @@ std::vector<TemplateToken> template_tokens(const Machine& m, std::string_view li
 // feed-mode and spindle codes and the words of its tool and spindle templates.
 struct ModalWords {
   Code per_min, per_rev, cw, ccw, stop;
+  // The control's feed types at constant surface speed (Control::css_feed_per_min: G961, G96);
+  // where given, per_min and per_rev end constant surface speed.
+  Code css_per_min, css_per_rev;
   Code rpm_mode, css_mode;                 // the first codes of the speed lines (G97, G96)
   std::string rpm_address, css_address;    // the words of {rpm} and {speed} ("S")
   Code limit_code;                         // a CSS limit block's code (G50), if it needs one

@@ -108,7 +108,23 @@ const std::string& direction(const Machine& m, SpindleDir dir) {
 TemplateWrite NcProgram::spindle_rpm(double rpm, SpindleDir dir) {
   TemplateFill<tmpl::kSpindleRpm> a;
   a.text<"rpm">(number_text(rpm, m_.format_for("S"))).text<"direction">(direction(m_, dir));
-  return write_lines(w_, m_, a);
+  // Without a machine limit, the speed itself: no lower limit given before holds it down.
+  a.text<"max_rpm">(number_text(m_.max_rpm > 0 ? m_.max_rpm : rpm, m_.format_for("S")));
+  TemplateWrite r = write_lines(w_, m_, a);
+  if (r) spindle_mode_written(false);
+  return r;
+}
+
+// On a control whose feed type and spindle mode are one G group (Control::css_feed_per_min):
+// the spindle template's code (G96, G97) set feed per revolution, deleting F where the feed type
+// was another: the next feed writes its mode (and F) again, with the constant surface speed codes
+// while it is on.
+void NcProgram::spindle_mode_written(bool css) {
+  if (m_.control == nullptr || m_.control->css_feed_per_rev.empty()) return;
+  css_on_ = css;
+  if (!written_feed_mode_) return;
+  if (*written_feed_mode_ != FeedMode::kPerRev) written_feed_.reset();
+  written_feed_mode_ = FeedMode::kPerRev;
 }
 
 TemplateWrite NcProgram::spindle_css(double speed, double max_rpm, SpindleDir dir) {
@@ -116,7 +132,9 @@ TemplateWrite NcProgram::spindle_css(double speed, double max_rpm, SpindleDir di
   a.text<"speed">(number_text(speed, m_.format_for("S")))
       .text<"max_rpm">(number_text(max_rpm, m_.format_for("S")))
       .text<"direction">(direction(m_, dir));
-  return write_lines(w_, m_, a);
+  TemplateWrite r = write_lines(w_, m_, a);
+  if (r) spindle_mode_written(true);
+  return r;
 }
 
 TemplateWrite NcProgram::spindle_stop() {
@@ -187,9 +205,16 @@ void NcProgram::axes(LathePoint p, bool force_both) {
   at_machine_position_ = false;
 }
 
+std::string NcProgram::feed_mode_code(FeedMode mode) const {
+  const bool per_rev = mode == FeedMode::kPerRev;
+  if (css_on_)
+    return std::string(per_rev ? m_.control->css_feed_per_rev : m_.control->css_feed_per_min);
+  return m_.code(per_rev ? "feed_per_rev" : "feed_per_min");
+}
+
 void NcProgram::feed_words() {
   if (!written_feed_mode_ || *written_feed_mode_ != feed_mode_) {
-    w_.code(m_.code(feed_mode_ == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"));
+    w_.code(feed_mode_code(feed_mode_));
     written_feed_mode_ = feed_mode_;
     written_feed_.reset();
   }

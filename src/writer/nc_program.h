@@ -64,6 +64,10 @@ class NcProgram {
   [[nodiscard]] TemplateWrite end(std::string_view program_name);
 
   [[nodiscard]] TemplateWrite tool_change(int tool, int offset, std::string_view name);
+  // The code that sets feed mode `mode`: codes.feed_per_min or feed_per_rev, or under constant
+  // surface speed on a control whose feed type and spindle mode are one G group its codes that
+  // keep it (Control::css_feed_per_min, css_feed_per_rev: SINUMERIK's G961, G96).
+  std::string feed_mode_code(FeedMode mode) const;
   [[nodiscard]] TemplateWrite spindle_rpm(double rpm, SpindleDir dir);
   [[nodiscard]] TemplateWrite spindle_css(double speed, double max_rpm, SpindleDir dir);
   [[nodiscard]] TemplateWrite spindle_stop();
@@ -139,6 +143,7 @@ class NcProgram {
   void axes(LathePoint p, bool force_both);
 
   void feed_words();
+  void spindle_mode_written(bool css);
   double x_out(double r) const { return diameter_factor(m_) * r; }
 
   const Machine& m_;
@@ -164,6 +169,7 @@ class NcProgram {
   FeedMode feed_mode_ = FeedMode::kPerMinute;
   std::optional<WrittenNumber> written_feed_;
   std::optional<FeedMode> written_feed_mode_;
+  bool css_on_ = false;  // the control's group 15 is at constant surface speed (Control)
 };
 
 }  // namespace clpost

@@ -20,6 +20,7 @@
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
 #include "model.h"
+#include "sinumerik_reader.h"
 
 namespace oracle {
 
@@ -112,8 +113,8 @@ bool rs274_installed() {
 }
 
 bool control_named(const std::string& name, Control& c) {
-  for (Control k :
-       {Control::kLinuxcnc, Control::kFanuc, Control::kHaas, Control::kHeidenhain, Control::kNct})
+  for (Control k : {Control::kLinuxcnc, Control::kFanuc, Control::kHaas, Control::kHeidenhain,
+                    Control::kNct, Control::kSinumerik})
     if (name == control_name(k)) return c = k, true;
   return false;
 }
@@ -130,6 +131,8 @@ const char* control_name(Control c) {
       return "heidenhain";
     case Control::kNct:
       return "nct";
+    case Control::kSinumerik:
+      return "sinumerik";
   }
   return "?";
 }
@@ -146,6 +149,8 @@ const char* machine_of(Control c) {
       return "heidenhain-pilot";
     case Control::kNct:
       return "nct-2000t";
+    case Control::kSinumerik:
+      return "sinumerik-840d";
   }
   return "?";
 }
@@ -163,7 +168,7 @@ bool Differential::init(const std::string& source_dir, std::string& error, Contr
   if (!clpost::load_machine(name, {source_dir}, {}, machine_, error)) return false;
   // Fanuc, Haas and NCT: IS-B, 0.001 mm and 0.0001 in; HEIDENHAIN: 1 µm, 0.0001 in
   // (docs/cl-meaning.md, "Inch output"; NCT 99M manual, "Specification and Value Range of
-  // Coordinate Data").
+  // Coordinate Data"); SINUMERIK: what sinumerik-840d writes, 0.001 mm and 0.0001 in.
   if (control != Control::kLinuxcnc) resolution_ = {0.001, 0.0001};
   table_ = source_dir + "/tests/oracle/data/offsets.tbl";
   std::string templ = (std::filesystem::temp_directory_path() / "clpost-oracle-XXXXXX").string();
@@ -192,6 +197,8 @@ Differential::Run Differential::run_reader(const ProgramResult& r, bool block_de
   // HEIDENHAIN: the program's unit is control parameter 1, the machine's (heidenhain_reader.h).
   const ControlRun o = control_ == Control::kHeidenhain
                            ? heidenhain_events(r.nc, block_delete, machine_.default_units == "in")
+                       : control_ == Control::kSinumerik
+                           ? sinumerik_events(r.nc, block_delete)
                            : fanuc_events(r.nc, dialect_of(control_), block_delete);
   const std::string stop =
       o.error.empty() ? "" : std::string(control_name(control_)) + " error: " + o.error;

@@ -3,8 +3,8 @@
 // the library, post_text()), run with block delete off and — when the program has a block to
 // delete — on, and the run's events compared with the model's. LinuxCNC's programs run through
 // its own interpreter (rs274); Fanuc's, Haas's and NCT's through the oracle's reader of their
-// documented meanings (fanuc_reader.h), HEIDENHAIN DIN's through heidenhain_reader.h. The only
-// place where the oracle touches clpost.
+// documented meanings (fanuc_reader.h), HEIDENHAIN DIN's through heidenhain_reader.h, SINUMERIK's
+// through sinumerik_reader.h. The only place where the oracle touches clpost.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -18,11 +18,11 @@
 namespace oracle {
 
 // The controls the oracle runs programs on, and the machine each posts for.
-enum class Control { kLinuxcnc, kFanuc, kHaas, kHeidenhain, kNct };
-// "linuxcnc", "fanuc", "haas", "heidenhain", "nct"
+enum class Control { kLinuxcnc, kFanuc, kHaas, kHeidenhain, kNct, kSinumerik };
+// "linuxcnc", "fanuc", "haas", "heidenhain", "nct", "sinumerik"
 bool control_named(const std::string& name, Control& c);
 const char* control_name(Control c);
-// linuxcnc-lathe, fanuc-0i-t, haas-st, heidenhain-pilot, nct-2000t
+// linuxcnc-lathe, fanuc-0i-t, haas-st, heidenhain-pilot, nct-2000t, sinumerik-840d
 const char* machine_of(Control c);
 Dialect dialect_of(Control c);  // the Fanuc reader's dialect (kFanuc where it does not read)
 

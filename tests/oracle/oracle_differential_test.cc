@@ -1,8 +1,9 @@
 // The seeded sets CI runs: 300 generated programs (seeds 1…300) posted on linuxcnc-lathe and run
 // through rs274, 2000 (seeds 1…2000) posted on fanuc-0i-t, haas-st and nct-2000t (its programs
 // with PITCH/…,TPI too) and read by the oracle's reader of their documented meanings
-// (fanuc_reader.h), and 5000 posted on heidenhain-pilot and read by heidenhain_reader.h, each
-// with block delete off and on, every event compared with the model's.
+// (fanuc_reader.h), 5000 posted on heidenhain-pilot and read by heidenhain_reader.h, and 2000 on
+// sinumerik-840d read by sinumerik_reader.h, each with block delete off and on, every event
+// compared with the model's.
 // It fails with the count of programs that differ, one line per class of difference, and the
 // first program of each class in full (reproduce one with `build/tests/oracle_run --seed N`;
 // longer runs on fresh seeds: `scripts/fuzz.sh --oracle SECONDS`).
@@ -78,6 +79,10 @@ TEST(OracleDifferential, SeededProgramsMatchTheHeidenhainReader) {
 
 TEST(OracleDifferential, SeededProgramsMatchTheNctReader) {
   expect_matches(Control::kNct);
+}
+
+TEST(OracleDifferential, SeededProgramsMatchTheSinumerikReader) {
+  expect_matches(Control::kSinumerik);
 }
 
 // The oracle sees a wrong program: the model's events against rs274's for a program that cuts

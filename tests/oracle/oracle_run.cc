@@ -2,14 +2,16 @@
 //   oracle_run --seed N               one program: its CL, NC, events and first difference
 //   oracle_run --seconds S [--from N] fresh seeds from N (default: the clock) for S seconds
 //   oracle_run --count C [--from N]   C programs from seed N (default 1)
-//   oracle_run --control fanuc|haas|heidenhain|nct --read P.nc   a program's events as the
+//   oracle_run --control fanuc|haas|heidenhain|nct|sinumerik --read P.nc   a program's events as
+//   the
 //                                     oracle's reader reads them (block delete off), or where it
 //                                     stops (heidenhain: read in mm, control parameter 1)
 //   … --machine M                     another shipped machine of the control (fanuc-0i-tf-live,
 //                                     haas-st-20y)
-//   … --control linuxcnc|fanuc|haas|heidenhain|nct   the control (default linuxcnc): linuxcnc-lathe
-//                                     run by rs274, fanuc-0i-t, haas-st, heidenhain-pilot or
-//                                     nct-2000t read by the oracle's reader
+//   … --control linuxcnc|fanuc|haas|heidenhain|nct|sinumerik   the control (default linuxcnc):
+//                                     linuxcnc-lathe run by rs274, fanuc-0i-t, haas-st,
+//                                     heidenhain-pilot, nct-2000t or sinumerik-840d read by the
+//                                     oracle's reader
 // Prints the count, the classes of difference with their first seed and the first program that
 // differs in full; exit status 1 when any program differs, 2 on a usage error.
 #include <chrono>
@@ -20,13 +22,14 @@
 #include "differential.h"
 #include "fanuc_reader.h"
 #include "heidenhain_reader.h"
+#include "sinumerik_reader.h"
 
 namespace {
 
 int usage() {
   std::fprintf(stderr,
                "usage: oracle_run --seed N | --seconds S [--from N] | --count C [--from N]"
-               " [--control linuxcnc|fanuc|haas|heidenhain|nct] [--machine M]\n");
+               " [--control linuxcnc|fanuc|haas|heidenhain|nct|sinumerik] [--machine M]\n");
   return 2;
 }
 
@@ -53,6 +56,8 @@ int read(oracle::Control control, const std::string& path) {
   std::fclose(f);
   const oracle::ControlRun r = control == oracle::Control::kHeidenhain
                                    ? oracle::heidenhain_events(text, false, false)
+                               : control == oracle::Control::kSinumerik
+                                   ? oracle::sinumerik_events(text, false)
                                    : oracle::fanuc_events(text, oracle::dialect_of(control), false);
   for (const oracle::Event& e : r.events) std::printf("%s\n", oracle::describe(e).c_str());
   if (r.error.empty()) return 0;

@@ -34,10 +34,7 @@ bool Cycle96Emitter::emit(const Undercut& u, NcProgram& prog, const EmitContext&
   prog.comment(fmt::format("thread undercut M{} form {} at Z{}", num_text(u.diam),
                            form_name(u.form), num_text(u.at)));
   // CYCLE96 moves at the feed programmed before it: make sure it is written.
-  prog.writer()
-      .code(m.code(u.feed_mode == FeedMode::kPerRev ? "feed_per_rev" : "feed_per_min"))
-      .word("F", u.feed)
-      .end_block();
+  prog.writer().code(prog.feed_mode_code(u.feed_mode)).word("F", u.feed).end_block();
   TemplateFill<tmpl::kCycle96> args;
   args.text<"diath">(prog.num("X", u.diam))
       .text<"axsa">(prog.num("Z", u.at))
