@@ -176,6 +176,19 @@ TEST(Plot, FaceMillingIsDrawnInThePartFrame) {
   r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-mill.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find(" feed (170.6 mm); 0 face holes"), std::string::npos);
+  // In G112 polar interpolation (X and Y in the plane at C0): the same square (0.02 px off: the
+  // chords' ends, rounded to 3 decimals, make the largest radius 14.143), the same length, the
+  // 270-degree arc as 126 chords of 2.15 degrees (within 0.0025 at radius 14.142): 126 + 4
+  // sides + the slot's one line across the face (the plunges do not move in this view).
+  r = clpost(
+      "plot -m haas-st-20y --set millturn.polar_interpolation=true "
+      "tests/data/millturn-face-mill.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.16 1289.03 L692.03 971.84 L374.84 1154.97 "
+                       "L557.97 1472.16 L875.16 1289.03 "),
+            std::string::npos);
+  EXPECT_NE(r.out.find(">132 moves: 1 rapid (24.2 mm), 131 feed (170.6 mm); 0 face holes"),
+            std::string::npos);
 }
 
 // Radial holes (tests/data/millturn-radial-holes.apt: Z-10 C0, Z-20 C90, Z-30 C180) on the

@@ -91,10 +91,13 @@ struct CAxisState {
 // Face milling written so far (milling_motion.cc): the G17 plane and Y of a machine with Y, and
 // the inverse-time feed mode of XZC moves, as last written.
 struct MillState {
-  int plane = 18;             // the plane in force: 17 (plane_face), 19 (plane_side), 18
-  double y = 0;               // Y as last written (output units)
-  bool inverse_time = false;  // codes.inverse_time in force
-  bool per_minute = false;    // codes.feed_per_min written for this tool's milling
+  int plane = 18;                   // the plane in force: 17 (plane_face), 19 (plane_side), 18
+  double y = 0;                     // Y as last written (output units)
+  bool inverse_time = false;        // codes.inverse_time in force
+  bool per_minute = false;          // codes.feed_per_min written for this tool's milling
+  bool polar = false;               // in polar interpolation (codes.polar_on written)
+  double polar_x = 0, polar_y = 0;  // there: the tool in the face plane at C0 (a radius)
+  bool comp = false;  // a live tool's CUTCOM/LEFT or RIGHT in force (kept by end_milling)
 };
 
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number

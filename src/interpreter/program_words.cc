@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/clock.h"
+#include "interpreter/milling_polar.h"
 #include "interpreter/statement_table.h"
 
 namespace clpost {
@@ -175,6 +176,7 @@ void cutcom_stmt(PostState& s, const Statement& st) {
                              a.text, s.tool.number, s.m.name));
   }
   ensure_started(s);
+  if (s.tool.mills()) s.mill.comp = c != CutterComp::kOff;
   s.prog.cutter_comp(face_tool_from_minus_z(s) ? opposite_side(s, st, c) : c);
 }
 
@@ -191,6 +193,7 @@ void finish_program(PostState& s) {
   if (s.ended) return;
   end_sequences(s);
   ensure_started(s);
+  polar_exit(s);    // polar interpolation off before the end
   end_nc_lines(s);  // the program end is no tool's
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
