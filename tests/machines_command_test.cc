@@ -45,12 +45,13 @@ TEST(MachinesShow, EveryKeyWithWhereItCameFrom) {
         "templates.linuxcnc_g76: [\"G76 P{p} Z{z} I{i} J{j} K{k} R{r} Q{q} H{h}\"] # " + post +
             ":68"})
     EXPECT_TRUE(has_line(lines, l)) << l << "\n" << r.out;
-  // The heading, 73 keys (millturn.face_holes and xzc_tolerance, xzc_feed,
-  // polar_interpolation, time.rapid_c and time.c_clamp among them), 12 formats (linuxcnc.yaml:
+  // The heading, 77 keys (millturn.face_holes and xzc_tolerance, xzc_feed,
+  // polar_interpolation, polar_address, polar_x, polar_rapid_feed, polar_arcs, time.rapid_c and
+  // time.c_clamp among them), 12 formats (linuxcnc.yaml:
   // default X Z I K F S dwell g76_lead g76_depth g76_angle g76_taper) of 6 keys, 21 codes
   // (live_spindle_cw/ccw among them) and 18 templates (9, 6 hole cycles, auxfun, prefun and
   // program_header).
-  EXPECT_EQ(lines.size(), 1u + 73 + 12 * 6 + 21 + 18);
+  EXPECT_EQ(lines.size(), 1u + 77 + 12 * 6 + 21 + 18);
 }
 
 TEST(MachinesShow, WithoutOriginAndAnUnknownMachine) {

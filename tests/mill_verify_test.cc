@@ -190,6 +190,37 @@ TEST(MillVerify, TheStreamSaysWhatTheWholeSays) {
   EXPECT_EQ(ok.error_count(), 0u);
 }
 
+// Polar interpolation on haas-st-20y (millturn.polar_interpolation=true: G112, X and Y in the
+// face plane at C0): the sample verifies, and the square's corner (-10, 10) at index 30, which
+// is (-13.6603, 3.6603) in the plane, written (-13.66, 3.76) fails: off by (0.0003, 0.0997) from
+// the corner, 0.0863 mm across the side it ends (along (-0.8660, -0.5): 0.0997 x 0.8660 -
+// 0.0003 x 0.5), the nearest point of the side 0.0501 back from the corner, (-13.6169, 3.6853).
+TEST(MillVerify, PolarInterpolationVerifiesAndAYOffFails) {
+  const std::string dir = temp_dir(), nc = dir + "/p.nc";
+  const std::string set = " --set millturn.polar_interpolation=true";
+  RunResult p = run(quote(clpost_bin()) + " -m haas-st-20y" + set + " --verify -o " + quote(nc) +
+                    " " + quote(kCl));
+  EXPECT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_NE(p.err.find("ok: every CL point reached in order and every feed move on the CL path"),
+            std::string::npos)
+      << p.err;
+  std::string text = read_file(nc);
+  const std::string from = "G1 X-13.66 Y3.66 Z-1. F200.";
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, from.size(), "G1 X-13.66 Y3.76 Z-1. F200.");
+  std::ofstream(nc, std::ios::binary) << text;
+  RunResult r = run(quote(clpost_bin()) + " verify -m haas-st-20y" + set + " " + quote(nc) +
+                    " --cl " + quote(kCl));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("error: milling at " + kCl +
+                       ":14: at X-13.6600 (radius) Y3.7600 Z-1.0000 C0.0000, 0.0863 mm from the "
+                       "CL path at (-13.6169, 3.6853, -1.0000) (the part at C0)"),
+            std::string::npos)
+      << r.err;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace clpost::test
 

@@ -180,6 +180,19 @@ TEST(Plot, FaceMillingIsDrawnInThePartFrame) {
   r = clpost("plot -m linuxcnc-lathe-c tests/data/millturn-face-mill.apt -o -");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find(" feed (170.6 mm); 0 face holes"), std::string::npos);
+  // In G112 polar interpolation (X and Y in the plane at C0): the same square (0.02 px off: the
+  // chords' ends, rounded to 3 decimals, make the largest radius 14.143), the same length, the
+  // 270-degree arc as 126 chords of 2.15 degrees (within 0.0025 at radius 14.142): 126 + 4
+  // sides + the slot's one line across the face (the plunges do not move in this view).
+  r = clpost(
+      "plot -m haas-st-20y --set millturn.polar_interpolation=true "
+      "tests/data/millturn-face-mill.apt -o -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("<path class=\"feed\" d=\"M875.16 1305.03 L692.03 987.84 L374.84 1170.97 "
+                       "L557.97 1488.16 L875.16 1305.03 "),
+            std::string::npos);
+  EXPECT_NE(r.out.find(">132 moves: 1 rapid (24.2 mm), 131 feed (170.6 mm); 0 face holes"),
+            std::string::npos);
 }
 
 // The side view is the lathe's: the live tool's C-axis work (T3's 151 moves in X or Z: its XZC

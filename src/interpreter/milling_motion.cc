@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "interpreter/clock.h"
+#include "interpreter/milling_polar.h"
 #include "interpreter/millturn.h"
 #include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
@@ -40,14 +41,15 @@ void refuse(PostState& s, const Statement& st, const std::string& why) {
 // What the machine and the CL must say for the motion to be written; false (reported).
 bool can_mill(PostState& s, const Statement& st) {
   if (s.mill_motion_reported) return false;
-  if (s.m.polar_interpolation) {
-    refuse(s, st,
-           fmt::format("machine '{}' asks for polar or cylindrical interpolation "
-                       "(millturn.polar_interpolation: true), which clpost does not write yet; "
-                       "false writes the face milling in X Y Z or X Z C computed by the post",
-                       s.m.name));
-    return false;
-  }
+  if (polar_motion(s))
+    if (const std::string missing = polar_missing(s.m); !missing.empty()) {
+      refuse(s, st,
+             fmt::format("machine '{}' asks for polar interpolation "
+                         "(millturn.polar_interpolation: true), and {}; false writes the face "
+                         "milling in X Y Z or X Z C computed by the post",
+                         s.m.name, missing));
+      return false;
+    }
   if (s.m.cl_axial != ClAxis::kZ || !s.m.c_axis) {
     refuse(s, st,
            fmt::format("milling is read with CL Z the spindle axis (cl.axial_axis: z) on a "
@@ -373,6 +375,23 @@ bool xzc_arc_reached(PostState& s, const Statement& st, const MillArc& c,
                                   c.line, c.axis.x, c.axis.y, c.axis.z, worst.x, worst.y, worst.z));
 }
 
+// The arc `c` in polar interpolation: G2/G3 where the control takes them (millturn.polar_arcs),
+// else its chords `points`, each an exact G1.
+void polar_mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
+                    const std::vector<Point3>& points, const MotionStart& ms) {
+  if (std::abs(std::abs(c.axis.z) - 1) > 1e-6)
+    return refuse(s, st, "an arc about another axis than the spindle's in polar interpolation");
+  if (s.m.polar_arcs) {
+    polar_arc(s, st, c.center, c.sense * c.axis.z > 0, from, to, ms.index, ms.feed);
+    return;
+  }
+  Point3 a = from;
+  for (const Point3& p : points) {
+    if (!polar_line(s, st, a, p, ms.index, false, ms.feed)) return;
+    a = p;
+  }
+}
+
 // The arc `c` to `to`: G2/G3 in the machine's plane with Y, lines within the tolerance without.
 void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
               const MotionStart& ms) {
@@ -387,15 +406,17 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
   // Chords within half the tolerance, each piece within the other half: the segments verify
   // checks the program against.
   const std::vector<Point3> points = arc_points(c, from, to, s.m.xzc_tolerance / 2);
-  if (!s.m.y_axis && !xzc_arc_reached(s, st, c, points, ms.radial)) return;
-  if (!s.m.y_axis) xzc_plane(s, ms.radial);
+  const bool polar = polar_motion(s);
+  if (!s.m.y_axis && !polar && !xzc_arc_reached(s, st, c, points, ms.radial)) return;
+  if (!s.m.y_axis && !polar) xzc_plane(s, ms.radial);
   Point3 at = from;
   for (const Point3& p : points) {
     keep_mill(s, {st.loc.line, part(at), part(p), ms.index, false});
     const Point3 q = &p == &points.back() ? machine_tip(s, ms, p) : p;
-    if (!s.m.y_axis) xzc_move(s, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
+    if (!s.m.y_axis && !polar) xzc_move(s, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
     at = p;
   }
+  if (polar) return polar_mill_arc(s, st, c, from, to, points, ms);
   if (!s.m.y_axis || xyz_arc(s, c, from, to, ms.turn, ms.feed)) return;
   if (s.mill.comp != CutterComp::kOff)
     return refuse(s, st,
@@ -434,7 +455,8 @@ bool start_motion(PostState& s, const Statement& st, bool rapid, Point3 to, Moti
   // Without Y the point gives C (the tool axis its side); with Y C turns the tool's side to X.
   if (s.m.y_axis) ms.turn = *turn;
   // C unknown, or a machine with Y: C where the work is first.
-  if ((!s.c.angle || s.m.y_axis) && !c_to(s, st, ms.index + ms.turn)) return false;
+  if (!polar_motion(s) && (!s.c.angle || s.m.y_axis) && !c_to(s, st, ms.index + ms.turn))
+    return false;
   if (!s.pos && !rapid) {
     error(s, st, st.loc, "a milling feed move needs a start point: no GOTO or FROM before it");
     return false;
@@ -471,6 +493,10 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
     return mill_arc(s, st, arc, from, p, ms);
   }
   keep_mill(s, {st.loc.line, part(from), part(p), ms.index, rapid});
+  if (polar_motion(s)) {
+    polar_line(s, st, from, p, ms.index, rapid, ms.feed);
+    return;
+  }
   if (!s.m.y_axis) {
     xzc_plane(s, ms.radial);
     return xzc_move(s, from, machine_tip(s, ms, p), ms.index, rapid, ms.feed, s.m.xzc_tolerance);
@@ -539,7 +565,10 @@ void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axi
 }
 
 void end_milling(PostState& s, const Statement& st, bool c_back) {
-  if (s.mill.comp != CutterComp::kOff) s.prog.cutter_comp(CutterComp::kOff);  // before the plane
+  // G40 before polar interpolation ends and before the plane goes back: a control refuses
+  // either under G41/G42 (docs/millturn.md).
+  if (s.mill.comp != CutterComp::kOff) s.prog.cutter_comp(CutterComp::kOff);
+  polar_exit(s);
   if (s.mill.plane != 18) {
     NcWriter& w = s.prog.writer();
     if (s.mill.y != 0) w.code(s.m.code("rapid")).word("Y", 0.0).end_block();

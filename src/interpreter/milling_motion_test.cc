@@ -97,13 +97,16 @@ TEST(MillingMotion, FaceMillingInXyzOnHaasSt20y) {
 // tool's rpm, a CIRCLE/ about another axis: located errors, the tool's later motions not
 // reported again.
 TEST(MillingMotion, WhatIsNotWrittenIsALocatedError) {
+  // fanuc-0i-tf-live ships G12.1 with C the virtual axis, but how it takes X in the mode is not
+  // pinned (machines/fanuc-0i-tf-live.yaml quotes the sources that disagree).
   Posted polar =
       post(kQuarterAndSlot, load("fanuc-0i-tf-live", {"millturn.polar_interpolation=true"}));
   EXPECT_EQ(polar.errors, 1u) << polar.diags;
   EXPECT_NE(polar.diags.find("t.cl:5:1: error: milling motion with live tool 3 (loaded at line "
-                             "1): machine 'fanuc-0i-tf-live' asks for polar or cylindrical "
-                             "interpolation (millturn.polar_interpolation: true), which clpost "
-                             "does not write yet"),
+                             "1): machine 'fanuc-0i-tf-live' asks for polar interpolation "
+                             "(millturn.polar_interpolation: true), and millturn.polar_x is "
+                             "unknown: how the control takes X in the mode (a radius or a "
+                             "diameter) is not pinned"),
             std::string::npos)
       << polar.diags;
   Posted axis = post(
@@ -259,6 +262,102 @@ TEST(MillingMotion, TiltedAxisAndCompensationWithoutYAreLocatedErrors) {
                            "offset the path on the part"),
             std::string::npos)
       << xzc.diags;
+}
+
+// Polar interpolation on haas-st-20y (G112, Y the virtual axis, X a radius, arcs as chords:
+// Fusion's Haas lathe post). The quarter and the slot at index 30: C to 0 first (the plane is
+// the machine's X and Y at C0), each part point turned by 30 degrees: (10, 0) is (8.6603, 5),
+// the arc's first chord end (10 cos 2.5°, 10 sin 2.5°) is at 32.5°, (8.4339, 5.373) (chords of
+// 2.5° within half the tolerance, as XZC's), its end (0, 10) is (-5, 8.6603); the slot's end
+// (0, -10) is (5, -8.6603). The slot crosses the centre as one straight G1; F the CL's 100 per
+// minute in the plane.
+TEST(MillingMotion, PolarInterpolationOnHaasSt20y) {
+  std::string cl = kQuarterAndSlot;
+  cl.replace(cl.find("ROTABL/0"), 8, "ROTABL/30");
+  cl.replace(cl.find("FINI"), 4, "LOADTL/1\nFINI");
+  Posted p = post(cl, load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G0 C30.\nM14\nM15\nG0 C0.\nG112\nG17\nG0 X8.66 Y5. Z2.\n"
+                      "G98 G1 X8.66 Y5. Z-1. F100.\nG1 X8.434 Y5.373 Z-1. F100.\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_NE(p.nc.find("G1 X-5. Y8.66 Z-1. F100.\nG1 X5. Y-8.66 Z-1. F100.\nG113\nG18\nM135\n"
+                      "T0101\n"),
+            std::string::npos)
+      << p.nc;
+  EXPECT_EQ(p.nc.find("G3"), std::string::npos) << p.nc;
+  // A full circle of radius 10 about (0, 0) from (10, 0) at index 0 where the control takes
+  // G2/G3 in the mode (fanuc-0i-tf-live, X set a diameter): three G3 of 120 degrees (both
+  // Fusion posts split polar arcs at 120): (-5, 8.6603), (-5, -8.6603), (10, 0).
+  Posted full = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,0,-1\n"
+      "FEDRAT/100,MMPM\nCIRCLE/0,0,-1,0,0,1,10\nGOTO/10,0,-1\nFINI\n",
+      load("fanuc-0i-tf-live", {"millturn.polar_interpolation=true", "millturn.polar_x=diameter"}));
+  EXPECT_EQ(full.errors, 0u) << full.diags;
+  EXPECT_NE(full.nc.find("G3 X-10. C8.66 Z-1. I-10. J0. F100.\nG3 X-10. C-8.66 Z-1. I5. J-8.66 "
+                         "F100.\nG3 X20. C0. Z-1. I5. J8.66 F100.\nG13.1\n"),
+            std::string::npos)
+      << full.nc;
+  // Fanuc with X set a diameter: G12.1, X twice the radius, C the virtual axis (a radius), the
+  // rapid a G1 at millturn.polar_rapid_feed 1500 (no G00 in the mode).
+  Posted f = post(cl, load("fanuc-0i-tf-live",
+                           {"millturn.polar_interpolation=true", "millturn.polar_x=diameter"}));
+  EXPECT_EQ(f.errors, 0u) << f.diags;
+  EXPECT_NE(f.nc.find("M74\nG0 C0.\nG12.1\nG98 G1 X17.321 C5. Z2. F1500.\n"
+                      "G1 X17.321 C5. Z-1. F100.\nG3 X-10. C8.66 Z-1. I-8.66 J-5. F100.\n"
+                      "G1 X10. C-8.66 Z-1. F100.\nG13.1\nM72\nT0101\n"),
+            std::string::npos)
+      << f.nc;
+  // A ROTABL in the mode leaves it first (G113, G18): C is then at the angle of the tool's point,
+  // (0, 10) is C90, so ROTABL/90 writes no C; the next motion enters at C0 again and the part
+  // point (10, 0) at index 90 is (0, 10) in the plane.
+  Posted idx = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,0,2\n"
+      "FEDRAT/100,MMPM\nGOTO/10,0,-1\nGOTO/0,10,-1\nROTABL/90,CAXIS\nRAPID\nGOTO/10,0,2\n"
+      "GOTO/10,0,-1\nFINI\n",
+      load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_EQ(idx.errors, 0u) << idx.diags;
+  EXPECT_NE(idx.nc.find("G1 X0. Y10. Z-1. F100.\nG113\nG18\nG0 C0.\nG112\nG17\n"
+                        "G0 X0. Y10. Z2.\nG98 G1 X0. Y10. Z-1. F100.\nG113\nG18\nM135\nM155\nM30\n"),
+            std::string::npos)
+      << idx.nc;
+  // A feed that starts the mode where C0 moves the tool off its start (FROM/10,0,-1 at index
+  // 90 is C90): an error, not a move from the wrong point.
+  Posted from = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/90,CAXIS\nFROM/10,0,-1\nFEDRAT/100,MMPM\n"
+      "GOTO/0,10,-1\nFINI\n",
+      load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_NE(from.diags.find("t.cl:6:1: error: a feed move starts polar interpolation, and the C0 "
+                            "the mode starts at moves the tool off its start point"),
+            std::string::npos)
+      << from.diags;
+  // CUTCOM in the mode is G41/G42 there (Fanuc: "Polar coordinate interpolation is applied to
+  // the path after cutter compensation"); one in force where the mode starts is an error.
+  const std::string comp =
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,0,2\n"
+      "FEDRAT/100,MMPM\nCUTCOM/LEFT\nGOTO/10,0,-1\nGOTO/0,10,-1\nCUTCOM/OFF\nGOTO/0,12,-1\n"
+      "FINI\n";
+  Posted in_mode = post(comp, load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_EQ(in_mode.errors, 0u) << in_mode.diags;
+  EXPECT_NE(in_mode.nc.find("G112\nG17\nG0 X10. Y0. Z2.\nG41\nG98 G1 X10. Y0. Z-1. F100.\n"
+                            "G1 X0. Y10. Z-1. F100.\nG40\nG1 X0. Y12. Z-1. F100.\nG113\n"),
+            std::string::npos)
+      << in_mode.nc;
+  std::string before = comp;
+  before.replace(before.find("RAPID"), 5, "CUTCOM/LEFT\nRAPID");
+  Posted early = post(before, load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_NE(early.diags.find("t.cl:6:1: error: CUTCOM/LEFT or RIGHT in force where polar "
+                             "interpolation starts"),
+            std::string::npos)
+      << early.diags;
+  // A feed along Z and across the face at once: F is not pinned for it.
+  std::string ramp = kQuarterAndSlot;
+  ramp.replace(ramp.find("GOTO/10,0,-1\nCIRCLE"), 12, "GOTO/9,0,-1");
+  Posted r = post(ramp, load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_NE(r.diags.find("t.cl:7:1: error: a feed move along Z and across the face at once in "
+                         "polar interpolation"),
+            std::string::npos)
+      << r.diags;
 }
 
 }  // namespace

@@ -264,6 +264,7 @@ void rotabl_stmt(PostState& s, const Statement& st) {
                              st.major, s.m.name));
   ensure_started(s);
   engage_c(s, st);
+  if (s.mill.polar) end_milling(s, st, false);  // C is an axis again
   if (w.incremental && !s.c.angle)
     return error(s, st, st.loc,
                  fmt::format("{}/…,INCR: C's position is not known yet (no ROTABL since the C "

@@ -91,10 +91,12 @@ struct CAxisState {
 // Face milling written so far (milling_motion.cc): the G17 plane and Y of a machine with Y, and
 // the inverse-time feed mode of XZC moves, as last written.
 struct MillState {
-  int plane = 18;             // the plane in force: 17 (plane_face), 19 (plane_side), 18
-  double y = 0;               // Y as last written (output units)
-  bool inverse_time = false;  // codes.inverse_time in force
-  bool per_minute = false;    // codes.feed_per_min written for this tool's milling
+  int plane = 18;                   // the plane in force: 17 (plane_face), 19 (plane_side), 18
+  double y = 0;                     // Y as last written (output units)
+  bool inverse_time = false;        // codes.inverse_time in force
+  bool per_minute = false;          // codes.feed_per_min written for this tool's milling
+  bool polar = false;               // in polar interpolation (codes.polar_on written)
+  double polar_x = 0, polar_y = 0;  // there: the tool in the face plane at C0 (a radius)
   // The live tool's G41/G42 in force (CUTCOM): the plane does not change under it, and G40 is
   // written before the plane goes back (end_milling).
   CutterComp comp = CutterComp::kOff;

@@ -4,6 +4,7 @@
 
 #include "interpreter/clock.h"
 #include "interpreter/milling_motion.h"
+#include "interpreter/milling_polar.h"
 #include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
 
@@ -200,8 +201,9 @@ void finish_program(PostState& s, const Statement& at) {
   if (s.ended) return;
   end_sequences(s);
   ensure_started(s);
-  end_milling_section(s, at, true);  // as before a tool change, and C released
-  end_nc_lines(s);                   // the program end is no tool's
+  end_milling_section(s, at,
+                      true);  // as before a tool change (polar interpolation off), C released
+  end_nc_lines(s);            // the program end is no tool's
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
   const NcWriter& w = s.prog.writer();

@@ -43,6 +43,9 @@ enum class ThreadLoop : uint8_t { kG33, kG92 };
 enum class ClAxis : uint8_t { kX, kY, kZ, kAuto };
 // How a control moves its C axis to an absolute C word (millturn.c_rotation).
 enum class CRotation : uint8_t { kRollover, kContinuous };
+// How the control takes X in polar interpolation (millturn.polar_x): not known (the mode is
+// then not written), as a radius, as a diameter.
+enum class PolarX : uint8_t { kUnknown, kRadius, kDiameter };
 
 // A length a machine file gives as a number, or as `auto`: clpost works it out.
 struct LengthOrAuto {
@@ -147,7 +150,14 @@ struct Machine : ControlSettings {
   // (degrees counted as output units).
   double xzc_tolerance = 0.005;
   bool xzc_inverse_time = false;
-  bool polar_interpolation = false;  // polar / cylindrical interpolation asked for (not written)
+  // Face milling in the control's polar interpolation (interpreter/milling_polar.cc): asked for
+  // (codes polar_on, polar_off), the word of its virtual axis (Fanuc C, Haas Y; empty: not
+  // known) and how X is taken in it. Written only when all are known.
+  bool polar_interpolation = false;
+  std::string polar_address;
+  PolarX polar_x = PolarX::kUnknown;
+  double polar_rapid_feed = 0;  // a RAPID in the mode: G1 at this feed (0: the rapid code)
+  bool polar_arcs = false;      // arcs in the mode as G2/G3 (else chords within xzc_tolerance)
 
   // Cycle time (0: not known)
   double rapid_x = 0;           // per minute along X (as a radius), output units

@@ -29,12 +29,13 @@ constexpr auto kCycles = [] {
   for (size_t i = 0; i < c.size(); ++i) c[i] = Choice{kShippedCycles[i]};
   return c;
 }();
-constexpr Choice kLoops[] = {{"g33"}, {"g92"}};                   // ThreadLoop order
-constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};          // false, true
-constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};          // false, true
-constexpr Choice kCRotations[] = {{"rollover"}, {"continuous"}};  // CRotation order
-constexpr Choice kClwTurns[] = {{"decreasing"}, {"increasing"}};  // false, true
-constexpr Choice kXzcFeeds[] = {{"combined"}, {"inverse_time"}};  // false, true
+constexpr Choice kLoops[] = {{"g33"}, {"g92"}};                        // ThreadLoop order
+constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};               // false, true
+constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};               // false, true
+constexpr Choice kCRotations[] = {{"rollover"}, {"continuous"}};       // CRotation order
+constexpr Choice kClwTurns[] = {{"decreasing"}, {"increasing"}};       // false, true
+constexpr Choice kXzcFeeds[] = {{"combined"}, {"inverse_time"}};       // false, true
+constexpr Choice kPolarX[] = {{"unknown"}, {"radius"}, {"diameter"}};  // PolarX order
 
 constexpr const char* kId = "Identity";
 constexpr const char* kCl = "CL frame";
@@ -244,9 +245,27 @@ constexpr KeySpec kLaterKeys[] = {
      "moves along the part at the CL's feed",
      0, 0, kXzcFeeds},
     {"millturn.polar_interpolation", kMillTurn, kBool, &M::polar_interpolation,
-     "polar (G12.1, G112, TRANSMIT) and cylindrical (G7.1, G107, TRACYL) interpolation: not "
-     "written yet, so true is an error at the first milling motion; false (the default), the post "
-     "computes XZC itself"},
+     "face milling (tool axis 0,0,1) in the control's polar interpolation: C to 0, code "
+     "polar_on, X and the virtual axis (polar_address) in the face plane at C0, G1 and G2/G3 "
+     "exact, code polar_off; written only with polar_address and polar_x known, else an error "
+     "at the first milling motion naming what is missing. Cylindrical interpolation is not "
+     "written. false (the default): the post computes XZC (or X Y Z with Y) itself"},
+    {"millturn.polar_address", kMillTurn, kString, &M::polar_address,
+     "the word of the virtual axis in polar interpolation, across X in the face plane (Fanuc "
+     "G12.1: `C`, the rotary axis's address; Haas G112: `Y`); empty: not known"},
+    {"millturn.polar_x", kMillTurn, kChoice, &M::polar_x,
+     "how the control takes X (and nothing else: the virtual axis and I, J are radii) in polar "
+     "interpolation: `radius`, `diameter`, or `unknown` (the default: the mode is not written)",
+     0, 0, kPolarX},
+    {"millturn.polar_rapid_feed", kMillTurn, kNumber, &M::polar_rapid_feed,
+     "a RAPID in polar interpolation is written as a G1 at this feed per minute, output units "
+     "(for a control that takes no G0 in the mode: Fanuc's lists none among the G codes of "
+     "G12.1); 0 (the default): the rapid code",
+     0, 1e6},
+    {"millturn.polar_arcs", kMillTurn, kBool, &M::polar_arcs,
+     "the control takes G2/G3 (I, J in the plane) in polar interpolation: CIRCLE/ arcs about Z "
+     "are written so, at most 120 degrees each; false (the default): as chords, each within "
+     "half of millturn.xzc_tolerance of the arc, each an exact G1"},
     {"time.rapid_x", kTime, kNumber, &M::rapid_x,
      "rapid rate along X (as a radius), per minute, output units; 0: rapids are not timed", 0, 1e7},
     {"time.rapid_z", kTime, kNumber, &M::rapid_z,
@@ -321,6 +340,10 @@ constexpr NameSpec kLaterCodes[] = {
     {"plane_lathe",
      "the lathe plane (G18), after milling in X Y or peripheral milling in X Z C, and for arcs "
      "about Y"},
+    {"polar_on",
+     "polar interpolation on (Fanuc G12.1, Haas G112), before face milling with "
+     "millturn.polar_interpolation, after C0; plane_face follows when the machine has it"},
+    {"polar_off", "polar interpolation off (Fanuc G13.1, Haas G113), after the face milling"},
     {"plane_side",
      "the plane across the part (G19, Y Z), for arcs of peripheral milling (a radial tool, "
      "millturn.y_axis); without Y, before a radial tool's X Z C moves (no G1 depends on it: it "

@@ -29,7 +29,8 @@ using MachineMember =
     std::variant<std::string Machine::*, bool Machine::*, double Machine::*, int Machine::*,
                  std::vector<std::string> Machine::*, ThreadStrategy Machine::*,
                  ThreadFallback Machine::*, const Control * Machine::*, ThreadLoop Machine::*,
-                 ClAxis Machine::*, LengthOrAuto Machine::*, CRotation Machine::*>;
+                 ClAxis Machine::*, LengthOrAuto Machine::*, CRotation Machine::*,
+                 PolarX Machine::*>;
 using FormatMember =
     std::variant<int NumberFormat::*, bool NumberFormat::*, double NumberFormat::*>;
 

@@ -169,6 +169,7 @@ struct Codes {
   sim::ModalWords modal;
   const sim::ControlReadback* control = nullptr;  // the machine's control (threading.cycle)
   Code diameter_on, diameter_off;                 // its diameter-mode codes, if any
+  Code polar_on, polar_off;  // polar interpolation (millturn.polar_interpolation), if written
 };
 
 Codes codes_of(const Machine& m) {
@@ -188,6 +189,10 @@ Codes codes_of(const Machine& m) {
   c.control = m.control && m.control->readback ? m.control->readback : &kPlainIso;
   c.diameter_on = sim::parse_code(c.control->diameter_on);
   c.diameter_off = sim::parse_code(c.control->diameter_off);
+  if (m.polar_interpolation) {
+    c.polar_on = sim::parse_code(m.code("polar_on"));
+    c.polar_off = sim::parse_code(m.code("polar_off"));
+  }
   const std::string& open = m.comment_open;
   if (!open.empty() && m.code("metric").rfind(open, 0) == 0) c.metric_line = m.code("metric");
   if (!open.empty() && m.code("inch").rfind(open, 0) == 0) c.inch_line = m.code("inch");
@@ -353,6 +358,36 @@ void modal_move(State& s, const NcBlock& b, const Codes& c, const Code* motion_c
   }
 }
 
+// Polar interpolation's codes and the blocks between them (sim::polar_move): true when `b` is
+// one of them. On, its plane's X axis is the machine's at the C then, the tool on it at its
+// radius; off, C is at the angle of the tool's point in the plane.
+bool polar_block(State& s, const NcBlock& b, const Codes& c) {
+  if (!s.polar && has_code(b, c.polar_on)) {
+    s.polar = true;
+    s.polar_c = s.c.value_or(0);
+    s.polar_x = s.pos.x;
+    s.polar_y = 0;
+    s.polar_known = s.pos_known;
+    s.mill_block = true;
+    return true;
+  }
+  if (!s.polar) return false;
+  if (has_code(b, c.polar_off)) {
+    s.polar = false;
+    const double r = std::hypot(s.polar_x, s.polar_y);
+    if (r > 1e-9)
+      s.c = s.polar_c + std::atan2(s.polar_y, s.polar_x) * 57.29577951308232;  // degrees
+    s.pos.x = r;
+    s.pos_known = s.pos_known || s.polar_known;
+    return true;
+  }
+  motion_of(s, b, c);
+  if (const NcWord* f = b.find("F")) s.f_register = s.value(*f);
+  sim::polar_move(s, b);
+  s.mill_block = true;
+  return true;
+}
+
 void run_block(State& s, const NcBlock& b, const Codes& c) {
   // A cycle that takes the blocks up to its closing one (G31's contour and G80).
   if (s.pending.set && s.pending.takes_blocks) {
@@ -366,6 +401,7 @@ void run_block(State& s, const NcBlock& b, const Codes& c) {
   sim::hole_comment(s, b);
   if (b.words.empty() && b.calls.empty()) return;
   sim::read_modal_words(s, b, c.modal);
+  if (polar_block(s, b, c)) return;
   if (s.m.c_axis)
     if (const NcWord* w = b.find(s.m.c_address)) s.c = s.value(*w, "C");
   if (settings_block(s, b, c) || cycle_block(s, b, c)) return;

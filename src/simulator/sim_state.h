@@ -142,6 +142,11 @@ struct State {
   G92Modal g92;
   std::optional<double> c;  // the C axis (millturn.c_axis) as last written, degrees
   double y = 0;             // Y as last written (milling on a machine with Y)
+  // Polar interpolation (codes polar_on .. polar_off, millturn.polar_interpolation): on, the C it
+  // started at (angle 0 of its plane), and the tool in its plane (X and the virtual axis, radii).
+  bool polar = false;
+  bool polar_known = false;  // the tool's point in the plane and Z are known
+  double polar_c = 0, polar_x = 0, polar_y = 0;
   bool mill_block = false;  // the block writes C, or Y is off 0 (Move::mill)
   bool hole_open = false;   // out.holes.back() is followed move by move (a "hole at" comment)
   int plane = 18;           // the plane selected last (G17, G18, G19): which axis a hole drills
@@ -176,6 +181,9 @@ struct State {
 void hole_comment(State& s, const NcBlock& b);
 // On a machine with C: a motion block's end in X, Y, Z and C into out.mill_moves (mill_moves.cc).
 void mill_move(State& s, const NcBlock& b);
+// In polar interpolation: a motion block's end in the plane (mill_moves.cc); the tool's radius
+// and Z are then where it is.
+void polar_move(State& s, const NcBlock& b);
 // The feed mode, spindle and tool words of `b` into s.cut (modal_words.cc).
 void read_modal_words(State& s, const NcBlock& b, const ModalWords& w);
 bool hole_cycle_block(State& s, const NcBlock& b);
