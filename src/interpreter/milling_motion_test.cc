@@ -317,9 +317,10 @@ TEST(MillingMotion, PolarInterpolationOnHaasSt20y) {
       "GOTO/10,0,-1\nFINI\n",
       load("haas-st-20y", {"millturn.polar_interpolation=true"}));
   EXPECT_EQ(idx.errors, 0u) << idx.diags;
-  EXPECT_NE(idx.nc.find("G1 X0. Y10. Z-1. F100.\nG113\nG18\nG0 C0.\nG112\nG17\n"
-                        "G0 X0. Y10. Z2.\nG98 G1 X0. Y10. Z-1. F100.\nG113\nG18\nM135\nM155\nM30\n"),
-            std::string::npos)
+  EXPECT_NE(
+      idx.nc.find("G1 X0. Y10. Z-1. F100.\nG113\nG18\nG0 C0.\nG112\nG17\n"
+                  "G0 X0. Y10. Z2.\nG98 G1 X0. Y10. Z-1. F100.\nG113\nG18\nM135\nM155\nM30\n"),
+      std::string::npos)
       << idx.nc;
   // A feed that starts the mode where C0 moves the tool off its start (FROM/10,0,-1 at index
   // 90 is C90): an error, not a move from the wrong point.
