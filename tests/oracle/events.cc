@@ -74,4 +74,20 @@ std::string describe(const Event& e) {
   return t;
 }
 
+bool spindle_coolant_m(int m, bool& on, bool& ccw, Coolant& coolant) {
+  if (m == 3 || m == 4)
+    on = true, ccw = m == 4;
+  else if (m == 5)
+    on = false;
+  else if (m == 8)
+    coolant.flood = true;
+  else if (m == 7)
+    coolant.mist = true;
+  else if (m == 9)
+    coolant = {};
+  else
+    return false;
+  return true;
+}
+
 }  // namespace oracle

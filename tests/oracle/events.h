@@ -80,4 +80,9 @@ struct Event {
 std::string describe(const Event& e);
 std::string describe_state(const Modal& m, bool with_feed);
 
+// The M codes the control readers take alike (DIN 66025 / ISO 6983-1, and each control's manual
+// cited at its reader's mcode): M3/M4 start the spindle clockwise/counter-clockwise, M5 stops
+// it, M7 mist and M8 flood coolant on, M9 both off. False for any other M code (nothing set).
+bool spindle_coolant_m(int m, bool& on, bool& ccw, Coolant& coolant);
+
 }  // namespace oracle

@@ -189,17 +189,8 @@ bool Control::spindle_and_tool(const Block& b) {
 // clockwise, counter-clockwise, stop and M8/M9 (M7 mist) coolant are the builder's, as on every
 // Fanuc and Haas lathe ([Haas] "M03/M04/M05", "M08/M09"; the machines' files say the same).
 bool Control::mcode(int m) {
-  if (m == 3 || m == 4)
-    on_ = true, ccw_ = m == 4;
-  else if (m == 5)
-    on_ = false;
-  else if (m == 8)
-    coolant_.flood = true;
-  else if (m == 7)
-    coolant_.mist = true;
-  else if (m == 9)
-    coolant_ = {};
-  else if (m == 30 || m == 2)
+  if (spindle_coolant_m(m, on_, ccw_, coolant_)) return true;
+  if (m == 30 || m == 2)
     ended_ = true;
   else if (m != 0 && m != 1)
     return fail("M" + std::to_string(m) + " is not read by the oracle");

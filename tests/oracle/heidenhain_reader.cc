@@ -225,17 +225,8 @@ bool Control::spindle_and_tool(const Block& b) {
 // ([seed] "G97 S1000 M3"; [4110] 1.5); M8/M7/M9 flood, mist, off are the builder's codes, as
 // the machine file says [none].
 bool Control::mcode(int m) {
-  if (m == 3 || m == 4)
-    on_ = true, ccw_ = m == 4;
-  else if (m == 5)
-    on_ = false;
-  else if (m == 8)
-    coolant_.flood = true;
-  else if (m == 7)
-    coolant_.mist = true;
-  else if (m == 9)
-    coolant_ = {};
-  else if (m != 0 && m != 1 && m != 30)
+  if (spindle_coolant_m(m, on_, ccw_, coolant_)) return true;
+  if (m != 0 && m != 1 && m != 30)
     return fail("M" + std::to_string(m) + " is not read by the oracle");
   return true;
 }

@@ -259,17 +259,8 @@ bool Control::words(const Block& b) {
 // M0, M1 stop, M2, M30 end of program [PGA] "Program end (M2, M30)"; M7, M8, M9 coolant 2, coolant
 // 1, coolant off [DIN] (the builder's, as the machine file says).
 bool Control::mcode(int m) {
-  if (m == 3 || m == 4)
-    on_ = true, ccw_ = m == 4;
-  else if (m == 5)
-    on_ = false;
-  else if (m == 8)
-    coolant_.flood = true;
-  else if (m == 7)
-    coolant_.mist = true;
-  else if (m == 9)
-    coolant_ = {};
-  else if (m == 2 || m == 30)
+  if (spindle_coolant_m(m, on_, ccw_, coolant_)) return true;
+  if (m == 2 || m == 30)
     ended_ = true;
   else if (m != 0 && m != 1)
     return fail("M" + std::to_string(m) + " is not read by the oracle");
