@@ -13,6 +13,7 @@
 #include <cstdlib>
 
 #include "fanuc_reader_impl.h"
+#include "program_lines.h"
 
 namespace oracle::fanuc_detail {
 
@@ -340,18 +341,10 @@ namespace oracle {
 ControlRun fanuc_events(std::string_view program, Dialect dialect, bool block_delete) {
   using fanuc_detail::Block;
   fanuc_detail::Control c(dialect);
-  for (int line = 1; !program.empty() && !c.ended(); ++line) {
-    const size_t nl = program.find('\n');
-    const std::string_view text = program.substr(0, nl);
-    program = nl == std::string_view::npos ? std::string_view() : program.substr(nl + 1);
-    Block b;
-    std::string error = fanuc_detail::parse(text, b);
-    if (error.empty() && b.optional && block_delete) continue;
-    if (error.empty() && c.block(b, line, text)) continue;
-    c.run.error = error.empty() ? c.run.error : error;
-    c.run.error_line = line;
-    break;
-  }
+  read_program_lines<fanuc_detail::Block>(
+      program, block_delete, c,
+      [](std::string_view text, fanuc_detail::Block& b) { return fanuc_detail::parse(text, b); },
+      [](int, std::string_view) { return false; });
   return std::move(c.run);
 }
 

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "program_lines.h"
+
 namespace oracle {
 
 namespace {
@@ -309,20 +311,12 @@ bool Control::block(const Block& b, int line, std::string_view text) {
 ControlRun heidenhain_events(std::string_view program, bool block_delete,
                              std::optional<bool> unit_inch) {
   Control c(unit_inch);
-  for (int line = 1; !program.empty() && !c.ended(); ++line) {
-    const size_t nl = program.find('\n');
-    const std::string_view text = program.substr(0, nl);
-    program = nl == std::string_view::npos ? std::string_view() : program.substr(nl + 1);
-    // "%1.nc": the program's name, its first line ([seed]'s manual; the name is the file's).
-    if (line == 1 && !text.empty() && text[0] == '%') continue;
-    Block b;
-    std::string error = parse(text, b);
-    if (error.empty() && b.optional && block_delete) continue;
-    if (error.empty() && c.block(b, line, text)) continue;
-    c.run.error = error.empty() ? c.run.error : error;
-    c.run.error_line = line;
-    break;
-  }
+  read_program_lines<Block>(
+      program, block_delete, c, [](std::string_view text, Block& b) { return parse(text, b); },
+      [](int line, std::string_view text) {
+        // "%1.nc": the program's name, its first line ([seed]'s manual; the name is the file's).
+        return line == 1 && !text.empty() && text[0] == '%';
+      });
   if (c.run.error.empty() && !c.ended()) c.run.error = "the program has no END";
   return std::move(c.run);
 }

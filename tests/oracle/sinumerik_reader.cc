@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "program_lines.h"
+
 namespace oracle::sinumerik_detail {
 
 namespace {
@@ -433,18 +435,12 @@ namespace oracle {
 ControlRun sinumerik_events(std::string_view program, bool block_delete) {
   using sinumerik_detail::Block;
   sinumerik_detail::Control c;
-  for (int line = 1; !program.empty() && !c.ended(); ++line) {
-    const size_t nl = program.find('\n');
-    const std::string_view text = program.substr(0, nl);
-    program = nl == std::string_view::npos ? std::string_view() : program.substr(nl + 1);
-    Block b;
-    std::string error = sinumerik_detail::parse(text, b);
-    if (error.empty() && b.optional && block_delete) continue;
-    if (error.empty() && c.block(b, line, text)) continue;
-    c.run.error = error.empty() ? c.run.error : error;
-    c.run.error_line = line;
-    break;
-  }
+  read_program_lines<sinumerik_detail::Block>(
+      program, block_delete, c,
+      [](std::string_view text, sinumerik_detail::Block& b) {
+        return sinumerik_detail::parse(text, b);
+      },
+      [](int, std::string_view) { return false; });
   return std::move(c.run);
 }
 
