@@ -81,6 +81,19 @@ TEST(Rs274, SamplesRunAndFollowTheClPoints) {
   fs::remove_all(dir);
 }
 
+// rs274 on a linuxcnc-lathe-c program, run in DIR with the mill-turn INI (two spindles, X Z C)
+// and the lathe tool table: its canonical calls.
+RunResult millturn_rs274(const std::string& dir, const std::string& ngc) {
+  return run("cd " + quote(dir) + " && " + rs274() + " -i " +
+             quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
+             quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+}
+
+// The CL file posted on linuxcnc-lathe-c to NGC.
+RunResult post_millturn(const std::string& cl, const std::string& ngc) {
+  return run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+}
+
 // linuxcnc-lathe-c (docs/millturn.md) with an INI of two spindles and X Z C: the live tool is
 // spindle 1 at the CL's 3000 rpm, C goes to 90, 45 (the shortest way) and 90 clockwise (C
 // decreasing: 45 - 315 = -270, the same place as 90), the turning tool turns spindle 0 and its
@@ -89,12 +102,9 @@ TEST(Rs274, MillTurnLiveToolOnSpindleOneAndC) {
   if (!have_rs274())
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string dir = temp_dir(), ngc = dir + "/c.ngc";
-  RunResult post = run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " +
-                       quote(source_dir() + "/samples/machines/linuxcnc-lathe-c.apt"));
+  RunResult post = post_millturn(source_dir() + "/samples/machines/linuxcnc-lathe-c.apt", ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   std::vector<std::string> got;
   std::istringstream in(r.out);
@@ -143,12 +153,9 @@ TEST(Rs274, MillTurnFaceBoltCircle) {
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string dir = temp_dir(), ngc = dir + "/holes.ngc";
   const std::string cl = source_dir() + "/tests/data/millturn-face-holes.apt";
-  RunResult post =
-      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  RunResult post = post_millturn(cl, ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   struct FacePoint {
     double x, y, z;
@@ -203,12 +210,9 @@ TEST(Rs274, MillTurnEndsMillingBeforeTheProgramEnd) {
   write_file(cl,
              "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nROTABL/0,CAXIS\nRAPID\nGOTO/10,5,2\n"
              "FEDRAT/100,MMPM\nGOTO/10,5,-1\nGOTO/20,10,-1\nRAPID\nGOTO/20,10,2\nFINI\n");
-  RunResult post =
-      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  RunResult post = post_millturn(cl, ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const size_t last_move = r.out.rfind("STRAIGHT_TRAVERSE(22.3607, 0.0000, 2.0000");
   ASSERT_NE(last_move, std::string::npos) << r.out;
@@ -234,12 +238,9 @@ TEST(Rs274, MillTurnRadialHoles) {
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string dir = temp_dir(), ngc = dir + "/radial.ngc";
   const std::string cl = source_dir() + "/tests/data/millturn-radial-holes.apt";
-  RunResult post =
-      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  RunResult post = post_millturn(cl, ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const double deg = std::acos(-1.0) / 180;
   std::vector<std::vector<double>> got;  // part x, y, z of each feed's end
@@ -278,14 +279,9 @@ TEST(Rs274, MillTurnLiveTaps) {
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string dir = temp_dir(), ngc = dir + "/taps.ngc";
   const std::string cl = source_dir() + "/tests/data/millturn-live-taps.apt";
-  RunResult post =
-      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  RunResult post = post_millturn(cl, ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  const auto rs274_on = [&](const std::string& path) {
-    return run("cd " + quote(dir) + " && " + rs274() + " -i " +
-               quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-               quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(path));
-  };
+  const auto rs274_on = [&](const std::string& path) { return millturn_rs274(dir, path); };
   RunResult r = rs274_on(ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const double deg = std::acos(-1.0) / 180;
@@ -360,12 +356,9 @@ TEST(Rs274, MillTurnFaceMillingInXzcFollowsThePartPath) {
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string dir = temp_dir(), ngc = dir + "/mill.ngc";
   const std::string cl = source_dir() + "/tests/data/millturn-face-mill.apt";
-  RunResult post =
-      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  RunResult post = post_millturn(cl, ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   // The CL's cut at Z -1 and -2 (the square, the arc, the slot through the centre line).
   const std::vector<PartSeg> path = {{10, -10, 10, 10},     {10, 10, -10, 10},
@@ -465,9 +458,7 @@ TEST(Rs274, MillTurnPartIsWhereTheClSays) {
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string ngc = source_dir() + "/samples/golden/linuxcnc-lathe-c/millturn-part.ngc";
   const std::string dir = temp_dir();
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   std::vector<std::pair<double, double>> face, radial;
   const std::vector<std::pair<double, double>> tangents = {{11, -4}, {19, -4}, {19, 4}, {11, 4}};
@@ -543,12 +534,9 @@ TEST(Rs274, MillTurnPeripheralMillingFollowsThePartPath) {
     GTEST_SKIP() << "rs274 not installed (apt-get install linuxcnc-uspace): skipped";
   const std::string dir = temp_dir(), ngc = dir + "/periph.ngc";
   const std::string cl = source_dir() + "/tests/data/millturn-peripheral-mill.apt";
-  RunResult post =
-      run(quote(clpost_bin()) + " -m linuxcnc-lathe-c -o " + quote(ngc) + " " + quote(cl));
+  RunResult post = post_millturn(cl, ngc);
   ASSERT_EQ(post.exit_code, 0) << post.err;
-  RunResult r = run("cd " + quote(dir) + " && " + rs274() + " -i " +
-                    quote(source_dir() + "/tests/data/millturn.ini") + " -t " +
-                    quote(source_dir() + "/tests/data/lathe.tbl") + " -g " + quote(ngc));
+  RunResult r = millturn_rs274(dir, ngc);
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const double ex = -7.878462, ey = -1.389185;  // the helix-like line's end: 8 at 190 degrees
   const std::vector<Seg3> path = {{{0, 15, 5}, {0, 8, 5}},
