@@ -130,5 +130,21 @@ TEST(MillingEnd, AnArcInAnotherPlaneUnderCompensationIsALocatedError) {
       << p.diags;
 }
 
+// Polar interpolation (G112) with CUTCOM/LEFT still on at FINI: G40 first (a control refuses
+// to leave the mode or change the plane under G41/G42), then G113, then G18, then the live tool
+// stopped and C released. The points are the part's at C0 (no ROTABL): (10,0), (0,10), (-10,0).
+TEST(MillingEnd, CompensationEndsBeforePolarInterpolationAndThePlane) {
+  Posted p = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nFEDRAT/100,MMPM\nRAPID\nGOTO/10,0,2\n"
+      "GOTO/10,0,-1\nCUTCOM/LEFT\nGOTO/0,10,-1\nGOTO/-10,0,-1\nFINI\n",
+      load("haas-st-20y", {"millturn.polar_interpolation=true"}));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_NE(p.nc.find("G112\nG17\nG0 X10. Y0. Z2.\nG98 G1 X10. Y0. Z-1. F100.\nG41\n"
+                      "G1 X0. Y10. Z-1. F100.\nG1 X-10. Y0. Z-1. F100.\nG40\nG113\nG18\nM135\n"
+                      "M155\nM30\n"),
+            std::string::npos)
+      << p.nc;
+}
+
 }  // namespace
 }  // namespace clpost
