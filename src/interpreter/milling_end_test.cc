@@ -146,5 +146,23 @@ TEST(MillingEnd, CompensationEndsBeforePolarInterpolationAndThePlane) {
       << p.nc;
 }
 
+// A radial tool (axis along the part's Y, so C90) approaches at the part's Y 15 (X30., Y0.),
+// plunges to 8 (X16.), moves 3 along Y, and the CL retracts it sideways to the part's (19, 0):
+// X0. Y-19. at its depth Z2, the cutter on the centre line beside the part. The post's own
+// Y 0 from there (before: `G0 X0. Y-19. Z2.`, then `G0 Y0.`) would take the tip to X0. Y0.,
+// through the part: X goes back out first to the approach's X30. (issue 25, PATH1's T3 -> T1).
+TEST(MillingEnd, ARadialToolGoesOutToItsApproachXBeforeY0) {
+  Posted p = post(
+      "LOADTL/3,MILL\nSPINDL/2000,RPM,CLW\nMULTAX/ON\nRAPID\nGOTO/0,15,2,0,1,0\n"
+      "FEDRAT/100,MMPM\nGOTO/0,8,2,0,1,0\nGOTO/3,8,2,0,1,0\nRAPID\n"
+      "GOTO/19,0,2,0,1,0\nLOADTL/1\nFINI\n",
+      load("haas-st-20y"));
+  EXPECT_EQ(p.errors, 0u) << p.diags;
+  EXPECT_EQ(p.nc,
+            "%\nO00001\nG18 G21 G40 G97\nT0303\nM154\nM133 P2000\nG0 C90.\nM14\n"
+            "G0 X30. Y0. Z2.\nG98 G1 X16. Y0. Z2. F100.\nG1 X16. Y-3. Z2. F100.\n"
+            "G0 X0. Y-19. Z2.\nG0 X30.\nG0 Y0.\nM135\nT0101\nM15\nM155\nM30\n%\n");
+}
+
 }  // namespace
 }  // namespace clpost

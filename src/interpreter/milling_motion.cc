@@ -268,6 +268,7 @@ void xyz_move(PostState& s, Point3 m, bool rapid, double feed, int plane) {
   if (!rapid) w.word("F", feed);
   w.end_block();
   s.mill.y = m.y;
+  if (rapid) s.mill.rapid_reached(m.x);
   s.prog.cycle_ended_at(LathePoint{m.x, m.z});
   rapid ? time_rapid(s, Vec2{m.x, m.z}) : time_feed(s, Vec2{m.x, m.z});
 }
@@ -564,18 +565,38 @@ void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axi
   mill_arc(s, st, {center, axis, sense, st.loc.line}, from, end, ms);
 }
 
+namespace {
+// The post's own return of Y to 0 at the end of the milling (the CL asked for no such move). Y 0
+// is the centre line: from where the CL left a radial tool (retracted sideways, along Y, at its
+// cutting depth) it would go through the part. So X goes out first to the largest X a rapid of
+// the section reached (the approach, trusted as clear: the CL brought the tool there), when the
+// tool is below it. Only a radial tool: X is its depth; a face tool's is Z, and X out at its Z
+// would move it across the face. Its limit: that X is clear at the approach's Y and Z, not
+// proven at Y 0.
+void y_home(PostState& s) {
+  if (s.mill.y == 0) return;
+  NcWriter& w = s.prog.writer();
+  const std::optional<LathePoint> at = s.prog.position();
+  const double f = diameter_factor(s.m);
+  if (s.hole_axis_radial && at && s.mill.rapid_x && at->r < *s.mill.rapid_x &&
+      s.prog.num("X", f * at->r) != s.prog.num("X", f * *s.mill.rapid_x)) {
+    w.code(s.m.code("rapid")).word("X", f * *s.mill.rapid_x).end_block();
+    s.prog.cycle_ended_at(LathePoint{*s.mill.rapid_x, at->z});
+    time_rapid(s, Vec2{*s.mill.rapid_x, at->z});
+  }
+  w.code(s.m.code("rapid")).word("Y", 0.0).end_block();
+}
+}  // namespace
+
 void end_milling(PostState& s, const Statement& st, bool c_back) {
   // G40 before polar interpolation ends and before the plane goes back: a control refuses
   // either under G41/G42 (docs/millturn.md).
   if (s.mill.comp != CutterComp::kOff) s.prog.cutter_comp(CutterComp::kOff);
   polar_exit(s);
+  y_home(s);
   if (s.mill.plane != 18) {
-    NcWriter& w = s.prog.writer();
-    if (s.mill.y != 0) w.code(s.m.code("rapid")).word("Y", 0.0).end_block();
-    w.code(s.m.code("plane_lathe")).end_block();
+    s.prog.writer().code(s.m.code("plane_lathe")).end_block();
     s.prog.forget_modal();
-  } else if (s.mill.y != 0) {
-    s.prog.writer().code(s.m.code("rapid")).word("Y", 0.0).end_block();
   }
   s.mill = MillState{};
   if (c_back && s.c.index && s.c.angle) c_to(s, st, *s.c.index);

@@ -134,7 +134,8 @@ namespace {
 // A radial live tool (tool axis 1,0,0) on haas-st-20y: C stays at the index (the axis is +X
 // already), X is the depth (diameter), Y across; CATIA's HELICAL/ of MillTurn3x_PATH1 (lines
 // 83-87: about the X axis, radius 0.75, 180 degrees from Y0.75 to Y-0.75, X 0.00737 deeper,
-// INDIRV +Z at the start: positive about +X) is G3 in G19 with J and K from its start.
+// INDIRV +Z at the start: positive about +X) is G3 in G19 with J and K from its start. The
+// CL leaves the tool at its depth: before the post's Y0 it goes out to its approach's X18.858.
 TEST(MillingMotion, RadialToolAndCatiaHelicalOnHaasSt20y) {
   const std::string cl =
       "LOADTL/3,MILL\nSPINDL/3000,RPM,CLW\nFEDRAT/150,MMPM\nRAPID\nGOTO/9.42906,0.75,3,1,0,0\n"
@@ -147,7 +148,7 @@ TEST(MillingMotion, RadialToolAndCatiaHelicalOnHaasSt20y) {
   EXPECT_EQ(p.errors, 0u) << p.diags;
   EXPECT_NE(p.nc.find("G0 C0.\nM14\nG0 X18.858 Y0.75 Z3.\nG98 G1 X7.846 Y0.75 Z3. F150.\nG19\n"
                       "G3 X7.832 Y-0.75 Z3. J-0.75 K0. F150.\nG1 X7.804 Y-0.75 Z1.5 F150.\n"
-                      "G0 Y0.\nG18\nM135\n"),
+                      "G0 X18.858\nG0 Y0.\nG18\nM135\n"),
             std::string::npos)
       << p.nc;
   // The tool from the other side (tool axis -1,0,0, as linear_3x_PATH2's tool 33): C turns 180

@@ -210,6 +210,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   const Vec2 v = cl2(s, p);
   if (s.rapid_next) {
     s.prog.rapid(LathePoint{v.x, v.z});
+    if (s.tool.mills()) s.mill.rapid_reached(v.x);  // a live tool's XZ approach
     time_rapid(s, v);
   } else {
     if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");

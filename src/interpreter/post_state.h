@@ -2,6 +2,7 @@
 // The state of one post in progress: the machine, the program being written, the diagnostics and
 // the CL's modal state (units, position, feed, spindle, tool, thread sequences). Every statement
 // handler (statement_table.h) reads and changes it; one PostState per file, nothing shared.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -100,6 +101,10 @@ struct MillState {
   // The live tool's G41/G42 in force (CUTCOM): the plane does not change under it, and G40 is
   // written before the plane goes back (end_milling).
   CutterComp comp = CutterComp::kOff;
+  // The largest X (a radius, output units) a rapid of this live tool reached: its approach,
+  // which the CL put in the clear. end_milling goes back out to it before the post's own Y 0.
+  std::optional<double> rapid_x;
+  void rapid_reached(double x) { rapid_x = std::max(rapid_x.value_or(x), x); }
 };
 
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number
