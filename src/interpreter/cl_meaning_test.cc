@@ -47,13 +47,19 @@ TEST(ClMeaning, HeidenhainReadsAProgramInOneUnit) {
   EXPECT_EQ(p.errors, 1u);
   EXPECT_NE(p.diags.find("t.cl:6:7: error: machine 'heidenhain-pilot' (heidenhain) reads the whole "
                          "program in mm: the unit is set once, outside the program's blocks, and "
-                         "UNITS/INCHES cannot change it"),
+                         "UNITS/INCHES cannot change it (a control set to inches takes the "
+                         "whole CL with the machine key units: in, e.g. --set units=in)"),
             std::string::npos)
       << p.diags;
   const Posted start =
       post("UNITS/INCHES\nLOADTL/1\nRAPID\nGOTO/1,0,1\nFINI\n", load("heidenhain-pilot"));
   EXPECT_EQ(start.errors, 1u) << start.diags;
   EXPECT_NE(start.diags.find("t.cl:1:7: error: machine 'heidenhain-pilot'"), std::string::npos);
+  // The same inch CL on a control set to inches (units: in): posted, X a diameter in inches.
+  const Posted inch = post("UNITS/INCHES\nLOADTL/1\nRAPID\nGOTO/1,0,1\nFINI\n",
+                           load("heidenhain-pilot", {"units=in"}));
+  EXPECT_EQ(inch.errors, 0u) << inch.diags;
+  EXPECT_NE(inch.nc.find("G0 X2. Z1.\n"), std::string::npos) << inch.nc;
   expect_lines("heidenhain-pilot", cl("GOTO/10,0,5\nUNITS/MM\nGOTO/10,0,-1\n"), "Z-1.");
 }
 

@@ -60,10 +60,15 @@ void units_stmt(PostState& s, const Statement& st) {
   }
   const LengthUnit machine_unit = s.m.default_units == "in" ? LengthUnit::kInch : LengthUnit::kMm;
   if (s.m.control && s.m.control->one_unit_per_program && u != machine_unit) {
+    // A control whose unit parameter is the CL's takes the whole file: the machine's units key.
+    const bool inch = u == LengthUnit::kInch;
     error(s, st, a.loc,
           fmt::format("machine '{}' ({}) reads the whole program in {}: the unit is set once, "
-                      "outside the program's blocks, and UNITS/{} cannot change it",
-                      s.m.name, s.m.control->name, s.m.default_units, a.text));
+                      "outside the program's blocks, and UNITS/{} cannot change it (a control "
+                      "set to {} takes the whole CL with the machine key units: {}, e.g. "
+                      "--set units={})",
+                      s.m.name, s.m.control->name, s.m.default_units, a.text,
+                      inch ? "inches" : "mm", inch ? "in" : "mm", inch ? "in" : "mm"));
     return;
   }
   if (s.started && u != s.units) {
