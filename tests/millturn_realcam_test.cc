@@ -36,6 +36,10 @@ TEST(MillTurnRealcam, Linear3xPath2PostsAndVerifiesOnHaasSt20y) {
       << out;
   EXPECT_NE(out.find("G1 X-2.9 Y0.1 Z-0.017 F150.\nG1 X-2.9 Y-0.1 Z-0.02 F150.\n"),
             std::string::npos);
+  // Tool 33's section ends at Y0 as written (the CL's last point Y0): no Y return, so no X
+  // retract before it either; the live tool stops before tool 35 is loaded.
+  EXPECT_NE(out.find("G0 X17.4 Y0. Z-2.784\n(END_OP/MILL)\nM135\nT3501\n"), std::string::npos)
+      << out;
   // The radial tool 33 (tool axis -1,0,0): C180, X the depth: GOTO/-9.42906,0,-2.78441 is
   // X18.858.
   EXPECT_NE(out.find("M133 P15000\nG0 C180.\nM14\nG0 X18.858 Y0. Z-2.784\n"), std::string::npos)

@@ -574,7 +574,8 @@ namespace {
 // would move it across the face. Its limit: that X is clear at the approach's Y and Z, not
 // proven at Y 0.
 void y_home(PostState& s) {
-  if (s.mill.y == 0) return;
+  // Y as written: a Y that prints as 0 left the tool at the control's Y0 (linear_3x_PATH2).
+  if (s.prog.num("Y", s.mill.y) == s.prog.num("Y", 0.0)) return;
   NcWriter& w = s.prog.writer();
   const std::optional<LathePoint> at = s.prog.position();
   const double f = diameter_factor(s.m);
