@@ -38,27 +38,22 @@ struct Output {
   std::string out, err;
 };
 
-// rs274 crashes when two run at once: every rs274 on this machine runs under
-// /tmp/clpost-rs274.lock (tests/test_util.h) and /tmp/rs274.lock (by hand, `flock`), so the
-// oracle takes both, always in this order, for each run and no longer.
+// rs274 crashes when two run at once: every rs274 on this machine runs under one lock,
+// /tmp/clpost-rs274.lock (tests/test_util.h; by hand, `flock /tmp/clpost-rs274.lock rs274 …`),
+// which the oracle takes for each run and no longer.
 class Rs274Lock {
  public:
-  Rs274Lock() {
-    for (int i = 0; i < 2; ++i) {
-      fd_[i] = ::open(kPaths[i], O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-      if (fd_[i] >= 0) ::flock(fd_[i], LOCK_EX);
-    }
+  Rs274Lock() : fd_(::open("/tmp/clpost-rs274.lock", O_RDWR | O_CREAT | O_CLOEXEC, 0666)) {
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
   }
   ~Rs274Lock() {
-    for (int i = 1; i >= 0; --i)
-      if (fd_[i] >= 0) ::close(fd_[i]);
+    if (fd_ >= 0) ::close(fd_);
   }
   Rs274Lock(const Rs274Lock&) = delete;
   Rs274Lock& operator=(const Rs274Lock&) = delete;
 
  private:
-  static constexpr const char* kPaths[2] = {"/tmp/rs274.lock", "/tmp/clpost-rs274.lock"};
-  int fd_[2] = {-1, -1};
+  int fd_;
 };
 
 // `rs274 -t table [-b] -g ngc` in `dir`, its output and errors collected in files there.
