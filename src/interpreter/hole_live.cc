@@ -10,10 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "interpreter/millturn.h"
 #include "machine/machine_schema.h"
+#include "support/angles.h"
 #include "support/number_text.h"
 
 namespace clpost {
@@ -21,10 +21,6 @@ namespace clpost {
 namespace {
 
 constexpr double kOnAxis = 1e-4;  // CL units: a hole within this of the centre line is on it
-
-double degrees(double radians) {
-  return radians * 180 / std::numbers::pi;
-}
 
 // The hole's position in the face plane (CL units): along the CL's radial axis and its third.
 struct FacePoint {

@@ -12,14 +12,13 @@
 #include "interpreter/milling_motion.h"
 #include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
+#include "support/angles.h"
 
 namespace clpost {
 
 namespace {
 
 using namespace point3_math;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The words after the drive surface: ON[,n,INTOF] and the check surface's index; false
 // (reported) for another condition.

@@ -15,14 +15,13 @@
 #include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
 #include "laws/xzc_law.h"
+#include "support/angles.h"
 
 namespace clpost {
 
 using namespace point3_math;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 PartPoint part(Point3 p) {
   return {p.x, p.y, p.z};
@@ -109,7 +108,7 @@ std::optional<double> side_turn(PostState& s, const Statement& st) {
   const Point3 t = s.tool_axis;
   const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
   if (len > 0 && std::abs(std::abs(t.z / len) - 1) < 1e-6) return 0.0;
-  if (len > 0 && std::abs(t.z / len) < 1e-6) return std::atan2(t.y, t.x) * 180 / kPi;
+  if (len > 0 && std::abs(t.z / len) < 1e-6) return degrees(std::atan2(t.y, t.x));
   refuse(s, st,
          fmt::format("the tool axis ({}, {}, {}) is neither along Z (a face tool, 0,0,1 or "
                      "0,0,-1) nor radial (k 0): a tilted live tool is not written",
@@ -244,7 +243,7 @@ void xzc_move(PostState& s, Point3 from, Point3 to, double index, bool rapid, do
 // Part point `p` in the machine's X Y Z with C turned `turn` degrees past the index: the
 // point turned back by `turn` (X as a radius).
 Point3 machine_xyz(Point3 p, double turn) {
-  const double a = -turn * kPi / 180, c = std::cos(a), n = std::sin(a);
+  const double a = radians(-turn), c = std::cos(a), n = std::sin(a);
   return {p.x * c - p.y * n, p.x * n + p.y * c, p.z};
 }
 

@@ -33,12 +33,11 @@
 
 #include "interpreter/clock.h"
 #include "interpreter/millturn.h"
+#include "support/angles.h"
 
 namespace clpost {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A point of the face plane at C0 (the mode's X and virtual axis, both radii).
 struct FacePoint {
@@ -47,7 +46,7 @@ struct FacePoint {
 
 // Part point `p` turned by C index `index` (degrees): where it is at C0.
 FacePoint at_c0(Point3 p, double index) {
-  const double a = index * kPi / 180, c = std::cos(a), n = std::sin(a);
+  const double a = radians(index), c = std::cos(a), n = std::sin(a);
   return {p.x * c - p.y * n, p.x * n + p.y * c};
 }
 
@@ -184,7 +183,7 @@ void polar_exit(PostState& s) {
   s.mill.polar = false;
   // C is at the angle of the tool's point in the plane (where it entered when on the centre).
   const double x = s.mill.polar_x, y = s.mill.polar_y;
-  const double c = std::hypot(x, y) > 1e-9 ? std::atan2(y, x) * 180 / kPi : 0;
+  const double c = std::hypot(x, y) > 1e-9 ? degrees(std::atan2(y, x)) : 0;
   if (s.m.c_rotation == CRotation::kRollover)
     s.c.angle = c < 0 ? c + 360 : c;
   else

@@ -1,5 +1,6 @@
 // DIN 76-1 thread undercuts: the table and the contour (din76_undercut.h).
 #include "laws/din76_undercut.h"
+#include "support/angles.h"
 
 #include <array>
 #include <cmath>
@@ -103,7 +104,7 @@ const Din76Row* din76_row(char form, double pitch) {
 }
 
 UndercutContour din76_contour(double d, double at, char form, int side, const Din76Row& row) {
-  const double tan30 = std::tan(30 * std::numbers::pi / 180);
+  const double tan30 = std::tan(radians(30));
   const double s = side < 0 ? -1 : 1;
   UndercutContour c;
   if (!internal_form(form)) {

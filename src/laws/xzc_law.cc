@@ -1,4 +1,5 @@
 #include "laws/xzc_law.h"
+#include "support/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,6 @@ namespace clpost {
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180;
 constexpr int kMaxDepth = 40;       // halvings of one line: 2^-40 of it is far below any tolerance
 constexpr double kMaxTurn = 90;     // degrees of C in one piece
 constexpr double kOnCentre = 1e-9;  // a radius this small is the centre line
@@ -50,16 +50,16 @@ struct Splitter {
 XzcPoint xzc_point(PartPoint p, double index, double near) {
   const double r = std::hypot(p.x, p.y);
   if (r < kOnCentre) return {0, near, p.z};  // on the centre line any C is the point
-  return {r, nearest(index + std::atan2(p.y, p.x) / kDeg, near), p.z};
+  return {r, nearest(index + degrees(std::atan2(p.y, p.x)), near), p.z};
 }
 
 PartPoint part_point(XzcPoint q, double index) {
-  const double a = (q.c - index) * kDeg;
+  const double a = radians(q.c - index);
   return {q.r * std::cos(a), q.r * std::sin(a), q.z};
 }
 
 PartPoint part_of_machine(double x, double y, double z, double c) {
-  const double a = c * kDeg, cs = std::cos(a), sn = std::sin(a);
+  const double a = radians(c), cs = std::cos(a), sn = std::sin(a);
   return {x * cs - y * sn, x * sn + y * cs, z};
 }
 

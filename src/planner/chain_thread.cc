@@ -16,6 +16,7 @@
 #include "planner/plan_report.h"
 #include "planner/planner.h"
 #include "planner/pullout.h"
+#include "support/angles.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 
@@ -71,7 +72,7 @@ bool check_segment(const MultiThreadInput& in, size_t j, bool along_z, double se
         sense > 0 ? "+" : "-", lead_axis(along_z));
   } else if (std::fabs(radial_of(d, along_z)) > std::fabs(lead_of(d, along_z)) + kLengthEps) {
     const double off =
-        deg(std::atan2(std::fabs(radial_of(d, along_z)), std::fabs(lead_of(d, along_z))));
+        degrees(std::atan2(std::fabs(radial_of(d, along_z)), std::fabs(lead_of(d, along_z))));
     why = fmt::format(
         "the chain segment from {} to {} is {}° off the {} axis; a chain segment "
         "may be at most 45° off it",
@@ -242,7 +243,7 @@ ThreadPlan chain_header(const MultiThreadInput& in, const PlannerSettings& setti
 
 // The infeed must cross the lead axis so that every pass can be reached from the clear line.
 bool check_infeed_crosses(const MultiThreadInput& in, const MultiGeometry& g, Reporter& r) {
-  if (std::fabs(radial_of(g.u, g.lead_along_z)) >= std::sin(rad(10)) - kAngleEps) return true;
+  if (std::fabs(radial_of(g.u, g.lead_along_z)) >= std::sin(radians(10)) - kAngleEps) return true;
   return r.error(in.words.cutang.set ? word_site(in, in.words.cutang.loc) : on_site(in),
                  fmt::format("CUTANG {} is within 10° of the chain's lead axis {}: the infeed "
                              "must cross it",

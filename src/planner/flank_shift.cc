@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "planner/plan_report.h"
+#include "support/angles.h"
 #include "support/vec2_math.h"
 
 namespace clpost {
@@ -24,7 +25,7 @@ FlankShifts flank_shifts(const std::vector<double>& depths, int option, double c
   FlankShifts s;
   s.sigma.assign(npass, 0);
   if (option != 0 && is_axis_angle(cutang)) {
-    const double k = std::tan(vec2_math::rad(tool_angle / 2));
+    const double k = std::tan(radians(tool_angle / 2));
     const bool single_edge = option == 1 || option == 3;
     for (size_t i = 0; i < npass; ++i) {
       const int pass_no = static_cast<int>(i) + 1;

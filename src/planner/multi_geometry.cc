@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "planner/multi_sites.h"
+#include "support/angles.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 
@@ -21,7 +22,7 @@ namespace {
 bool given_cutang(const MultiThreadInput& in, const MultiGeometry& g, Reporter& r) {
   const double theta = in.words.cutang.value;
   const Vec2 u = direction(theta);
-  const double off = deg(std::acos(std::min(1.0, std::fabs(dot(u, g.t)))));
+  const double off = degrees(std::acos(std::min(1.0, std::fabs(dot(u, g.t)))));
   if (off > 10 + kAngleEps) return true;
   return r.error(
       word_site(in, in.words.cutang.loc),

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "planner/planner_test_util.h"
+#include "support/angles.h"
 
 namespace clpost {
 namespace {
@@ -291,7 +292,7 @@ TEST(Planner, MachineDefaultsForOptionAndToolAngle) {
   EXPECT_EQ(r.plan.tool_angle, 55);
   // OPTION 3: 0.5, 1, 1.5, 2; single edge at 55/2: sigma_4 = 2 tan 27.5 = 1.041134.
   EXPECT_EQ(depths(r.plan), (std::vector<double>{0.5, 1, 1.5, 2}));
-  EXPECT_NEAR(r.plan.passes[3].shift, 2 * std::tan(27.5 * std::numbers::pi / 180), 1e-12);
+  EXPECT_NEAR(r.plan.passes[3].shift, 2 * std::tan(radians(27.5)), 1e-12);
   EXPECT_NEAR(r.plan.passes[3].shift, 1.041134, 1e-6);
   // The CL's words win over the machine's defaults.
   Planned w = plan("THREAD/ON,DEPTH,2,CUTS,4,OPTION,0,TLANGL,60", s);
@@ -466,7 +467,7 @@ TEST(Planner, AtanglNegativeLeansBack) {
   // ATANGL,-20,1: 1 out and tan(-20) = -0.363970 along t, i.e. +0.363970 in Z: 110 degrees.
   Planned r = plan("THREAD/ON,DEPTH,1,ATANGL,-20,1");
   ASSERT_TRUE(r.ok) << r.messages;
-  EXPECT_POINT(*r.plan.pullout, 1, std::tan(20 * std::numbers::pi / 180));
+  EXPECT_POINT(*r.plan.pullout, 1, std::tan(radians(20)));
   EXPECT_TRUE(r.plan.pullout_linear);
 }
 
@@ -514,9 +515,8 @@ TEST(Planner, ChamfrAngles) {
     double dx, dz;
     bool linear;
   };
-  const double t20 = std::tan(20 * std::numbers::pi / 180),
-               t29 = std::tan(29 * std::numbers::pi / 180),
-               t61 = std::tan(61 * std::numbers::pi / 180);
+  const double t20 = std::tan(radians(20)), t29 = std::tan(radians(29)),
+               t61 = std::tan(radians(61));
   const Case cases[] = {
       {"CHAMFR,2,20", 2 * t20, -2, true},          // 20 degrees
       {"CHAMFR,1,29", t29, -1, true},              // just below 30

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "planner/multi_sites.h"
+#include "support/angles.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 // pitch/(2 tan 30): the full depth of a 60 degree thread, the default pull-out and return height.
 double default_height(double pitch) {
-  return pitch / (2 * std::tan(rad(30)));
+  return pitch / (2 * std::tan(radians(30)));
 }
 
 // One way to define the pull-out, with where it was given (for the "more than one" error).
@@ -88,10 +89,10 @@ bool third_goto_pullout(const MultiThreadInput& in, const MultiGeometry& g, Pull
 void word_pullout(const ThreadWords& w, const MultiGeometry& g, double pitch, Pullout& out) {
   if (w.atangl.set) {
     const double h = w.atangl.height > 0 ? w.atangl.height : default_height(pitch);
-    out.delta = h * g.out_dir + (h * std::tan(rad(w.atangl.angle))) * g.t;
+    out.delta = h * g.out_dir + (h * std::tan(radians(w.atangl.angle))) * g.t;
   } else if (w.chamfr.set && w.chamfr.length != 0) {
     const double l = std::fabs(w.chamfr.length);
-    out.delta = l * g.t + (l * std::tan(rad(w.chamfr.angle))) * g.out_dir;
+    out.delta = l * g.t + (l * std::tan(radians(w.chamfr.angle))) * g.out_dir;
     if (w.chamfr.length < 0) out.shorten = l;
   }
 }
@@ -141,7 +142,7 @@ bool make_pullout(const MultiThreadInput& in, const MultiGeometry& g, double pit
     word_pullout(in.words, g, pitch, p);
   }
   if (p.delta) {
-    const double chamfer_angle = deg(std::atan2(dot(*p.delta, g.out_dir), dot(*p.delta, g.t)));
+    const double chamfer_angle = degrees(std::atan2(dot(*p.delta, g.out_dir), dot(*p.delta, g.t)));
     p.linear = chamfer_angle < 30 - kAngleEps || chamfer_angle > 60 + kAngleEps;
   }
   out = p;

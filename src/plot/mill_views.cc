@@ -7,6 +7,7 @@
 
 #include "laws/xzc_law.h"
 #include "simulator/mill_arc.h"
+#include "support/angles.h"
 
 namespace clpost {
 namespace {
@@ -110,7 +111,7 @@ MillViewsDrawn MillViews::finish(const std::vector<SimHole>& holes, LengthUnit u
     }
     if (h.radial) {
       const double deg = *h.c - 360 * std::floor(*h.c / 360);
-      out.radial_holes.push_back({unroll_r_ * deg * std::numbers::pi / 180, h.z});
+      out.radial_holes.push_back({unroll_r_ * radians(deg), h.z});
       continue;
     }
     const PartPoint p = part_of_machine(h.x, 0, 0, *h.c);

@@ -1,6 +1,7 @@
 // The face and peripheral views' geometry (plot/mill_views.h): machine X, Y, Z, C mapped back to
 // the part as verify maps them, C indexing drawn as the arc it sweeps, G2/G3 along their arcs.
 #include "plot/mill_views.h"
+#include "support/angles.h"
 
 #include <gtest/gtest.h>
 
@@ -67,9 +68,9 @@ TEST(MillViews, ACIndexIsTheArcItSweepsOnThePart) {
   v.mill_move(with_tool(at(20, 0, 5, 350, false, 18), 3));  // a feed, so that the view is drawn
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   EXPECT_EQ(d.face.measure.moves[0], 38u);
-  EXPECT_NEAR(d.face.measure.length[0], 38 * 2 * 30 * std::sin(2.5 * std::numbers::pi / 180), 1e-9);
+  EXPECT_NEAR(d.face.measure.length[0], 38 * 2 * 30 * std::sin(radians(2.5)), 1e-9);
   EXPECT_NEAR(d.face.measure.all.x_hi, 30, 1e-9);
-  EXPECT_NEAR(d.face.measure.all.x_lo, 30 * std::sin(-10 * std::numbers::pi / 180), 1e-9);
+  EXPECT_NEAR(d.face.measure.all.x_lo, 30 * std::sin(-radians(10)), 1e-9);
   EXPECT_EQ(d.face.measure.moves[1], 1u);
 }
 
@@ -86,8 +87,7 @@ TEST(MillViews, AG3InG17IsDrawnAlongItsArc) {
   v.mill_move(with_tool(g3, 3));
   const MillViewsDrawn d = v.finish({}, LengthUnit::kMm);
   EXPECT_EQ(d.face.measure.moves[1], 54u);
-  EXPECT_NEAR(d.face.measure.length[1],
-              54 * 2 * std::hypot(10, 10) * std::sin(2.5 * std::numbers::pi / 180), 1e-9);
+  EXPECT_NEAR(d.face.measure.length[1], 54 * 2 * std::hypot(10, 10) * std::sin(radians(2.5)), 1e-9);
   EXPECT_NEAR(d.face.measure.all.x_hi, std::hypot(10, 10), 1e-9);  // through +Y (C90)
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "plot/backplot_svg.h"
+#include "support/angles.h"
 
 namespace clpost {
 
@@ -37,7 +38,7 @@ bool straight_on(Vec2 a, Vec2 p, Vec2 q) {
   const double ux = p.x - a.x, uz = p.z - a.z, vx = q.x - p.x, vz = q.z - p.z;
   const double nu = std::hypot(ux, uz), nv = std::hypot(vx, vz);
   if (nu == 0 || nv == 0) return true;
-  return (ux * vx + uz * vz) / (nu * nv) >= std::cos(kTurnDegrees * std::numbers::pi / 180);
+  return (ux * vx + uz * vz) / (nu * nv) >= std::cos(radians(kTurnDegrees));
 }
 
 // "1 000 000": thousands set apart by spaces.

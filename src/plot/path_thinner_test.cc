@@ -11,6 +11,7 @@
 
 #include "plot/backplot_svg.h"
 #include "plot/thread_section.h"
+#include "support/angles.h"
 
 namespace clpost {
 namespace {
@@ -66,7 +67,7 @@ TEST(PathThinner, ATurnAboveTheAngleSurvives) {
   expect_move(p.path.moves[1], MoveKind::kFeed, {10, -50}, {20, -60});
   // A turn of 3 degrees (under kTurnDegrees) after a 50 mm leg: the corner sits 50 mm *
   // sin(1.5 deg) = 1.3 mm (22 px) off the chord that would replace it, so it stays too.
-  const double s = std::sin(3 * std::numbers::pi / 180), c = std::cos(3 * std::numbers::pi / 180);
+  const double s = std::sin(radians(3)), c = std::cos(radians(3));
   const ThinnedPath q = thinned(feeds({{10, 0}, {10, -50}, {10 + 50 * s, -50 - 50 * c}}));
   EXPECT_EQ(q.path.moves.size(), 2u);
 }

@@ -1,4 +1,5 @@
 #include "plot/thread_profile.h"
+#include "support/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace clpost {
 
 double half_angle_tan(const ThreadSection& s) {
   const double a = std::isfinite(s.tool_angle) ? std::clamp(s.tool_angle, 1.0, 179.0) : 60.0;
-  return std::tan(a / 2 * std::numbers::pi / 180);
+  return std::tan(radians(a / 2));
 }
 
 double groove_pitch(const ThreadSection& s) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "plot/svg_test_util.h"
+#include "support/angles.h"
 
 namespace clpost {
 namespace {
@@ -167,7 +168,7 @@ TEST(ThreadSectionSvg, SpringPassSharesTheFinishTipLabel) {
   s.pitch = 1.5;
   s.lead = 1.5;
   s.depth = 0.92;
-  const double k = std::tan(29.5 * std::numbers::pi / 180);
+  const double k = std::tan(radians(29.5));
   s.passes = {{1, 0, 0.5, 0.5 * k, PassKind::kRough},
               {2, 0, 0.8, 0.8 * k, PassKind::kRough},
               {3, 0, 0.92, 0.92 * k, PassKind::kFinish},

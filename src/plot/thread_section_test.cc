@@ -9,6 +9,7 @@
 
 #include "planner/run_in.h"
 #include "plot/thread_profile.h"
+#include "support/angles.h"
 
 namespace clpost {
 namespace {
@@ -33,7 +34,7 @@ ThreadPlan two_start_plan() {
     t.n = i / 2 + 1;
     t.start = i % 2;
     t.depth = depth[i];
-    t.shift = depth[i] * std::tan(27.5 * std::numbers::pi / 180);
+    t.shift = depth[i] * std::tan(radians(27.5));
     t.kind = i >= 4 ? PassKind::kFinish : PassKind::kRough;
     t.from = {1, 2};
     p.passes.push_back(t);

@@ -11,16 +11,13 @@
 
 #include "reader/cldata_reader.h"
 #include "reader/cldata_words.h"
+#include "support/angles.h"
 
 namespace clpost {
 
 using namespace cldata;
 
-namespace {
-
-constexpr double kDegree = 0.01745329251994329577;
-
-}  // namespace
+namespace {}  // namespace
 
 std::array<double, 7> cldata::ncl_apt_cutter(std::span<const double> ncl) {
   std::array<double, 7> p{};
@@ -34,9 +31,9 @@ std::array<double, 7> cldata::ncl_apt_cutter(std::span<const double> ncl) {
   if (r != 0) {
     e = d / 2 - r, f = r;
     if (a > 0 && a < 90) {
-      d = d - 2 * r + 2 * r * std::tan(kDegree * (90 - a) / 2);
+      d = d - 2 * r + 2 * r * std::tan(radians(90 - a) / 2);
     } else if (a < 0 && a > -90) {
-      d = d + 2 * r * (std::tan(kDegree * -a / 2) + 1) / std::tan(kDegree * (90 + a));
+      d = d + 2 * r * (std::tan(radians(-a) / 2) + 1) / std::tan(radians(90 + a));
     }
   }
   return {d, r, e, f, p[6], a, p[2]};

@@ -11,6 +11,7 @@
 #include "reader/number.h"
 #include "simulator/control_readback.h"
 #include "simulator/sim_state.h"
+#include "support/angles.h"
 
 namespace clpost {
 namespace sim {
@@ -375,8 +376,7 @@ bool polar_block(State& s, const NcBlock& b, const Codes& c) {
   if (has_code(b, c.polar_off)) {
     s.polar = false;
     const double r = std::hypot(s.polar_x, s.polar_y);
-    if (r > 1e-9)
-      s.c = s.polar_c + std::atan2(s.polar_y, s.polar_x) * 57.29577951308232;  // degrees
+    if (r > 1e-9) s.c = s.polar_c + degrees(std::atan2(s.polar_y, s.polar_x));
     s.pos.x = r;
     s.pos_known = s.pos_known || s.polar_known;
     return true;

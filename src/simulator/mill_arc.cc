@@ -1,4 +1,5 @@
 #include "simulator/mill_arc.h"
+#include "support/angles.h"
 
 #include <algorithm>
 #include <array>
@@ -45,9 +46,8 @@ std::vector<MillAxes> mill_arc_points(const SimMillMove& from, const SimMillMove
   } else {
     while (sweep >= -1e-12) sweep -= turn;
   }
-  const int n = std::max(
-      min_steps,
-      static_cast<int>(std::ceil(std::fabs(sweep) / (max_step_degrees * std::numbers::pi / 180))));
+  const int n = std::max(min_steps,
+                         static_cast<int>(std::ceil(std::fabs(sweep) / radians(max_step_degrees))));
   std::vector<MillAxes> out;
   for (int i = 1; i <= n; ++i) {
     const double t = static_cast<double>(i) / n, g = a0 + sweep * t;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/angles.h"
 #include "support/vec2.h"
 
 namespace clpost::vec2_math {
@@ -29,27 +30,20 @@ inline double length(Vec2 a) {
   return std::hypot(a.x, a.z);
 }
 
-inline double rad(double deg) {
-  return deg * std::numbers::pi / 180;
-}
-inline double deg(double rad) {
-  return rad * 180 / std::numbers::pi;
-}
-
 // The unit vector at `deg` degrees in the (Z, X) plane, measured from +X toward +Z.
 // Multiples of 90 degrees give exact axis vectors (no 1e-16 crumbs).
-inline Vec2 direction(double degrees) {
-  double r = std::fmod(degrees, 360.0);
+inline Vec2 direction(double deg) {
+  double r = std::fmod(deg, 360.0);
   if (r < 0) r += 360;
   if (r == 0) return {1, 0};
   if (r == 90) return {0, 1};
   if (r == 180) return {-1, 0};
   if (r == 270) return {0, -1};
-  return {std::cos(rad(degrees)), std::sin(rad(degrees))};
+  return {std::cos(radians(deg)), std::sin(radians(deg))};
 }
 // The angle of `v` in the same convention, in [0, 360).
 inline double angle_of(Vec2 v) {
-  double a = deg(std::atan2(v.z, v.x));
+  double a = degrees(std::atan2(v.z, v.x));
   if (a < 0) a += 360;
   if (a >= 360) a -= 360;
   return a;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "laws/cut_pass.h"
+#include "support/angles.h"
 
 namespace clpost {
 
@@ -37,10 +38,9 @@ std::string position_difference(const Hole& h, const SimHole& p, double tol) {
     return h.c ? fmt::format("C is not written, CL C{:.4f}", *h.c)
                : fmt::format("at C{:.4f} off the centre line, where the CL has no C", *p.c);
   const double turn = std::remainder(*p.c - *h.c, 360.0);
-  if (std::fabs(turn) * std::numbers::pi / 180 * std::fabs(radius) > tol)
+  if (radians(std::fabs(turn)) * std::fabs(radius) > tol)
     return fmt::format("at C{:.4f}, CL C{:.4f} ({:.4f} mm along the circle of radius {:.4f})", *p.c,
-                       *h.c, std::fabs(turn) * std::numbers::pi / 180 * std::fabs(radius),
-                       std::fabs(radius));
+                       *h.c, radians(std::fabs(turn)) * std::fabs(radius), std::fabs(radius));
   return {};
 }
 

@@ -9,12 +9,12 @@
 
 #include "laws/cut_pass.h"
 #include "simulator/mill_arc.h"
+#include "support/angles.h"
 
 namespace clpost {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSamples = 8;            // each feed move is checked at eighths, as the control moves
 constexpr double kArcStepDegrees = 5;  // an arc at least at its eighths, at most 5 degrees apart
 constexpr size_t kWindow = 1 << 14;    // program moves held for CL motions not yet posted
@@ -66,10 +66,10 @@ PartPoint nearest(const std::vector<PartPoint>& pts, PartPoint q) {
 std::string difference(Axes a, PartPoint p, double tol) {
   const double r = std::hypot(a.x, a.y), rc = std::hypot(p.x, p.y);
   if (std::abs(a.y) < 1e-9 && std::abs(r - rc) <= tol && std::abs(a.z - p.z) <= tol && r > 0) {
-    double cc = std::atan2(p.y, p.x) * 180 / kPi;
+    double cc = degrees(std::atan2(p.y, p.x));
     cc += 360 * std::round((a.c - cc) / 360);
     return fmt::format("at C{:.4f}, CL C{:.4f} ({:.4f} mm along the circle of radius {:.4f})", a.c,
-                       cc, r * std::abs(a.c - cc) * kPi / 180, r);
+                       cc, r * radians(std::abs(a.c - cc)), r);
   }
   return fmt::format(
       "at X{:.4f} (radius) Y{:.4f} Z{:.4f} C{:.4f}, {:.4f} mm from the CL path at ({:.4f}, "

@@ -9,6 +9,7 @@
 
 #include "machine/yaml_text.h"
 #include "planner/plan_format.h"
+#include "support/angles.h"
 
 namespace clpost {
 
@@ -95,7 +96,7 @@ void chain_details(ThreadPlan& p) {
   const double tx = b.x - a.x, tz = b.z - a.z;
   const double along = (p.pullout->x * tx + p.pullout->z * tz) / std::hypot(tx, tz);
   const double out = std::fabs(p.pullout->x * tz - p.pullout->z * tx) / std::hypot(tx, tz);
-  const double angle = std::atan2(out, along) * 180 / std::numbers::pi;
+  const double angle = degrees(std::atan2(out, along));
   p.pullout_linear = angle < 30 - 1e-9 || angle > 60 + 1e-9;
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "controls/fanuc/fanuc_templates.h"
+#include "support/angles.h"
 #include "support/vec2_math.h"
 #include "writer/number_format.h"
 
@@ -35,7 +36,7 @@ std::string read_passes(const ThreadPlan& plan, int start, CyclePlan& out) {
     out.shifts.push_back(p.shift);
     out.cuts.push_back(Cut{p.start, p.depth, p.from, p.to, p.pullout_end, {}});
     if (p.depth <= 1e-12) continue;
-    const double a = deg(std::atan(p.shift / p.depth));
+    const double a = degrees(std::atan(p.shift / p.depth));
     if (flank && std::fabs(*flank - a) > 1e-6) one_angle = false;
     if (!flank) flank = a;
   }
@@ -54,7 +55,7 @@ std::string read_chamfer(const ThreadPlan& plan, std::string_view cycle, CyclePl
     return fmt::format("pull-out ({}) is not a chamfer along the thread: {} has none",
                        describe_pullout(plan), cycle);
   out.chamfer = along;
-  out.chamfer_angle = deg(std::atan2(up, along));
+  out.chamfer_angle = degrees(std::atan2(up, along));
   return {};
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "machine/machine.h"
+#include "support/angles.h"
 #include "support/vec2_math.h"
 
 namespace clpost {
@@ -19,7 +20,7 @@ std::vector<Cut> expand_flank_cycle(const FlankCycle& g, const std::vector<doubl
   const double dirz = g.end.z < g.start.z ? -1.0 : 1.0;
   const double slope = g.taper / span;
   const double cos_t = 1 / std::sqrt(1 + slope * slope);
-  const double tan_f = std::tan(rad(g.flank));
+  const double tan_f = std::tan(radians(g.flank));
   const double h_max = *std::max_element(heights.begin(), heights.end());
   const double sigma_max = h_max * tan_f;
   for (double h : heights) {
@@ -35,7 +36,7 @@ std::vector<Cut> expand_flank_cycle(const FlankCycle& g, const std::vector<doubl
     if (g.chamfer > 0) {
       c.to.z = ze - dirz * g.chamfer;
       c.to.x = line(c.to.z);
-      c.end = {c.to.x + s * g.chamfer * std::tan(rad(g.chamfer_angle)), ze};
+      c.end = {c.to.x + s * g.chamfer * std::tan(radians(g.chamfer_angle)), ze};
     } else {
       c.to = {line(ze), ze};
       c.end = c.to;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "machine/machine.h"
+#include "support/angles.h"
 
 namespace clpost {
 
@@ -47,7 +48,7 @@ std::vector<Cut> expand_haas_g76(const HaasG76Words& w, Vec2 start, const HaasSe
     if (c.empty()) return {};  // words the figure cannot draw (a pass at no depth, ...)
     if (gi.shifted_end && gi.flank > 0) {
       const double h_max = *std::max_element(depths.begin(), depths.end());
-      const double tan_f = std::tan(gi.flank * std::numbers::pi / 180);
+      const double tan_f = std::tan(radians(gi.flank));
       const double dirz = g.end.z < g.start.z ? -1.0 : 1.0;
       const double back = (h_max - depths[i]) * tan_f * dirz;
       c[0].to.z -= back;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "support/angles.h"
 #include "support/vec2_math.h"
 
 namespace clpost {
@@ -81,7 +82,7 @@ std::vector<double> cut_depths(const HeidenhainG31& w) {
 // How far every cut is offset along the element: σ = depth·tan(A), none on the odd-numbered cuts
 // when the offset alternates (they plunge).
 std::vector<double> flank_shifts(const std::vector<double>& depths, double a, bool alternating) {
-  const double tan_a = std::tan(rad(a));
+  const double tan_a = std::tan(radians(a));
   std::vector<double> sigma;
   for (size_t i = 0; i < depths.size(); ++i) {
     const bool straight = alternating && (i + 1) % 2 == 1;

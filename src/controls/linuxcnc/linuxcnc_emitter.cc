@@ -9,6 +9,7 @@
 #include "controls/linuxcnc/linuxcnc_templates.h"
 #include "laws/written_value.h"
 #include "planner/run_in.h"
+#include "support/angles.h"
 #include "support/vec2_math.h"
 #include "writer/number_format.h"
 
@@ -82,7 +83,7 @@ std::string exit_taper_words(const ThreadPlan& plan, const Machine& m, Vec2 t, V
     return fmt::format(
         "the plan feeds its pull-out with G1, {:.1f} degrees to the thread is "
         "outside 30..60; G76 threads its exit taper",
-        deg(std::atan2(rise, along)));
+        degrees(std::atan2(rise, along)));
   if (std::fabs(rise - d_max) > tol)
     return fmt::format(
         "G76's exit taper rises by the thread depth {:.4f}; the plan's "
@@ -191,7 +192,7 @@ std::optional<LinuxcncG76Block> LinuxcncG76Emitter::words_for(const ThreadPlan& 
   w.i = as_read(m, "g76_depth", dm * (plan.p1.x - b.start.x));
   w.j = read_up(m, "g76_depth", dm * plan.passes.front().depth);
   w.k = as_read(m, "g76_depth", dm * d_max);
-  w.q = as_read(m, "g76_angle", deg(std::atan2(dot(full->from - cut_start, t), d_max)));
+  w.q = as_read(m, "g76_angle", degrees(std::atan2(dot(full->from - cut_start, t), d_max)));
   w.h = n_full - 1;
   return b;
 }

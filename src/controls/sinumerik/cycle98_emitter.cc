@@ -11,6 +11,7 @@
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
 #include "planner/run_in.h"
+#include "support/angles.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 
@@ -84,7 +85,7 @@ std::string ladder_words(const ThreadPlan& plan, const Machine& m, Cycle98Words&
   w.tdep = as_read(m, kDepthFormat, full);
   w.fal = finish >= 0 ? as_read(m, kDepthFormat, finish - rough) : 0;
   const double shift = (deepest->from.z - p1.z) * a;
-  w.iang = as_read(m, kAngleFormat, deg(std::atan2(shift, full)));
+  w.iang = as_read(m, kAngleFormat, degrees(std::atan2(shift, full)));
   const bool section = plan.option == 1 || plan.option == 2;
   w.vari = plan.side == ThreadSide::kInternal ? (section ? 4 : 2) : (section ? 3 : 1);
   return {};

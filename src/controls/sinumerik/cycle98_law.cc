@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/angles.h"
 #include "support/vec2_math.h"
 
 namespace clpost {
@@ -82,7 +83,7 @@ Cycle98Expansion expand_cycle98(const Cycle98Words& w) {
   const Vec2 first = (1 / length(pts[1] - pts[0])) * (pts[1] - pts[0]);
   const Vec2 last =
       (1 / length(pts.back() - pts[pts.size() - 2])) * (pts.back() - pts[pts.size() - 2]);
-  const double tan_iang = std::tan(w.iang * std::numbers::pi / 180);
+  const double tan_iang = std::tan(radians(w.iang));
   const double slide = w.tdep * std::max(0.0, tan_iang) / dot(last, a) + w.rop;
   Vec2 into{last.z, -last.x};  // the last segment's normal toward the material
   if (dot(into, in) < 0) into = -into;

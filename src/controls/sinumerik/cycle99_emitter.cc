@@ -8,6 +8,7 @@
 #include "controls/sinumerik/sinumerik_templates.h"
 #include "laws/written_value.h"
 #include "planner/run_in.h"
+#include "support/angles.h"
 #include "support/number_text.h"
 #include "support/vec2_math.h"
 #include "writer/number_format.h"
@@ -144,7 +145,7 @@ std::string flank_words(const ThreadPlan& plan, const Machine& m, const Cycle99F
         "{:.4f}, not {:.4f}",
         p->n, s, p->depth * tan_iang);
   }
-  const double iang = deg(std::atan(tan_iang));
+  const double iang = degrees(std::atan(tan_iang));
   if (std::fabs(iang) > plan.tool_angle / 2 + 1e-6)
     return fmt::format(
         "IANG {:.4f} is more than half the tool angle {} (CYCLE99 allows at "
@@ -176,7 +177,7 @@ std::string runout_words(const ThreadPlan& plan, const Machine& m, const Cycle99
       return fmt::format(
           "CYCLE99's run-out ROP leaves the thread at 45 degrees "
           "(unverified); this run-out rises {} over {} ({} degrees)",
-          num_text(out), num_text(along), num_text(deg(std::atan2(out, along))));
+          num_text(out), num_text(along), num_text(degrees(std::atan2(out, along))));
     rop = along;
   }
   w.rop = as_read(m, kDepthFormat, rop);

@@ -1,4 +1,5 @@
 #include "controls/sinumerik/cycle99_law.h"
+#include "support/angles.h"
 
 #include <fmt/format.h>
 
@@ -97,7 +98,7 @@ std::vector<double> paraxial_depths(const Cycle99Words& w) {
 std::vector<Cut> thread_cuts(const Cycle99Words& w, const ThreadLine& line,
                              const std::vector<double>& depths) {
   const Vec2 t = line.t, n = line.n;
-  const double tan_iang = std::tan(w.iang * std::numbers::pi / 180);
+  const double tan_iang = std::tan(radians(w.iang));
   const double shift_full = w.tdep * line.cosv * tan_iang;
   const Vec2 start = add(line.ps, mul(-w.app, t));
   const Vec2 end = add(line.pf, mul(-w.rop, t));
