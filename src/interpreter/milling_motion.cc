@@ -23,10 +23,6 @@ using namespace point3_math;
 
 namespace {
 
-PartPoint part(Point3 p) {
-  return {p.x, p.y, p.z};
-}
-
 // A milling motion clpost does not write: an error at the first of the tool's, the rest left
 // out (one cause, one message).
 void refuse(PostState& s, const Statement& st, const std::string& why) {
@@ -224,14 +220,13 @@ void xzc_block(PostState& s, XzcPoint from, const XzcPiece& pc, bool rapid, doub
 void xzc_move(PostState& s, Point3 from, Point3 to, double index, bool rapid, double feed,
               double tol) {
   const double c0 = *s.c.angle;
-  const PartPoint a = part(from), b = part(to);
   std::vector<XzcPiece> pieces;
   if (rapid) {
-    pieces.push_back({xzc_point(b, index, c0), 0, false});  // the control's own path
+    pieces.push_back({xzc_point(to, index, c0), 0, false});  // the control's own path
   } else {
-    pieces = xzc_line(a, b, index, c0, tol);
+    pieces = xzc_line(from, to, index, c0, tol);
   }
-  XzcPoint at = xzc_point(a, index, c0);
+  XzcPoint at = xzc_point(from, index, c0);
   at.c = c0;
   for (const XzcPiece& pc : pieces) {
     xzc_block(s, at, pc, rapid, feed);
@@ -411,7 +406,7 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
   if (!s.m.y_axis && !polar) xzc_plane(s, ms.radial);
   Point3 at = from;
   for (const Point3& p : points) {
-    keep_mill(s, {st.loc.line, part(at), part(p), ms.index, false});
+    keep_mill(s, {st.loc.line, at, p, ms.index, false});
     const Point3 q = &p == &points.back() ? machine_tip(s, ms, p) : p;
     if (!s.m.y_axis && !polar) xzc_move(s, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
     at = p;
@@ -492,7 +487,7 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                       circle->loc.line};
     return mill_arc(s, st, arc, from, p, ms);
   }
-  keep_mill(s, {st.loc.line, part(from), part(p), ms.index, rapid});
+  keep_mill(s, {st.loc.line, from, p, ms.index, rapid});
   if (polar_motion(s)) {
     polar_line(s, st, from, p, ms.index, rapid, ms.feed);
     return;

@@ -5,7 +5,7 @@
 // `using namespace clpost::point3_math;` in a .cc file to use it.
 #include <cmath>
 
-#include "interpreter/post_state.h"
+#include "laws/xzc_law.h"
 
 namespace clpost::point3_math {
 

@@ -45,11 +45,6 @@ struct PostStats {
   size_t passes = 0;
 };
 
-// A CL point as read (before the lathe frame is applied).
-struct Point3 {
-  double x = 0, y = 0, z = 0;
-};
-
 // CIRCLE/ waiting for the GOTO that ends its arc.
 struct Circle {
   double cx = 0, cy = 0, cz = 0, ax = 0, ay = 0, az = 0, radius = 0;

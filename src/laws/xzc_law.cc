@@ -12,11 +12,11 @@ constexpr int kMaxDepth = 40;       // halvings of one line: 2^-40 of it is far 
 constexpr double kMaxTurn = 90;     // degrees of C in one piece
 constexpr double kOnCentre = 1e-9;  // a radius this small is the centre line
 
-PartPoint lerp(PartPoint a, PartPoint b, double t) {
+Point3 lerp(Point3 a, Point3 b, double t) {
   return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t};
 }
 
-double distance(PartPoint a, PartPoint b) {
+double distance(Point3 a, Point3 b) {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) +
                    (a.z - b.z) * (a.z - b.z));
 }
@@ -32,13 +32,13 @@ struct Splitter {
 
   // The line from `a` (machine `qa`) to `b` (machine `qb`), halved until each piece is within
   // the tolerance.
-  void split(PartPoint a, XzcPoint qa, PartPoint b, XzcPoint qb, int depth) {
+  void split(Point3 a, XzcPoint qa, Point3 b, XzcPoint qb, int depth) {
     const bool fine = xzc_deviation(qa, qb, index) <= tol && std::abs(qb.c - qa.c) <= kMaxTurn;
     if (fine || depth >= kMaxDepth) {
       out->push_back({qb, distance(a, b), false});
       return;
     }
-    const PartPoint m = lerp(a, b, 0.5);
+    const Point3 m = lerp(a, b, 0.5);
     const XzcPoint qm = xzc_point(m, index, qa.c);
     split(a, qa, m, qm, depth + 1);
     split(m, qm, b, xzc_point(b, index, qm.c), depth + 1);
@@ -47,24 +47,24 @@ struct Splitter {
 
 }  // namespace
 
-XzcPoint xzc_point(PartPoint p, double index, double near) {
+XzcPoint xzc_point(Point3 p, double index, double near) {
   const double r = std::hypot(p.x, p.y);
   if (r < kOnCentre) return {0, near, p.z};  // on the centre line any C is the point
   return {r, nearest(index + degrees(std::atan2(p.y, p.x)), near), p.z};
 }
 
-PartPoint part_point(XzcPoint q, double index) {
+Point3 part_point(XzcPoint q, double index) {
   const double a = radians(q.c - index);
   return {q.r * std::cos(a), q.r * std::sin(a), q.z};
 }
 
-PartPoint part_of_machine(double x, double y, double z, double c) {
+Point3 part_of_machine(double x, double y, double z, double c) {
   const double a = radians(c), cs = std::cos(a), sn = std::sin(a);
   return {x * cs - y * sn, x * sn + y * cs, z};
 }
 
 double xzc_deviation(XzcPoint from, XzcPoint to, double index, int samples) {
-  const PartPoint a = part_point(from, index), b = part_point(to, index);
+  const Point3 a = part_point(from, index), b = part_point(to, index);
   double worst = 0;
   for (int k = 1; k < samples; ++k) {
     const double t = static_cast<double>(k) / samples;
@@ -75,12 +75,12 @@ double xzc_deviation(XzcPoint from, XzcPoint to, double index, int samples) {
   return worst;
 }
 
-std::vector<XzcPiece> xzc_line(PartPoint a, PartPoint b, double index, double c_from, double tol) {
+std::vector<XzcPiece> xzc_line(Point3 a, Point3 b, double index, double c_from, double tol) {
   std::vector<XzcPiece> out;
   const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
   // Where the line comes closest to the centre line, as a fraction of it.
   const double t = len2 > 0 ? std::clamp(-(a.x * dx + a.y * dy) / len2, 0.0, 1.0) : 0;
-  const PartPoint m = lerp(a, b, t);
+  const Point3 m = lerp(a, b, t);
   const XzcPoint qa = xzc_point(a, index, c_from);
   if (std::hypot(m.x, m.y) <= tol && std::hypot(b.x, b.y) >= kOnCentre) {
     // Through (or within the tolerance of) the centre: straight in at a's C, C turns with the

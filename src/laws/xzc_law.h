@@ -10,8 +10,9 @@
 
 namespace clpost {
 
-// A point of the part frame (CL units).
-struct PartPoint {
+// A point or a direction in 3-D, CL units: a CL point as read (before the lathe frame is
+// applied), a point of the part frame (Z the spindle axis, X/Y the face plane), a tool axis.
+struct Point3 {
   double x = 0, y = 0, z = 0;
 };
 
@@ -21,7 +22,7 @@ struct PartPoint {
 // arc's CL line.
 struct MillSegment {
   uint32_t line = 0;  // the CL line of the motion
-  PartPoint from, to;
+  Point3 from, to;
   double index = 0;
   bool rapid = false;
 };
@@ -43,13 +44,13 @@ struct XzcPiece {
 };
 
 // The part point `p` at C index `index` (degrees), with C the nearest to `near` (degrees).
-XzcPoint xzc_point(PartPoint p, double index, double near);
+XzcPoint xzc_point(Point3 p, double index, double near);
 // The part point the machine position `q` is at C index `index`.
-PartPoint part_point(XzcPoint q, double index);
+Point3 part_point(XzcPoint q, double index);
 // The part point (at C0) a machine position is at: X (a radius) and Y turned by C (degrees) about
 // Z, the tool standing still while C turns the part. What verify and plot map a program's X, Y, Z
 // and C back with (verify/mill_verify.h, plot/mill_views.h).
-PartPoint part_of_machine(double x, double y, double z, double c);
+Point3 part_of_machine(double x, double y, double z, double c);
 
 // The pieces of the straight part-frame line from `a` to `b` at C index `index`, the machine at
 // C `c_from` at `a`, each within `tol` of the line (the distance, at the same fraction of the
@@ -57,7 +58,7 @@ PartPoint part_of_machine(double x, double y, double z, double c);
 // line that passes within `tol` of the centre goes straight to the centre, flips C there, and
 // goes straight out: never a spin of C at a tiny radius. Each piece turns C by at most 90
 // degrees, so a rollover control's shortest way is the piece's way.
-std::vector<XzcPiece> xzc_line(PartPoint a, PartPoint b, double index, double c_from, double tol);
+std::vector<XzcPiece> xzc_line(Point3 a, Point3 b, double index, double c_from, double tol);
 
 // The largest distance between the machine's motion from `from` to `to` (linear in r, C, z) and
 // the straight part-frame line between the points they are, sampled at `samples` fractions.

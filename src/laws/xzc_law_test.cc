@@ -10,7 +10,7 @@ namespace {
 
 // The whole motion of `pieces` from `a` (machine C `c0`), sampled densely, is within `tol` of
 // the part line a-b; returns the part length they add up to.
-double check_pieces(const std::vector<XzcPiece>& pieces, PartPoint a, PartPoint b, double index,
+double check_pieces(const std::vector<XzcPiece>& pieces, Point3 a, Point3 b, double index,
                     double c0, double tol) {
   XzcPoint at = xzc_point(a, index, c0);
   double length = 0;
@@ -19,7 +19,7 @@ double check_pieces(const std::vector<XzcPiece>& pieces, PartPoint a, PartPoint 
   for (const XzcPiece& p : pieces) {
     for (int k = 0; k <= 64; ++k) {
       const double t = k / 64.0;
-      const PartPoint q = part_point(
+      const Point3 q = part_point(
           {at.r + (p.to.r - at.r) * t, at.c + (p.to.c - at.c) * t, at.z + (p.to.z - at.z) * t},
           index);
       // Distance from q to the segment a-b.
@@ -32,7 +32,7 @@ double check_pieces(const std::vector<XzcPiece>& pieces, PartPoint a, PartPoint 
     length += p.length;
     at = p.to;
   }
-  const PartPoint end = part_point(at, index);
+  const Point3 end = part_point(at, index);
   EXPECT_NEAR(end.x, b.x, 1e-9);
   EXPECT_NEAR(end.y, b.y, 1e-9);
   EXPECT_NEAR(end.z, b.z, 1e-9);
@@ -56,14 +56,14 @@ TEST(XzcLaw, PointIsRadiusAndIndexPlusAngle) {
   // On the centre line, C stays where it is.
   EXPECT_DOUBLE_EQ(xzc_point({0, 0, 5}, 10, 123).c, 123);
   // And back.
-  const PartPoint p = part_point({5, 63.130102354, 1}, 10);
+  const Point3 p = part_point({5, 63.130102354, 1}, 10);
   EXPECT_NEAR(p.x, 3, 1e-9);
   EXPECT_NEAR(p.y, 4, 1e-9);
 }
 
 TEST(XzcLaw, ChordAcrossTheFaceIsSplitWithinTheTolerance) {
   // X10 from Y-10 to Y10 at index 0: C from -45 to 45, the radius 14.1421 -> 10 -> 14.1421.
-  const PartPoint a{10, -10, 0}, b{10, 10, 0};
+  const Point3 a{10, -10, 0}, b{10, 10, 0};
   const auto pieces = xzc_line(a, b, 0, -45, 0.005);
   ASSERT_GT(pieces.size(), 4u);
   EXPECT_NEAR(check_pieces(pieces, a, b, 0, -45, 0.005), 20, 1e-9);
@@ -93,7 +93,7 @@ TEST(XzcLaw, LineThroughTheCentreFlipsCThere) {
   EXPECT_DOUBLE_EQ(pieces[3].to.c, pieces[2].to.c);
   EXPECT_DOUBLE_EQ(pieces[3].length, 10);
   // Passing 0.003 from the centre (tolerance 0.005): the same three moves, within 0.003.
-  const PartPoint a{10, 0.003, 0}, b{-10, 0.003, 0};
+  const Point3 a{10, 0.003, 0}, b{-10, 0.003, 0};
   const auto near = xzc_line(a, b, 0, 0, 0.005);
   ASSERT_EQ(near.size(), 4u);
   EXPECT_NEAR(check_pieces(near, a, b, 0, 0, 0.005), 20, 1e-9);
@@ -102,7 +102,7 @@ TEST(XzcLaw, LineThroughTheCentreFlipsCThere) {
 TEST(XzcLaw, LineJustOffTheCentreIsSplitNotFlipped) {
   // 0.5 from the centre: C turns from 2.8624 to 177.1376 over many short pieces, each within
   // the tolerance and none turning more than 90 degrees.
-  const PartPoint a{10, 0.5, 0}, b{-10, 0.5, 0};
+  const Point3 a{10, 0.5, 0}, b{-10, 0.5, 0};
   const double c0 = std::atan2(0.5, 10) * 180 / std::acos(-1.0);
   const auto pieces = xzc_line(a, b, 0, c0, 0.005);
   EXPECT_GT(pieces.size(), 20u);

@@ -49,7 +49,7 @@ bool MillViews::side_move(const Move& m, const CutState& state) {
   return true;
 }
 
-double MillViews::unrolled(PartPoint p) {
+double MillViews::unrolled(Point3 p) {
   if (unroll_r_ == 0) unroll_r_ = std::max(std::hypot(p.x, p.y), 1e-6);
   double a = std::atan2(p.y, p.x);
   a = has_angle_ ? angle_near(a, last_angle_) : (a < 0 ? a + 2 * std::numbers::pi : a);
@@ -80,7 +80,7 @@ void MillViews::draw(const SimMillMove& a, const SimMillMove& b) {
   mv.kind = b.rapid ? MoveKind::kRapid : MoveKind::kFeed;
   mv.line = static_cast<int>(b.line);
   const auto at = [&](const Axes& q) {
-    const PartPoint p = part_of_machine(q.x, q.y, q.z, q.c);
+    const Point3 p = part_of_machine(q.x, q.y, q.z, q.c);
     if (side) return Vec2{unrolled(p), p.z};
     if (!b.rapid) work_radius_ = std::max(work_radius_, std::hypot(p.x, p.y));
     return Vec2{p.y, p.x};
@@ -114,7 +114,7 @@ MillViewsDrawn MillViews::finish(const std::vector<SimHole>& holes, LengthUnit u
       out.radial_holes.push_back({unroll_r_ * radians(deg), h.z});
       continue;
     }
-    const PartPoint p = part_of_machine(h.x, 0, 0, *h.c);
+    const Point3 p = part_of_machine(h.x, 0, 0, *h.c);
     work_radius_ = std::max(work_radius_, std::fabs(h.x));
     out.face_holes.push_back({p.y, p.x});
   }

@@ -63,7 +63,7 @@ class MillViews {
 
  private:
   void draw(const SimMillMove& from, const SimMillMove& to);
-  double unrolled(PartPoint p);
+  double unrolled(Point3 p);
 
   bool rollover_;
   bool y_axis_;

@@ -23,14 +23,14 @@ constexpr size_t kWindow = 1 << 14;    // program moves held for CL motions not 
 struct ClMill {
   uint32_t line = 0;
   bool rapid = false;
-  std::vector<PartPoint> points;
+  std::vector<Point3> points;
 };
 
-PartPoint turned(PartPoint p, double degrees) {
+Point3 turned(Point3 p, double degrees) {
   return part_of_machine(p.x, p.y, p.z, degrees);
 }
 
-double distance(PartPoint a, PartPoint b) {
+double distance(Point3 a, Point3 b) {
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) +
                    (a.z - b.z) * (a.z - b.z));
 }
@@ -40,22 +40,22 @@ using Axes = MillAxes;
 Axes axes(const SimMillMove& m) {
   return {m.x, m.y, m.z, m.c};
 }
-PartPoint part(Axes a) {
+Point3 part(Axes a) {
   return part_of_machine(a.x, a.y, a.z, a.c);
 }
 
 // The point of the polyline `pts` nearest to `q`.
-PartPoint nearest(const std::vector<PartPoint>& pts, PartPoint q) {
-  PartPoint best = pts.front();
+Point3 nearest(const std::vector<Point3>& pts, Point3 q) {
+  Point3 best = pts.front();
   for (size_t i = 1; i < pts.size(); ++i) {
-    const PartPoint a = pts[i - 1], b = pts[i];
+    const Point3 a = pts[i - 1], b = pts[i];
     const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
     const double len2 = dx * dx + dy * dy + dz * dz;
     const double t =
         len2 > 0
             ? std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy + (q.z - a.z) * dz) / len2, 0.0, 1.0)
             : 0;
-    const PartPoint p{a.x + dx * t, a.y + dy * t, a.z + dz * t};
+    const Point3 p{a.x + dx * t, a.y + dy * t, a.z + dz * t};
     if (distance(p, q) < distance(best, q)) best = p;
   }
   return best;
@@ -63,7 +63,7 @@ PartPoint nearest(const std::vector<PartPoint>& pts, PartPoint q) {
 
 // How the program's position `a` differs from the CL's point `p`: along the circle of its
 // radius when that is all (a C off), else the distance.
-std::string difference(Axes a, PartPoint p, double tol) {
+std::string difference(Axes a, Point3 p, double tol) {
   const double r = std::hypot(a.x, a.y), rc = std::hypot(p.x, p.y);
   if (std::abs(a.y) < 1e-9 && std::abs(r - rc) <= tol && std::abs(a.z - p.z) <= tol && r > 0) {
     double cc = degrees(std::atan2(p.y, p.x));
@@ -97,7 +97,7 @@ struct MillStream::Impl {
   std::optional<SimMillMove> first, prev, last;  // nc[0], nc[k - 1], nc[size - 1]
   std::optional<SimMillMove> scan_start;         // a seek's first move looked at (nc[k])
   Phase phase = Phase::kIdle;
-  PartPoint target;
+  Point3 target;
   bool seek_feed = false;
   bool failed = false;
   bool cl_ended = false;
@@ -131,7 +131,7 @@ struct MillStream::Impl {
     waiting.clear();
     phase = Phase::kIdle;
   }
-  void missing(const std::optional<SimMillMove>& near, PartPoint p) {
+  void missing(const std::optional<SimMillMove>& near, Point3 p) {
     if (!near) return fail(nullptr, "the program has no moves in X, Y, Z and C");
     fail(&*near, fmt::format("not reached: the program's move here ends {}",
                              difference(axes(*near), p, tol)));
@@ -155,14 +155,14 @@ struct MillStream::Impl {
     Axes b = axes(m);
     if (rollover) b.c = a.c + std::remainder(b.c - a.c, 360.0);
     // The end first (a C off at a point is said as such), then the way there.
-    const PartPoint end = nearest(mo.points, part(b));
+    const Point3 end = nearest(mo.points, part(b));
     if (distance(end, part(b)) > tol) return fail(&m, difference(b, end, tol));
     if (m.arc) return follow_arc(m);
     for (int i = kSamples - 1; i >= 1; --i) {
       const double t = static_cast<double>(i) / kSamples;
       const Axes q{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t,
                    a.c + (b.c - a.c) * t};
-      const PartPoint p = nearest(mo.points, part(q));
+      const Point3 p = nearest(mo.points, part(q));
       if (distance(p, part(q)) > tol) return fail(&m, difference(q, p, tol));
     }
     followed(m);
@@ -184,7 +184,7 @@ struct MillStream::Impl {
       return fail(
           &m, fmt::format("{}: its end is {:.4f} mm off the circle through its start", arc, off));
     for (const Axes& q : pts) {
-      const PartPoint p = nearest(current().points, part(q));
+      const Point3 p = nearest(current().points, part(q));
       if (distance(p, part(q)) > tol) return fail(&m, arc + " passes " + difference(q, p, tol));
     }
     followed(m);
@@ -229,7 +229,7 @@ MillStream::~MillStream() = default;
 // The CL's milling as motions: the pieces of one CL line (an arc's chords) together.
 void MillStream::cl_segment(const MillSegment& g) {
   Impl& w = *impl_;
-  const PartPoint from = turned(g.from, g.index), to = turned(g.to, g.index);
+  const Point3 from = turned(g.from, g.index), to = turned(g.to, g.index);
   if (w.open.points.empty() || w.open.line != g.line || w.open.rapid != g.rapid ||
       distance(w.open.points.back(), from) > 1e-9) {
     w.motion_complete();
