@@ -583,7 +583,7 @@ void y_home(PostState& s) {
 }
 }  // namespace
 
-void end_milling(PostState& s, const Statement& st, bool c_back) {
+void end_milling(PostState& s) {
   // G40 before polar interpolation ends and before the plane goes back: a control refuses
   // either under G41/G42 (docs/millturn.md).
   if (s.mill.comp != CutterComp::kOff) s.prog.cutter_comp(CutterComp::kOff);
@@ -594,7 +594,6 @@ void end_milling(PostState& s, const Statement& st, bool c_back) {
     s.prog.forget_modal();
   }
   s.mill = MillState{};
-  if (c_back && s.c.index && s.c.angle) c_to(s, st, *s.c.index);
 }
 
 void milling_comp_plane(PostState& s) {

@@ -21,9 +21,8 @@ void milling_go(PostState& s, const Statement& st);
 // HELICAL/ (CATIA) with a milling tool: an arc or a helix about any axis; without a milling
 // tool the comment an unknown statement is.
 void helical_stmt(PostState& s, const Statement& st);
-// Before a hole or a tool change: Y back to 0 and the lathe plane after face milling in Y; with
-// `c_back` (a hole) C back at its index after XZC moves, so that the hole is where the CL says.
-void end_milling(PostState& s, const Statement& st, bool c_back);
+// Before a hole or a tool change: Y back to 0 and the lathe plane after face milling in Y.
+void end_milling(PostState& s);
 // Before CUTCOM/LEFT|RIGHT of a milling tool on a machine with Y: the plane the compensation
 // works in, G17 for a face tool, G19 for a radial one (a control refuses a plane change under
 // G41/G42: docs/millturn.md).

@@ -97,7 +97,7 @@ bool millturn_tool_change(PostState& s, const Statement& st, int tool,
 
 void end_milling_section(PostState& s, const Statement& st, bool release) {
   if (s.tool.mills()) {
-    end_milling(s, st, false);
+    end_milling(s);
     stop_live(s, st);
   }
   if (release) release_c(s);
@@ -128,20 +128,6 @@ bool live_xz_move(const PostState& s, Point3 p) {
 
 bool c_at_index(const PostState& s) {
   return !s.c.index || !s.c.angle || std::fabs(std::remainder(*s.c.angle - *s.c.index, 360)) < 1e-9;
-}
-
-bool milling_motion_refused(PostState& s, const Statement& st) {
-  if (!s.tool.mills()) return false;
-  if (!s.mill_motion_reported) {
-    s.mill_motion_reported = true;
-    error(
-        s, st, st.loc,
-        fmt::format("milling motion with live tool {} (loaded at line {}) is not supported yet: "
-                    "clpost writes no XZC or Y motion for a milling tool, only the holes of a hole "
-                    "cycle (docs/millturn.md)",
-                    s.tool.number, s.tool_line));
-  }
-  return true;
 }
 
 // TDATA/MILL|TURN,… (CATIA) and TLDATA/MILL|TURN,… (NX): the kind of the tool the next tool
@@ -264,7 +250,7 @@ void rotabl_stmt(PostState& s, const Statement& st) {
                              st.major, s.m.name));
   ensure_started(s);
   engage_c(s, st);
-  if (s.mill.polar) end_milling(s, st, false);  // C is an axis again
+  if (s.mill.polar) end_milling(s);  // C is an axis again
   if (w.incremental && !s.c.angle)
     return error(s, st, st.loc,
                  fmt::format("{}/…,INCR: C's position is not known yet (no ROTABL since the C "

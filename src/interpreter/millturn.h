@@ -33,8 +33,6 @@ void release_c(PostState& s);
 bool live_xz_move(const PostState& s, Point3 p);
 // C is at the C index (the last ROTABL's angle, whole turns aside), or either is not known.
 bool c_at_index(const PostState& s);
-// A motion with a milling tool: true (reported once per tool) — not written yet.
-bool milling_motion_refused(PostState& s, const Statement& st);
 // The C words that take C from `from` (unknown: none) to `angle` (incremental: by `angle`),
 // turning `sign` (+1 increasing, -1 decreasing, none: the shortest way), as machine `m` takes
 // them (millturn.c_rotation); empty when C is there already.

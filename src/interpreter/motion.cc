@@ -259,10 +259,8 @@ void goto_stmt(PostState& s, const Statement& st) {
   const bool radial_approach = s.hole_axis_radial && live_xz_move(s, p) && s.tool_axis.x > 0 &&
                                (s.m.y_axis || (s.rapid_next && c_at_index(s) && p.x > 0));
   if (s.tool.mills() && !s.in_cycle && !radial_approach) return milling_goto(s, st, p);
-  const bool live_ok = s.tool.mills() && (s.in_cycle || live_xz_move(s, p));
-  if (!live_ok && milling_motion_refused(s, st)) return;
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
-    if (s.hole_cycle && s.tool.mills()) end_milling(s, st, false);  // hole_live.cc turns C
+    if (s.hole_cycle && s.tool.mills()) end_milling(s);  // hole_live.cc turns C
     if (s.hole_cycle) hole_goto(s, st, p);
     return;
   }

@@ -233,9 +233,13 @@ bool circle_waits(PostState& s, const Statement& st);
 // (spindle_feed.cc).
 void restate_spindle(PostState& s, const Statement& st);
 // Before a motion: the spindle a control's tool change stopped (LinuxCNC's M6) turns again as
-// the CL left it, unless a SPINDL/ came first.
-void restart_stopped_spindle(PostState& s, const Statement& st);
+// the CL left it, unless a SPINDL/ came first. The common case inline (every GOTO comes here):
+// the spindle was not stopped.
 void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_text);
+inline void restart_stopped_spindle(PostState& s, const Statement& st) {
+  if (s.spindle_stopped) [[unlikely]]
+    restart_stopped_spindle(s, st.loc, st.line_text(st.loc.line));
+}
 
 // The lathe frame: a CL point as (radius, axial) in CL units, and as NcProgram's point.
 Vec2 cl2(const PostState& s, Point3 p);

@@ -256,10 +256,6 @@ void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_
   restate_spindle(s, loc, line_text);
 }
 
-void restart_stopped_spindle(PostState& s, const Statement& st) {
-  restart_stopped_spindle(s, st.loc, st.line_text(st.loc.line));
-}
-
 void spindl_stmt(PostState& s, const Statement& st) {
   SpindleWords w;
   if (!read_spindle_words(s, st, w)) return;
