@@ -2,7 +2,8 @@
 // TLON|TLLFT|TLRGT,GOFWD|GOLFT|GORGT|GOBACK/drive,ON|TO|PAST|TANTO,check with lines, circles,
 // cylinders and planes as the lathe sees them (a line or a circle in the plane of radius and
 // axis). Each motion becomes the move a GOTO (line) or CIRCLE/ + GOTO (arc) would give: it goes
-// through move_to. Geometry that is not a lathe line or arc is an error at its column.
+// through move_to. Geometry that is not a lathe line or arc is an error at its column. A milling
+// tool's geometric motion is its path's (tool_path.h; milling_geometry.cc).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -10,10 +11,9 @@
 #include <span>
 
 #include "interpreter/lathe_geometry.h"
-#include "interpreter/milling_motion.h"
-#include "interpreter/millturn.h"
 #include "interpreter/point3_math.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_path.h"
 
 namespace clpost {
 
@@ -161,7 +161,10 @@ Point3 frame_point_of(const PostState& s, double u, double v) {
 }  // namespace
 
 void go_stmt(PostState& s, const Statement& st) {
-  if (s.tool.mills()) return milling_go(s, st);  // milling_geometry.cc
+  s.path->go(s, st);
+}
+
+void lathe_go(PostState& s, const Statement& st) {
   Side side;
   if (!tool_side(s, st, side)) return;
   if (st.args.size() < 2) {
@@ -231,10 +234,12 @@ void indirv_stmt(PostState& s, const Statement& st) {
   s.indirv = d;
 }
 
-// PSIS/: the part surface. On a lathe it can only be the turning plane itself.
 void psis_stmt(PostState& s, const Statement& st) {
-  // A milling tool's arcs lie across their drive surface's axis (milling_geometry.cc).
-  if (s.tool.mills()) return skipped_stmt(s, st);
+  s.path->part_surface(s, st);
+}
+
+// PSIS/: the part surface. On a lathe it can only be the turning plane itself.
+void lathe_part_surface(PostState& s, const Statement& st) {
   if (st.args.size() != 1)
     return error(s, st, st.args.empty() ? st.loc : st.args[1].loc,
                  "PSIS/ takes one plane: PSIS/(PLANE/…)");

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "emitters/hole_output.h"
-#include "interpreter/hole_live.h"
+#include "interpreter/hole_goto.h"
 #include "interpreter/statement_table.h"
 #include "support/number_text.h"
 
@@ -34,8 +34,10 @@ std::optional<double> tap_lead(PostState& s, const Statement& st, const HoleCycl
   return std::nullopt;
 }
 
-// Feed, lead and speed of hole `h` from the cycle and the modal state; false (reported).
-bool hole_feed(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
+// Feed, lead and speed of hole `h` from the cycle, the modal state and spindle `sp`; false
+// (reported).
+bool hole_feed(PostState& s, const Statement& st, const HoleCycle& c, const SpindleState& sp,
+               Hole& h) {
   if (!c.feed && !s.feed_given && !(c.kind == HoleKind::kTap && c.lead)) {
     error(s, st, st.loc,
           fmt::format("CYCLE/{} of line {} has no feed: give one in the cycle (MMPM, IPM, MMPR, "
@@ -45,7 +47,6 @@ bool hole_feed(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
   }
   h.feed = c.feed.value_or(s.feed);
   h.feed_mode = c.feed ? c.feed_mode : s.feed_mode;
-  const SpindleState& sp = s.tool.mills() ? s.live : s.spindle;  // a live tool: its own
   h.rpm = sp.on && !sp.css ? sp.value : 0;
   h.spindle = sp.dir;
   if (c.dwell_revs && *c.dwell_revs > 0) {
@@ -80,50 +81,6 @@ bool hole_feed(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
   return true;
 }
 
-// The hole at CL point `p`; false (reported) when it cannot be drilled on a lathe.
-bool make_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
-  const HoleCycle& c = *s.hole_cycle;
-  const Vec2 v = cl2(s, p);
-  const double radius = std::hypot(v.x, axis_value(p, third_axis(s)));
-  h.kind = c.kind;
-  h.cl_line = st.loc.line;
-  h.name = fmt::format("hole at CL line {}", st.loc.line);
-  h.tool_diameter = s.tool.diameter;
-  if (!s.tool.mills() && radius > 1e-4) {
-    error(s, st, st.loc,
-          fmt::format("CYCLE/{} {} is {} off the spindle's centre line (GOTO/{}): a hole off "
-                      "the centre line needs live tooling, which a lathe post does not write",
-                      c.word, h.name, num_text(radius), st.text));
-    return false;
-  }
-  if (!s.pos) {
-    error(s, st, st.loc,
-          fmt::format("CYCLE/{} {}: the tool's start is unknown (no GOTO or FROM before it)",
-                      c.word, h.name));
-    return false;
-  }
-  h.start = cl2(s, *s.pos).z;
-  h.top = v.z;
-  if (s.tool.mills() && !live_hole(s, st, c, p, h, h.top, h.start)) return false;
-  h.dir = h.start >= h.top ? -1 : 1;
-  h.bottom = h.top + h.dir * c.depth;
-  h.r = c.clearance ? h.top - h.dir * *c.clearance : h.start;
-  h.retract = c.retract ? h.top - h.dir * *c.retract : h.start;
-  h.first_peck = c.first_peck;
-  h.peck = c.kind == HoleKind::kDeep || c.kind == HoleKind::kChipBreak ? c.peck : 0;
-  h.dwell = c.dwell;
-  h.backoff = c.backoff;
-  const double pecks = h.peck > 0 ? std::ceil(std::fabs(h.bottom - h.r) / h.peck) : 1;
-  if (pecks > static_cast<double>(kMaxHolePecks)) {
-    error(s, st, st.loc,
-          fmt::format("CYCLE/{} {}: pecks of {} over {} make {} pecks, more than {}", c.word,
-                      h.name, num_text(h.peck), num_text(std::fabs(h.bottom - h.r)),
-                      num_text(pecks), kMaxHolePecks));
-    return false;
-  }
-  return hole_feed(s, st, c, h);
-}
-
 double& axis_ref(Point3& p, ClAxis a) {
   return a == ClAxis::kX ? p.x : a == ClAxis::kY ? p.y : p.z;
 }
@@ -144,20 +101,47 @@ Point3 hole_exit_point(const PostState& s, Point3 p, const Hole& h) {
 
 }  // namespace
 
-void hole_goto(PostState& s, const Statement& st, Point3 p) {
-  Hole h;
-  if (!make_hole(s, st, p, h)) return;
-  // A live tool's tap has no moves to fall back to (hole_live.cc): its cycle fits, or it is an
-  // error.
-  if (s.tool.mills() && h.kind == HoleKind::kTap)
-    if (std::string why = hole_misfit(s.m, h); !why.empty()) {
-      error(s, st, st.loc,
-            fmt::format("CYCLE/TAP {} with live tool {}: {}", h.name, s.tool.number, why));
-      return;
-    }
-  ensure_started(s);
-  if (s.tool.mills() && (!live_feed_per_minute(s, st, *s.hole_cycle, h) || !live_hole_c(s, st, h)))
-    return;
+void name_hole(PostState& s, const Statement& st, Hole& h) {
+  h.kind = s.hole_cycle->kind;
+  h.cl_line = st.loc.line;
+  h.name = fmt::format("hole at CL line {}", st.loc.line);
+  h.tool_diameter = s.tool.diameter;
+}
+
+bool hole_start(PostState& s, const Statement& st, Point3 p, Hole& h) {
+  if (!s.pos) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/{} {}: the tool's start is unknown (no GOTO or FROM before it)",
+                      s.hole_cycle->word, h.name));
+    return false;
+  }
+  h.start = cl2(s, *s.pos).z;
+  h.top = cl2(s, p).z;
+  return true;
+}
+
+bool hole_depths(PostState& s, const Statement& st, const SpindleState& sp, Hole& h) {
+  const HoleCycle& c = *s.hole_cycle;
+  h.dir = h.start >= h.top ? -1 : 1;
+  h.bottom = h.top + h.dir * c.depth;
+  h.r = c.clearance ? h.top - h.dir * *c.clearance : h.start;
+  h.retract = c.retract ? h.top - h.dir * *c.retract : h.start;
+  h.first_peck = c.first_peck;
+  h.peck = c.kind == HoleKind::kDeep || c.kind == HoleKind::kChipBreak ? c.peck : 0;
+  h.dwell = c.dwell;
+  h.backoff = c.backoff;
+  const double pecks = h.peck > 0 ? std::ceil(std::fabs(h.bottom - h.r) / h.peck) : 1;
+  if (pecks > static_cast<double>(kMaxHolePecks)) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/{} {}: pecks of {} over {} make {} pecks, more than {}", c.word,
+                      h.name, num_text(h.peck), num_text(std::fabs(h.bottom - h.r)),
+                      num_text(pecks), kMaxHolePecks));
+    return false;
+  }
+  return hole_feed(s, st, c, sp, h);
+}
+
+void drill_hole(PostState& s, const Statement& st, Point3 p, Hole& h) {
   restart_stopped_spindle(s, st);
   ++s.stats.motions;
   const SavedLines lines = SavedLines::of(st);
@@ -171,6 +155,22 @@ void hole_goto(PostState& s, const Statement& st, Point3 p) {
   if (r && !h.radial) record_exit(s, st.loc.line, Vec2{h.x, h.retract}, h.bottom);
   if (r) s.holes.push_back(std::move(h));
   s.rapid_next = false;
+}
+
+void lathe_hole(PostState& s, const Statement& st, Point3 p) {
+  Hole h;
+  name_hole(s, st, h);
+  const double radius = std::hypot(cl2(s, p).x, axis_value(p, third_axis(s)));
+  if (radius > 1e-4) {
+    error(s, st, st.loc,
+          fmt::format("CYCLE/{} {} is {} off the spindle's centre line (GOTO/{}): a hole off "
+                      "the centre line needs live tooling, which a lathe post does not write",
+                      s.hole_cycle->word, h.name, num_text(radius), st.text));
+    return;
+  }
+  if (!hole_start(s, st, p, h) || !hole_depths(s, st, s.spindle, h)) return;
+  ensure_started(s);
+  drill_hole(s, st, p, h);
 }
 
 }  // namespace clpost

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interpreter/hole_goto.h"
 #include "interpreter/millturn.h"
 #include "machine/machine_schema.h"
 #include "support/angles.h"
@@ -40,8 +41,9 @@ double as_radius(const PostState& s, double v) {
 // A tap of a live tool is synchronised with the live spindle by the machine's own cycle: moves
 // would reverse the main spindle, so a machine without the template refuses it.
 template <typename Refuse>
-bool live_tap_writable(const PostState& s, bool radial, const Refuse& refuse) {
-  const bool left = s.live.dir == SpindleDir::kCcw;  // a left-hand tap: its own cycle
+bool live_tap_writable(const PostState& s, const SpindleState& live, bool radial,
+                       const Refuse& refuse) {
+  const bool left = live.dir == SpindleDir::kCcw;  // a left-hand tap: its own cycle
   const TemplateSpec& t = radial ? (left ? tmpl::kHoleRadialTapLeft : tmpl::kHoleRadialTap)
                                  : (left ? tmpl::kHoleLiveTapLeft : tmpl::kHoleLiveTap);
   auto it = s.m.templates.find(std::string(t.name));
@@ -55,19 +57,23 @@ bool live_tap_writable(const PostState& s, bool radial, const Refuse& refuse) {
   return true;
 }
 
-}  // namespace
-
-bool live_hole(PostState& s, const Statement& st, const HoleCycle& c, Point3 p, Hole& h,
-               double& top, double& start) {
+// Where the hole of a live tool at CL point `p` is: a face hole (tool axis along Z) at radius
+// hypot(x, y), or a radial hole (`radial`: the tool axis through the centre line) at Z, both at
+// C = the last ROTABL's index plus atan2(y, x). Sets h.radial, h.x or h.z, h.c, and h.top and
+// h.start along the hole's axis (Z, or X as a radius). False (reported) when the machine cannot
+// drill it or the CL does not say enough.
+bool place_hole(PostState& s, const LiveState& l, const Statement& st, Point3 p, bool radial,
+                Hole& h) {
+  const HoleCycle& c = *s.hole_cycle;
   const auto refuse = [&](std::string why) {
     error(s, st, st.loc,
           fmt::format("CYCLE/{} {} with live tool {}: {}", c.word, h.name, s.tool.number, why));
     return false;
   };
   const FacePoint at = face_point(s, p);
-  const FacePoint axis = face_point(s, s.tool_axis);
-  h.radial = s.hole_axis_radial;
-  if (h.radial && std::fabs(axis_value(s.tool_axis, s.m.cl_axial)) > 1e-6)
+  const FacePoint axis = face_point(s, s.tool_axis.dir);
+  h.radial = radial;
+  if (h.radial && std::fabs(axis_value(s.tool_axis.dir, s.m.cl_axial)) > 1e-6)
     return refuse(fmt::format(
         "the tool axis of GOTO/{} is neither along Z (a face hole) nor across it (a radial hole)",
         st.text));
@@ -86,27 +92,31 @@ bool live_hole(PostState& s, const Statement& st, const HoleCycle& c, Point3 p, 
         s.m.name));
   if (!s.c.index)
     return refuse("C is not indexed: a hole of a live tool needs ROTABL/…,CAXIS before it");
-  if (c.kind == HoleKind::kTap && !live_tap_writable(s, h.radial, refuse)) return false;
+  if (c.kind == HoleKind::kTap && !live_tap_writable(s, l.spindle, h.radial, refuse)) return false;
   const double own = at.radius() > kOnAxis ? degrees(std::atan2(at.y, at.x)) : 0;
   h.c = *s.c.index + own;
   const Vec2 v = cl2(s, p);
   if (!h.radial) {
     h.x = as_radius(s, at.radius());
-    top = v.z;
-    start = cl2(s, *s.pos).z;
+    h.top = v.z;
+    h.start = cl2(s, *s.pos).z;
     return true;
   }
   // The tool stands on the machine's X axis while C turns the part under it: its start is its
   // distance from the centre line.
   h.z = v.z;
-  top = as_radius(s, at.radius());
-  start = as_radius(s, face_point(s, *s.pos).radius());
+  h.top = as_radius(s, at.radius());
+  h.start = as_radius(s, face_point(s, *s.pos).radius());
   return true;
 }
 
-bool live_feed_per_minute(PostState& s, const Statement& st, const HoleCycle& c, Hole& h) {
+// A feed per revolution of a live tool's hole, written per minute from the live tool's rpm
+// (millturn.md section 3: a G99 feed with the main spindle stopped does not move); a comment
+// says so. False (reported) when the live tool's rpm is not known.
+bool live_feed_per_minute(PostState& s, const SpindleState& live, const Statement& st, Hole& h) {
+  const HoleCycle& c = *s.hole_cycle;
   if (h.feed_mode != FeedMode::kPerRev) return true;
-  if (!(s.live.on && !s.live.css && s.live.value > 0)) {
+  if (!(live.on && !live.css && live.value > 0)) {
     error(s, st, st.loc,
           fmt::format("CYCLE/{} {} with live tool {}: a feed per revolution of the live tool "
                       "needs its speed (SPINDL/n,RPM before it) to be written per minute",
@@ -114,21 +124,41 @@ bool live_feed_per_minute(PostState& s, const Statement& st, const HoleCycle& c,
     return false;
   }
   const double per_rev = h.feed;
-  h.feed = per_rev * s.live.value;
+  h.feed = per_rev * live.value;
   h.feed_mode = FeedMode::kPerMinute;
   // Not "hole at …" first: that starts the hole's own comment, which verify reads.
   s.prog.comment(
       fmt::format("feed {} per revolution of the live tool x {} rpm = {} per minute "
                   "for the {}",
-                  num_text(per_rev), num_text(s.live.value), num_text(h.feed), h.name));
+                  num_text(per_rev), num_text(live.value), num_text(h.feed), h.name));
   return true;
 }
 
+// Moves C to hole `h`'s angle (h.c: the index plus the hole's own angle) when it is not there,
+// and sets h.c to the C written. False (reported) when the c_index template cannot be written.
 bool live_hole_c(PostState& s, const Statement& st, Hole& h) {
   if (!h.c) return true;
   if (!write_c_steps(s, st, c_steps(s.m, s.c.angle, *h.c, false, std::nullopt))) return false;
   h.c = s.c.angle;
   return true;
+}
+
+}  // namespace
+
+void live_hole(PostState& s, LiveState& l, const Statement& st, Point3 p, bool radial) {
+  Hole h;
+  name_hole(s, st, h);
+  if (!hole_start(s, st, p, h) || !place_hole(s, l, st, p, radial, h) ||
+      !hole_depths(s, st, l.spindle, h))
+    return;
+  // A live tool's tap has no moves to fall back to: its cycle fits, or it is an error.
+  if (h.kind == HoleKind::kTap)
+    if (std::string why = hole_misfit(s.m, h); !why.empty())
+      return error(s, st, st.loc,
+                   fmt::format("CYCLE/TAP {} with live tool {}: {}", h.name, s.tool.number, why));
+  ensure_started(s);
+  if (!live_feed_per_minute(s, l.spindle, st, h) || !live_hole_c(s, st, h)) return;
+  drill_hole(s, st, p, h);
 }
 
 }  // namespace clpost

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_paths.h"
 
 namespace clpost {
 
@@ -61,6 +62,10 @@ void Interpreter::end_of_input(uint32_t last_line) {
 
 const std::string& Interpreter::partno() const {
   return state_->partno;
+}
+
+std::vector<MillSegment> Interpreter::take_mill() {
+  return clpost::take_mill(*state_);
 }
 
 ClPath Interpreter::take_path() {

@@ -32,7 +32,7 @@ class Interpreter {
   // The holes written (CYCLE/DRILL …), for verify; moved out.
   std::vector<Hole> take_holes() { return std::move(state_->holes); }
   // The milling written (milling_motion.cc), for verify; moved out.
-  std::vector<MillSegment> take_mill() { return std::move(state_->mill_path); }
+  std::vector<MillSegment> take_mill();
   std::vector<OutputUsed> take_outputs() { return std::move(state_->outputs); }
   const std::string& partno() const;
   const CycleTime& cycle_time() const { return state_->clock; }

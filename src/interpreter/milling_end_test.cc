@@ -1,5 +1,5 @@
-// The end of a live tool's milling (millturn.cc, end_milling_section; docs/millturn.md, "What a
-// tool change does"): the same before a tool change and at the program end. And cutter
+// The end of a live tool's milling (live_path.cc, LivePath::leave_milling; docs/millturn.md, "What
+// a tool change does"): the same before a tool change and at the program end. And cutter
 // compensation against the plane: the plane before G41/G42, G40 before the plane goes back.
 #include <gtest/gtest.h>
 

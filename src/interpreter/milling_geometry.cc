@@ -62,8 +62,8 @@ std::vector<double> crossings(Point3 start_centre, Point3 r0, Point3 side, const
 
 }  // namespace
 
-void milling_go(PostState& s, const Statement& st) {
-  if (circle_waits(s, st) || s.mill_motion_reported) return;  // the tool's error came first
+void milling_go(PostState& s, LiveState& l, const Statement& st, bool radial) {
+  if (circle_waits(s, st) || l.reported) return;  // the tool's error came first
   for (const Arg& m : st.modifiers)
     if (!m.is("TLON"))
       return error(s, st, m.loc,
@@ -79,7 +79,7 @@ void milling_go(PostState& s, const Statement& st) {
   if (!plane) return;
   // CIRCLE/x,y,z,r (CATIA, after AUTOPS: the part surface through the tool's end, normal to its
   // axis) lies in that plane: its axis is the tool's.
-  if (drive->kind == Geo::Kind::kCircle && !drive->axis_given) drive->v = s.tool_axis;
+  if (drive->kind == Geo::Kind::kCircle && !drive->axis_given) drive->v = s.tool_axis.dir;
   if (drive->kind == Geo::Kind::kCircle && plane->kind == Geo::Kind::kLine) {
     // A check line in the circle's plane: the plane through it along the circle's axis.
     plane->kind = Geo::Kind::kPlane;
@@ -116,7 +116,7 @@ void milling_go(PostState& s, const Statement& st) {
                              at.size(), nth));
   const double t = at[nth - 1];
   const Point3 end = add(centre, add(scaled(r0, std::cos(t)), scaled(side, std::sin(t))));
-  milling_arc_to(s, st, centre, axis, sense, end);
+  milling_arc_to(s, l, st, centre, axis, sense, end, radial);
 }
 
 }  // namespace clpost

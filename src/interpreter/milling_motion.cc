@@ -25,20 +25,20 @@ namespace {
 
 // A milling motion clpost does not write: an error at the first of the tool's, the rest left
 // out (one cause, one message).
-void refuse(PostState& s, const Statement& st, const std::string& why) {
-  if (s.mill_motion_reported) return;
-  s.mill_motion_reported = true;
+void refuse(PostState& s, LiveState& l, const Statement& st, const std::string& why) {
+  if (l.reported) return;
+  l.reported = true;
   error(s, st, st.loc,
         fmt::format("milling motion with live tool {} (loaded at line {}): {} (docs/millturn.md)",
                     s.tool.number, s.tool_line, why));
 }
 
 // What the machine and the CL must say for the motion to be written; false (reported).
-bool can_mill(PostState& s, const Statement& st) {
-  if (s.mill_motion_reported) return false;
-  if (polar_motion(s))
+bool can_mill(PostState& s, LiveState& l, const Statement& st, bool radial) {
+  if (l.reported) return false;
+  if (polar_motion(s, radial))
     if (const std::string missing = polar_missing(s.m); !missing.empty()) {
-      refuse(s, st,
+      refuse(s, l, st,
              fmt::format("machine '{}' asks for polar interpolation "
                          "(millturn.polar_interpolation: true), and {}; false writes the face "
                          "milling in X Y Z or X Z C computed by the post",
@@ -46,7 +46,7 @@ bool can_mill(PostState& s, const Statement& st) {
       return false;
     }
   if (s.m.cl_axial != ClAxis::kZ || !s.m.c_axis) {
-    refuse(s, st,
+    refuse(s, l, st,
            fmt::format("milling is read with CL Z the spindle axis (cl.axial_axis: z) on a "
                        "machine with a C axis (millturn.c_axis), and machine '{}' has {}",
                        s.m.name, s.m.c_axis ? "another axial axis" : "no C axis"));
@@ -68,11 +68,12 @@ ToolLine tool_line(Point3 axis, Point3 p) {
 // Y"): C turns the part so that the tool axis stands on the machine's X axis, so the tip must lie
 // on the line of its axis through the centre line (within millturn.xzc_tolerance), on the tool's
 // side of it. False (reported) otherwise: the offset needs Y.
-bool on_tool_line(PostState& s, const Statement& st, Point3 p, const std::string& what) {
-  const ToolLine t = tool_line(s.tool_axis, p);
-  const Point3 a = s.tool_axis;
+bool on_tool_line(PostState& s, LiveState& l, const Statement& st, Point3 p,
+                  const std::string& what) {
+  const ToolLine t = tool_line(s.tool_axis.dir, p);
+  const Point3 a = s.tool_axis.dir;
   if (t.off > s.m.xzc_tolerance) {
-    refuse(s, st,
+    refuse(s, l, st,
            fmt::format("{} is {:.4f} mm off the line of the tool axis ({:g}, {:g}, {:g}) through "
                        "the centre line (millturn.xzc_tolerance {:g}): a radial tool reaches it "
                        "with a Y axis only, and machine '{}' has none",
@@ -80,7 +81,7 @@ bool on_tool_line(PostState& s, const Statement& st, Point3 p, const std::string
     return false;
   }
   if (t.along <= s.m.xzc_tolerance) {
-    refuse(s, st,
+    refuse(s, l, st,
            fmt::format("{} is {:.4f} mm from the centre line along the tool axis ({:g}, {:g}, "
                        "{:g}): a radial tool's tip at or past the centre line is not written",
                        what, t.along, a.x, a.y, a.z));
@@ -100,12 +101,12 @@ bool on_tool_line(PostState& s, const Statement& st, Point3 p, const std::string
 // MillTurn3x_PATH1, whose frame runs Z into the part). clpost writes every CL point of a file in
 // the CL's frame, the turning too, so the face's X, Y, Z and C are written as for 0,0,1; only
 // the side CUTCOM names is seen from the other side of the plane (cutcom_stmt).
-std::optional<double> side_turn(PostState& s, const Statement& st) {
-  const Point3 t = s.tool_axis;
+std::optional<double> side_turn(PostState& s, LiveState& l, const Statement& st) {
+  const Point3 t = s.tool_axis.dir;
   const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
   if (len > 0 && std::abs(std::abs(t.z / len) - 1) < 1e-6) return 0.0;
   if (len > 0 && std::abs(t.z / len) < 1e-6) return degrees(std::atan2(t.y, t.x));
-  refuse(s, st,
+  refuse(s, l, st,
          fmt::format("the tool axis ({}, {}, {}) is neither along Z (a face tool, 0,0,1 or "
                      "0,0,-1) nor radial (k 0): a tilted live tool is not written",
                      t.x, t.y, t.z));
@@ -114,13 +115,13 @@ std::optional<double> side_turn(PostState& s, const Statement& st) {
 
 // The feed of a feed move per minute, output units: a feed per revolution is per revolution of
 // the live tool (the main spindle is stopped). None (reported) when it is not known.
-std::optional<double> mill_feed(PostState& s, const Statement& st) {
+std::optional<double> mill_feed(PostState& s, LiveState& l, const Statement& st) {
   if (!s.feed_given) {
     error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
     return std::nullopt;
   }
   if (s.feed_mode == FeedMode::kPerMinute) return s.feed;
-  if (s.live.on && !s.live.css && s.live.value > 0) return s.feed * s.live.value;
+  if (l.spindle.on && !l.spindle.css && l.spindle.value > 0) return s.feed * l.spindle.value;
   error(s, st, st.loc,
         "a feed per revolution of the live tool needs it turning at a set RPM (SPINDL/n,RPM): "
         "give the feed per minute (MMPM, IPM) or the live tool's speed");
@@ -150,8 +151,8 @@ struct MotionStart {
 // axis (a move along the axis keeps C: the CL's rounded points do not turn it by a hair).
 Point3 machine_tip(const PostState& s, const MotionStart& ms, Point3 p) {
   if (!ms.radial || s.m.y_axis) return p;
-  const double r = std::hypot(p.x, p.y), a = std::hypot(s.tool_axis.x, s.tool_axis.y);
-  return {r * s.tool_axis.x / a, r * s.tool_axis.y / a, p.z};
+  const double r = std::hypot(p.x, p.y), a = std::hypot(s.tool_axis.dir.x, s.tool_axis.dir.y);
+  return {r * s.tool_axis.dir.x / a, r * s.tool_axis.dir.y / a, p.z};
 }
 
 // C to `angle` (the shortest way), clamped as the machine clamps an index.
@@ -161,28 +162,36 @@ bool c_to(PostState& s, const Statement& st, double angle) {
 
 }  // namespace
 
-namespace {
-
-// The feed-per-minute code before the first feed block of the milling (the lathe's last mode
-// may be per revolution).
-void per_minute_code(PostState& s, NcWriter& w) {
-  if (s.mill.per_minute) return;
+void per_minute_code(PostState& s, LiveState& l, NcWriter& w) {
+  if (l.mill.per_minute) return;
   w.code(s.m.code("feed_per_min"));
-  s.mill.per_minute = true;
+  l.mill.per_minute = true;
 }
+
+void plane_code(PostState& s, LiveState& l, NcWriter& w, int plane) {
+  if (l.mill.plane == plane) return;
+  w.code(s.m.code(plane == 17   ? "plane_face"
+                  : plane == 19 ? "plane_side"
+                                : "plane_lathe"))
+      .end_block();
+  l.mill.plane = plane;
+}
+
+namespace {
 
 // One XZC piece from `from`: a rapid, or a feed move whose F makes the tool move along the
 // part at `feed` per minute. A piece that does not turn C is the lathe's own move (G94 F is
 // exact along X and Z).
-void xzc_block(PostState& s, XzcPoint from, const XzcPiece& pc, bool rapid, double feed) {
+void xzc_block(PostState& s, LiveState& l, XzcPoint from, const XzcPiece& pc, bool rapid,
+               double feed) {
   const std::vector<double> steps = c_steps(s.m, s.c.angle, pc.to.c, false, std::nullopt);
   const LathePoint to{pc.to.r, pc.to.z};
   if (steps.empty()) {
     if (rapid) return s.prog.rapid(to);
     s.prog.set_feed(feed, FeedMode::kPerMinute);
     s.prog.linear(to);
-    s.mill.inverse_time = false;
-    s.mill.per_minute = true;
+    l.mill.inverse_time = false;
+    l.mill.per_minute = true;
     return;
   }
   if (s.c.clamped) {
@@ -194,11 +203,11 @@ void xzc_block(PostState& s, XzcPoint from, const XzcPiece& pc, bool rapid, doub
   if (rapid) {
     w.code(s.m.code("rapid"));
   } else if (s.m.xzc_inverse_time) {
-    if (!s.mill.inverse_time) w.code(s.m.code("inverse_time"));
-    s.mill.inverse_time = true;
+    if (!l.mill.inverse_time) w.code(s.m.code("inverse_time"));
+    l.mill.inverse_time = true;
     w.code(s.m.code("linear"));
   } else {
-    per_minute_code(s, w);
+    per_minute_code(s, l, w);
     w.code(s.m.code("linear"));
   }
   w.word("X", diameter_factor(s.m) * to.r).word("Z", to.z).word(s.m.c_address, steps.back());
@@ -217,8 +226,8 @@ void xzc_block(PostState& s, XzcPoint from, const XzcPiece& pc, bool rapid, doub
 
 // The straight part-frame move `from` -> `to` at C index `index`, without Y, its pieces within
 // `tol`.
-void xzc_move(PostState& s, Point3 from, Point3 to, double index, bool rapid, double feed,
-              double tol) {
+void xzc_move(PostState& s, LiveState& l, Point3 from, Point3 to, double index, bool rapid,
+              double feed, double tol) {
   const double c0 = *s.c.angle;
   std::vector<XzcPiece> pieces;
   if (rapid) {
@@ -229,7 +238,7 @@ void xzc_move(PostState& s, Point3 from, Point3 to, double index, bool rapid, do
   XzcPoint at = xzc_point(from, index, c0);
   at.c = c0;
   for (const XzcPiece& pc : pieces) {
-    xzc_block(s, at, pc, rapid, feed);
+    xzc_block(s, l, at, pc, rapid, feed);
     rapid ? time_rapid(s, Vec2{pc.to.r, pc.to.z}) : time_feed(s, Vec2{pc.to.r, pc.to.z});
     at = pc.to;
   }
@@ -242,27 +251,17 @@ Point3 machine_xyz(Point3 p, double turn) {
   return {p.x * c - p.y * n, p.x * n + p.y * c, p.z};
 }
 
-// The plane code `plane` (17, 18, 19) when another is in force.
-void plane_code(PostState& s, NcWriter& w, int plane) {
-  if (s.mill.plane == plane) return;
-  w.code(s.m.code(plane == 17   ? "plane_face"
-                  : plane == 19 ? "plane_side"
-                                : "plane_lathe"))
-      .end_block();
-  s.mill.plane = plane;
-}
-
 // The straight move to machine point `m` (a machine with Y, C set): X (diameter) Y Z, exact.
-void xyz_move(PostState& s, Point3 m, bool rapid, double feed, int plane) {
+void xyz_move(PostState& s, LiveState& l, Point3 m, bool rapid, double feed, int plane) {
   NcWriter& w = s.prog.writer();
-  plane_code(s, w, plane);
-  if (!rapid) per_minute_code(s, w);
+  plane_code(s, l, w, plane);
+  if (!rapid) per_minute_code(s, l, w);
   w.code(s.m.code(rapid ? "rapid" : "linear"));
   w.word("X", diameter_factor(s.m) * m.x).word("Y", m.y).word("Z", m.z);
   if (!rapid) w.word("F", feed);
   w.end_block();
-  s.mill.y = m.y;
-  if (rapid) s.mill.rapid_reached(m.x);
+  l.mill.y = m.y;
+  if (rapid) l.mill.rapid_reached(m.x);
   s.prog.cycle_ended_at(LathePoint{m.x, m.z});
   rapid ? time_rapid(s, Vec2{m.x, m.z}) : time_feed(s, Vec2{m.x, m.z});
 }
@@ -307,7 +306,8 @@ std::vector<Point3> arc_points(const MillArc& c, Point3 from, Point3 to, double 
 // The arc in the machine's plane (C turned `turn` past the index): G2/G3 with the two centre
 // words of the plane; false when its axis is along none of X, Y, Z there, or its plane is not
 // the one cutter compensation is on in.
-bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn, double feed) {
+bool xyz_arc(PostState& s, LiveState& l, const MillArc& c, Point3 from, Point3 to, double turn,
+             double feed) {
   const Point3 a = machine_xyz(c.axis, turn), m0 = machine_xyz(from, turn);
   const Point3 m1 = machine_xyz(to, turn), mc = machine_xyz(c.center, turn);
   const double n[3] = {a.x, a.y, a.z};
@@ -315,19 +315,19 @@ bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn
   for (int i = 0; i < 3; ++i)
     if (std::abs(std::abs(n[i]) - 1) < 1e-6) axis = i;
   const int plane = axis == 2 ? 17 : axis == 1 ? 18 : 19;
-  if (axis < 0 || (s.mill.comp != CutterComp::kOff && plane != s.mill.plane)) return false;
+  if (axis < 0 || (l.mill.comp != CutterComp::kOff && plane != l.mill.plane)) return false;
   // G3 turns positively about the plane's normal (+Z in G17, +Y in G18, +X in G19: ISO 6983).
   const bool ccw = c.sense * n[axis] > 0;
   NcWriter& w = s.prog.writer();
-  plane_code(s, w, plane);
-  per_minute_code(s, w);
+  plane_code(s, l, w, plane);
+  per_minute_code(s, l, w);
   w.code(s.m.code(ccw ? "arc_ccw" : "arc_cw"));
   w.word("X", diameter_factor(s.m) * m1.x).word("Y", m1.y).word("Z", m1.z);
   if (axis != 0) w.word("I", mc.x - m0.x);
   if (axis != 1) w.word("J", mc.y - m0.y);
   if (axis != 2) w.word("K", mc.z - m0.z);
   w.word("F", feed).end_block();
-  s.mill.y = m1.y;
+  l.mill.y = m1.y;
   s.prog.cycle_ended_at(LathePoint{m1.x, m1.z});
   time_feed(s, Vec2{m1.x, m1.z});
   return true;
@@ -336,35 +336,35 @@ bool xyz_arc(PostState& s, const MillArc& c, Point3 from, Point3 to, double turn
 // Without Y: the side plane (plane_side) before peripheral work and the lathe plane
 // (plane_lathe) before face work after it, when the machine has the codes. No G1 depends on the
 // plane: it says which work the XZC moves are (plot's peripheral view is drawn by it).
-void xzc_plane(PostState& s, bool radial) {
+void xzc_plane(PostState& s, LiveState& l, bool radial) {
   const int plane = radial ? 19 : 18;
-  if (s.mill.plane == plane || s.m.code(radial ? "plane_side" : "plane_lathe").empty()) return;
-  plane_code(s, s.prog.writer(), plane);
+  if (l.mill.plane == plane || s.m.code(radial ? "plane_side" : "plane_lathe").empty()) return;
+  plane_code(s, l, s.prog.writer(), plane);
 }
 
-// A milling piece to verify (PostOptions::on_mill), else kept (PostState::mill_path).
-void keep_mill(PostState& s, const MillSegment& g) {
+// A milling piece to verify (PostOptions::on_mill), else kept (LiveState::written).
+void keep_mill(PostState& s, LiveState& l, const MillSegment& g) {
   if (s.opts.on_mill) return s.opts.on_mill(g);
-  s.mill_path.push_back(g);
+  l.written.push_back(g);
 }
 
 // Without Y, whether a radial tool reaches the arc's points (reported if not): about Z every
 // point (C follows the tip), about another axis only when they lie on the line of the tool axis
 // (an arc in the plane of the axis and Z, at one C). A face tool's arc is about Z only.
-bool xzc_arc_reached(PostState& s, const Statement& st, const MillArc& c,
+bool xzc_arc_reached(PostState& s, LiveState& l, const Statement& st, const MillArc& c,
                      const std::vector<Point3>& points, bool radial) {
   if (std::abs(std::abs(c.axis.z) - 1) <= 1e-6) return true;
   if (!radial) {
-    refuse(s, st, "an arc about another axis than the spindle's needs a Y axis");
+    refuse(s, l, st, "an arc about another axis than the spindle's needs a Y axis");
     return false;
   }
   Point3 far = points.front(), near = points.front();
   for (const Point3& p : points) {
-    if (tool_line(s.tool_axis, p).off > tool_line(s.tool_axis, far).off) far = p;
-    if (tool_line(s.tool_axis, p).along < tool_line(s.tool_axis, near).along) near = p;
+    if (tool_line(s.tool_axis.dir, p).off > tool_line(s.tool_axis.dir, far).off) far = p;
+    if (tool_line(s.tool_axis.dir, p).along < tool_line(s.tool_axis.dir, near).along) near = p;
   }
-  const Point3 worst = tool_line(s.tool_axis, far).off > s.m.xzc_tolerance ? far : near;
-  return on_tool_line(s, st, worst,
+  const Point3 worst = tool_line(s.tool_axis.dir, far).off > s.m.xzc_tolerance ? far : near;
+  return on_tool_line(s, l, st, worst,
                       fmt::format("the arc of line {} about ({:g}, {:g}, {:g}) at ({:.5g}, {:.5g}, "
                                   "{:.5g})",
                                   c.line, c.axis.x, c.axis.y, c.axis.z, worst.x, worst.y, worst.z));
@@ -372,24 +372,24 @@ bool xzc_arc_reached(PostState& s, const Statement& st, const MillArc& c,
 
 // The arc `c` in polar interpolation: G2/G3 where the control takes them (millturn.polar_arcs),
 // else its chords `points`, each an exact G1.
-void polar_mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
-                    const std::vector<Point3>& points, const MotionStart& ms) {
+void polar_mill_arc(PostState& s, LiveState& l, const Statement& st, const MillArc& c, Point3 from,
+                    Point3 to, const std::vector<Point3>& points, const MotionStart& ms) {
   if (std::abs(std::abs(c.axis.z) - 1) > 1e-6)
-    return refuse(s, st, "an arc about another axis than the spindle's in polar interpolation");
+    return refuse(s, l, st, "an arc about another axis than the spindle's in polar interpolation");
   if (s.m.polar_arcs) {
-    polar_arc(s, st, c.center, c.sense * c.axis.z > 0, from, to, ms.index, ms.feed);
+    polar_arc(s, l, st, c.center, c.sense * c.axis.z > 0, from, to, ms.index, ms.feed);
     return;
   }
   Point3 a = from;
   for (const Point3& p : points) {
-    if (!polar_line(s, st, a, p, ms.index, false, ms.feed)) return;
+    if (!polar_line(s, l, st, a, p, ms.index, false, ms.feed)) return;
     a = p;
   }
 }
 
 // The arc `c` to `to`: G2/G3 in the machine's plane with Y, lines within the tolerance without.
-void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, Point3 to,
-              const MotionStart& ms) {
+void mill_arc(PostState& s, LiveState& l, const Statement& st, const MillArc& c, Point3 from,
+              Point3 to, const MotionStart& ms) {
   double h = 0;
   const Point3 r0 = radial_of(c, from, h), r1 = radial_of(c, to, h);
   const double d0 = std::sqrt(dot(r0, r0)), d1 = std::sqrt(dot(r1, r1));
@@ -401,56 +401,57 @@ void mill_arc(PostState& s, const Statement& st, const MillArc& c, Point3 from, 
   // Chords within half the tolerance, each piece within the other half: the segments verify
   // checks the program against.
   const std::vector<Point3> points = arc_points(c, from, to, s.m.xzc_tolerance / 2);
-  const bool polar = polar_motion(s);
-  if (!s.m.y_axis && !polar && !xzc_arc_reached(s, st, c, points, ms.radial)) return;
-  if (!s.m.y_axis && !polar) xzc_plane(s, ms.radial);
+  const bool polar = polar_motion(s, ms.radial);
+  if (!s.m.y_axis && !polar && !xzc_arc_reached(s, l, st, c, points, ms.radial)) return;
+  if (!s.m.y_axis && !polar) xzc_plane(s, l, ms.radial);
   Point3 at = from;
   for (const Point3& p : points) {
-    keep_mill(s, {st.loc.line, at, p, ms.index, false});
+    keep_mill(s, l, {st.loc.line, at, p, ms.index, false});
     const Point3 q = &p == &points.back() ? machine_tip(s, ms, p) : p;
-    if (!s.m.y_axis && !polar) xzc_move(s, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
+    if (!s.m.y_axis && !polar)
+      xzc_move(s, l, at, q, ms.index, false, ms.feed, s.m.xzc_tolerance / 2);
     at = p;
   }
-  if (polar) return polar_mill_arc(s, st, c, from, to, points, ms);
-  if (!s.m.y_axis || xyz_arc(s, c, from, to, ms.turn, ms.feed)) return;
-  if (s.mill.comp != CutterComp::kOff)
-    return refuse(s, st,
+  if (polar) return polar_mill_arc(s, l, st, c, from, to, points, ms);
+  if (!s.m.y_axis || xyz_arc(s, l, c, from, to, ms.turn, ms.feed)) return;
+  if (l.mill.comp != CutterComp::kOff)
+    return refuse(s, l, st,
                   fmt::format("the arc is not in G{}, the plane cutter compensation (CUTCOM) is on "
                               "in, and a control refuses a plane change under G41/G42: give "
                               "the tool centre's path (CUTCOM/OFF)",
-                              s.mill.plane));
-  refuse(s, st, "the arc's axis is along none of the machine's X, Y, Z at this C");
+                              l.mill.plane));
+  refuse(s, l, st, "the arc's axis is along none of the machine's X, Y, Z at this C");
 }
 
 // Without Y, a radial tool's CL point: on the line of its axis through the centre line.
-bool tip_reached(PostState& s, const Statement& st, const MotionStart& ms, Point3 p) {
+bool tip_reached(PostState& s, LiveState& l, const Statement& st, const MotionStart& ms, Point3 p) {
   if (!ms.radial || s.m.y_axis) return true;
-  return on_tool_line(s, st, p, fmt::format("the tip ({:g}, {:g}, {:g})", p.x, p.y, p.z));
+  return on_tool_line(s, l, st, p, fmt::format("the tip ({:g}, {:g}, {:g})", p.x, p.y, p.z));
 }
 
 // Where a milling motion starts: checked, C set (at the index, or past it for a radial tool on
 // a machine with Y). False (reported, or nothing to write) when the motion is not written.
-bool start_motion(PostState& s, const Statement& st, bool rapid, Point3 to, MotionStart& ms) {
-  if (s.dntcut || !can_mill(s, st)) return false;
-  if (s.tool_axis.z < -1 + 1e-6)
+bool start_motion(PostState& s, LiveState& l, const Statement& st, bool rapid, Point3 to,
+                  MotionStart& ms) {
+  if (s.dntcut || !can_mill(s, l, st, ms.radial)) return false;
+  if (s.tool_axis.dir.z < -1 + 1e-6)
     note_once(s, st, "mill-minus-z",
               "tool axis 0,0,-1: a face tool on the -Z side, working a face that looks toward -Z "
               "(the part at +Z of it, as this CL's frame has it); written in the CL's frame, as "
               "the turning is (docs/millturn.md, \"A face tool on the -Z side\")");
   ensure_started(s);
   ++s.stats.motions;
-  const std::optional<double> feed = rapid ? std::optional<double>(0) : mill_feed(s, st);
+  const std::optional<double> feed = rapid ? std::optional<double>(0) : mill_feed(s, l, st);
   if (!feed) return false;
   ms.feed = *feed;
   ms.index = part_index(s, st);
-  const std::optional<double> turn = side_turn(s, st);
+  const std::optional<double> turn = side_turn(s, l, st);
   if (!turn) return false;
-  ms.radial = s.hole_axis_radial;
-  if (!tip_reached(s, st, ms, to)) return false;
+  if (!tip_reached(s, l, st, ms, to)) return false;
   // Without Y the point gives C (the tool axis its side); with Y C turns the tool's side to X.
   if (s.m.y_axis) ms.turn = *turn;
   // C unknown, or a machine with Y: C where the work is first.
-  if (!polar_motion(s) && (!s.c.angle || s.m.y_axis) && !c_to(s, st, ms.index + ms.turn))
+  if (!polar_motion(s, ms.radial) && (!s.c.angle || s.m.y_axis) && !c_to(s, st, ms.index + ms.turn))
     return false;
   if (!s.pos && !rapid) {
     error(s, st, st.loc, "a milling feed move needs a start point: no GOTO or FROM before it");
@@ -461,7 +462,7 @@ bool start_motion(PostState& s, const Statement& st, bool rapid, Point3 to, Moti
 
 }  // namespace
 
-void milling_goto(PostState& s, const Statement& st, Point3 p) {
+void milling_goto(PostState& s, LiveState& l, const Statement& st, Point3 p, bool radial) {
   const std::optional<Circle> circle = s.circle;
   const bool rapid = s.rapid_next;
   s.circle.reset();
@@ -472,7 +473,8 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                              "feed, there is no rapid arc",
                              circle->loc.line));
   MotionStart ms;
-  if (!start_motion(s, st, rapid, p, ms)) {
+  ms.radial = radial;
+  if (!start_motion(s, l, st, rapid, p, ms)) {
     s.pos = p;  // DNTCUT: the position is tracked, nothing is written
     return;
   }
@@ -485,28 +487,28 @@ void milling_goto(PostState& s, const Statement& st, Point3 p) {
                       scaled({circle->ax, circle->ay, circle->az}, 1 / len),
                       1,
                       circle->loc.line};
-    return mill_arc(s, st, arc, from, p, ms);
+    return mill_arc(s, l, st, arc, from, p, ms);
   }
-  keep_mill(s, {st.loc.line, from, p, ms.index, rapid});
-  if (polar_motion(s)) {
-    polar_line(s, st, from, p, ms.index, rapid, ms.feed);
+  keep_mill(s, l, {st.loc.line, from, p, ms.index, rapid});
+  if (polar_motion(s, radial)) {
+    polar_line(s, l, st, from, p, ms.index, rapid, ms.feed);
     return;
   }
   if (!s.m.y_axis) {
-    xzc_plane(s, ms.radial);
-    return xzc_move(s, from, machine_tip(s, ms, p), ms.index, rapid, ms.feed, s.m.xzc_tolerance);
+    xzc_plane(s, l, ms.radial);
+    return xzc_move(s, l, from, machine_tip(s, ms, p), ms.index, rapid, ms.feed, s.m.xzc_tolerance);
   }
   // The face's lines in G17; a radial tool's in the plane in force (its arcs choose theirs).
-  xyz_move(s, machine_xyz(p, ms.turn), rapid, ms.feed, s.hole_axis_radial ? s.mill.plane : 17);
+  xyz_move(s, l, machine_xyz(p, ms.turn), rapid, ms.feed, radial ? l.mill.plane : 17);
 }
 
-void milling_circle(PostState& s, const Statement& st, const Circle& c) {
-  if (!can_mill(s, st)) return;
+void milling_circle(PostState& s, LiveState& l, const Statement& st, const Circle& c, bool radial) {
+  if (!can_mill(s, l, st, radial)) return;
   const double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
   if (!(len > 0))
-    return refuse(s, st, fmt::format("CIRCLE/ with the axis ({}, {}, {})", c.ax, c.ay, c.az));
-  if (!s.m.y_axis && !s.hole_axis_radial && std::abs(std::abs(c.az) / len - 1) > 1e-6)
-    return refuse(s, st,
+    return refuse(s, l, st, fmt::format("CIRCLE/ with the axis ({}, {}, {})", c.ax, c.ay, c.az));
+  if (!s.m.y_axis && !radial && std::abs(std::abs(c.az) / len - 1) > 1e-6)
+    return refuse(s, l, st,
                   fmt::format("CIRCLE/ about the axis ({}, {}, {}), not the spindle axis: without "
                               "a Y axis a live tool's arc is written in the face plane only",
                               c.ax, c.ay, c.az));
@@ -533,10 +535,7 @@ bool helical_words(PostState& s, const Statement& st, Point3& c, Point3& dir, Po
 
 }  // namespace
 
-// HELICAL/CENTER,…,INDIRV,…,AXIS,…,END,… (CATIA): an arc (a helix when END moves along the
-// axis) from where the tool is to END, turning the way INDIRV starts it.
-void helical_stmt(PostState& s, const Statement& st) {
-  if (!s.tool.mills()) return unknown_stmt(s, st);
+void milling_helical(PostState& s, LiveState& l, const Statement& st, bool radial) {
   if (circle_waits(s, st)) return;
   Point3 c, dir, axis, end;
   if (!helical_words(s, st, c, dir, axis, end)) return;
@@ -546,58 +545,18 @@ void helical_stmt(PostState& s, const Statement& st) {
   const Point3 a = scaled(axis, 1 / len);
   double h = 0;
   const int sense = dot(cross(a, radial_of({c, a, 1, 0}, *s.pos, h)), dir) >= 0 ? 1 : -1;
-  milling_arc_to(s, st, c, a, sense, end);
+  milling_arc_to(s, l, st, c, a, sense, end, radial);
 }
 
-void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axis, int sense,
-                    Point3 end) {
+void milling_arc_to(PostState& s, LiveState& l, const Statement& st, Point3 center, Point3 axis,
+                    int sense, Point3 end, bool radial) {
   MotionStart ms;
+  ms.radial = radial;
   if (!s.pos) return error(s, st, st.loc, "an arc needs a start point: no GOTO or FROM before it");
-  if (!start_motion(s, st, false, end, ms)) return;
+  if (!start_motion(s, l, st, false, end, ms)) return;
   const Point3 from = *s.pos;
   s.pos = end;
-  mill_arc(s, st, {center, axis, sense, st.loc.line}, from, end, ms);
-}
-
-namespace {
-// The post's own return of Y to 0 at the end of the milling (the CL asked for no such move). Y 0
-// is the centre line: from where the CL left a radial tool (retracted sideways, along Y, at its
-// cutting depth) it would go through the part. So X goes out first to the largest X a rapid of
-// the section reached (the approach, trusted as clear: the CL brought the tool there), when the
-// tool is below it. Only a radial tool: X is its depth; a face tool's is Z, and X out at its Z
-// would move it across the face. Its limit: that X is clear at the approach's Y and Z, not
-// proven at Y 0.
-void y_home(PostState& s) {
-  // Y as written: a Y that prints as 0 left the tool at the control's Y0 (linear_3x_PATH2).
-  if (s.prog.num("Y", s.mill.y) == s.prog.num("Y", 0.0)) return;
-  NcWriter& w = s.prog.writer();
-  const std::optional<LathePoint> at = s.prog.position();
-  const double f = diameter_factor(s.m);
-  if (s.hole_axis_radial && at && s.mill.rapid_x && at->r < *s.mill.rapid_x &&
-      s.prog.num("X", f * at->r) != s.prog.num("X", f * *s.mill.rapid_x)) {
-    w.code(s.m.code("rapid")).word("X", f * *s.mill.rapid_x).end_block();
-    s.prog.cycle_ended_at(LathePoint{*s.mill.rapid_x, at->z});
-    time_rapid(s, Vec2{*s.mill.rapid_x, at->z});
-  }
-  w.code(s.m.code("rapid")).word("Y", 0.0).end_block();
-}
-}  // namespace
-
-void end_milling(PostState& s) {
-  // G40 before polar interpolation ends and before the plane goes back: a control refuses
-  // either under G41/G42 (docs/millturn.md).
-  if (s.mill.comp != CutterComp::kOff) s.prog.cutter_comp(CutterComp::kOff);
-  polar_exit(s);
-  y_home(s);
-  if (s.mill.plane != 18) {
-    s.prog.writer().code(s.m.code("plane_lathe")).end_block();
-    s.prog.forget_modal();
-  }
-  s.mill = MillState{};
-}
-
-void milling_comp_plane(PostState& s) {
-  if (s.m.y_axis) plane_code(s, s.prog.writer(), s.hole_axis_radial ? 19 : 17);
+  mill_arc(s, l, st, {center, axis, sense, st.loc.line}, from, end, ms);
 }
 
 }  // namespace clpost

@@ -1,31 +1,33 @@
 #pragma once
-// A live tool's milling motion (milling_motion.cc, docs/millturn.md): GOTO, GODLTA and CIRCLE/
-// of a milling tool outside a hole cycle. The CL point is in the part frame (Z the spindle axis,
-// X/Y the face plane) turned by the C index (the last ROTABL): on a machine with Y it is written
-// as X (diameter) Y Z in the face plane at that C, without Y as X, Z and C computed by the post
-// (laws/xzc_law.h).
-#include "interpreter/post_state.h"
+// The milling engine of the live paths (live_path.h, docs/millturn.md): GOTO, GODLTA, CIRCLE/,
+// HELICAL/ and geometric motion of a milling tool outside a hole cycle. The CL point is in the
+// part frame (Z the spindle axis, X/Y the face plane) turned by the C index (the last ROTABL): on
+// a machine with Y it is written as X (diameter) Y Z in the face plane at that C, without Y as
+// X, Z and C computed by the post (laws/xzc_law.h), or in the control's polar interpolation
+// (milling_polar.h). `l` is the live paths' state; `radial`: the tool works across the axis
+// (LiveRadialPath), else the face.
+#include "interpreter/live_path.h"
 
 namespace clpost {
 
 // A GOTO (or GODLTA) of a milling tool to part point `p`.
-void milling_goto(PostState& s, const Statement& st, Point3 p);
+void milling_goto(PostState& s, LiveState& l, const Statement& st, Point3 p, bool radial);
 // CIRCLE/ `c` with a milling tool: the arc of the next GOTO, about an axis along Z.
-void milling_circle(PostState& s, const Statement& st, const Circle& c);
+void milling_circle(PostState& s, LiveState& l, const Statement& st, const Circle& c, bool radial);
 // An arc of a milling tool from where it is to `end`, about `axis` through `center`, turning
 // `sense` (+1 positively about the axis): HELICAL/ and geometric motion (milling_geometry.cc).
-void milling_arc_to(PostState& s, const Statement& st, Point3 center, Point3 axis, int sense,
-                    Point3 end);
+void milling_arc_to(PostState& s, LiveState& l, const Statement& st, Point3 center, Point3 axis,
+                    int sense, Point3 end, bool radial);
 // TLON,GOFWD/(CYLNDR/…),ON[,n,INTOF],(PLANE/…) of a milling tool (milling_geometry.cc).
-void milling_go(PostState& s, const Statement& st);
-// HELICAL/ (CATIA) with a milling tool: an arc or a helix about any axis; without a milling
-// tool the comment an unknown statement is.
-void helical_stmt(PostState& s, const Statement& st);
-// Before a hole or a tool change: Y back to 0 and the lathe plane after face milling in Y.
-void end_milling(PostState& s);
-// Before CUTCOM/LEFT|RIGHT of a milling tool on a machine with Y: the plane the compensation
-// works in, G17 for a face tool, G19 for a radial one (a control refuses a plane change under
-// G41/G42: docs/millturn.md).
-void milling_comp_plane(PostState& s);
+void milling_go(PostState& s, LiveState& l, const Statement& st, bool radial);
+// HELICAL/CENTER,…,INDIRV,…,AXIS,…,END,… (CATIA): an arc (a helix when END moves along the
+// axis) from where the tool is to END, turning the way INDIRV starts it.
+void milling_helical(PostState& s, LiveState& l, const Statement& st, bool radial);
+// The feed-per-minute code (codes.feed_per_min) before the first feed block of the milling (the
+// lathe's last mode may be per revolution).
+void per_minute_code(PostState& s, LiveState& l, NcWriter& w);
+// The plane code `plane` (17 plane_face, 18 plane_lathe, 19 plane_side) when another is in
+// force.
+void plane_code(PostState& s, LiveState& l, NcWriter& w, int plane);
 
 }  // namespace clpost

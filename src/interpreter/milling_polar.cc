@@ -32,6 +32,7 @@
 #include <cmath>
 
 #include "interpreter/clock.h"
+#include "interpreter/milling_motion.h"
 #include "interpreter/millturn.h"
 #include "support/angles.h"
 
@@ -56,25 +57,19 @@ void point_words(const PostState& s, NcWriter& w, FacePoint p, double z) {
   w.word("X", x_factor * p.x).word(s.m.polar_address, p.y).word("Z", z);
 }
 
-void moved_to(PostState& s, FacePoint p, double z, bool rapid) {
-  s.mill.polar_x = p.x;
-  s.mill.polar_y = p.y;
+void moved_to(PostState& s, LiveState& l, FacePoint p, double z, bool rapid) {
+  l.mill.polar_x = p.x;
+  l.mill.polar_y = p.y;
   const double r = std::hypot(p.x, p.y);
   s.prog.cycle_ended_at(LathePoint{r, z});
   rapid ? time_rapid(s, Vec2{r, z}) : time_feed(s, Vec2{r, z});
 }
 
-void per_minute(PostState& s, NcWriter& w) {
-  if (s.mill.per_minute) return;
-  w.code(s.m.code("feed_per_min"));
-  s.mill.per_minute = true;
-}
-
 // C to 0 (unclamped), code polar_on, plane_face when the machine has it. On a feed move the tool
 // must be where C0 puts it: at `from` (turned by the index) on the plane's X axis.
-bool enter(PostState& s, const Statement& st, Point3 from, double index, bool rapid) {
-  if (s.mill.polar) return true;
-  if (s.mill.comp != CutterComp::kOff) {
+bool enter(PostState& s, LiveState& l, const Statement& st, Point3 from, double index, bool rapid) {
+  if (l.mill.polar) return true;
+  if (l.mill.comp != CutterComp::kOff) {
     // G41/G42 are among the G codes of the mode (the Fanuc manual: "Polar coordinate
     // interpolation is applied to the path after cutter compensation"); what a compensation
     // started before the mode does across its start no source says.
@@ -94,13 +89,13 @@ bool enter(PostState& s, const Statement& st, Point3 from, double index, bool ra
   w.code(s.m.code("polar_on")).end_block();
   if (!s.m.code("plane_face").empty()) {
     w.code(s.m.code("plane_face")).end_block();
-    s.mill.plane = 17;
+    l.mill.plane = 17;
   }
   s.prog.forget_modal();
-  s.mill.polar = true;
+  l.mill.polar = true;
   const double r = std::hypot(from.x, from.y);
-  s.mill.polar_x = r;
-  s.mill.polar_y = 0;
+  l.mill.polar_x = r;
+  l.mill.polar_y = 0;
   const FacePoint f = at_c0(from, index);
   if (rapid || std::hypot(f.x - r, f.y) <= s.m.xzc_tolerance) return true;
   error(s, st, st.loc,
@@ -111,8 +106,8 @@ bool enter(PostState& s, const Statement& st, Point3 from, double index, bool ra
 
 }  // namespace
 
-bool polar_motion(const PostState& s) {
-  return s.m.polar_interpolation && !s.hole_axis_radial;
+bool polar_motion(const PostState& s, bool radial) {
+  return s.m.polar_interpolation && !radial;
 }
 
 std::string polar_missing(const Machine& m) {
@@ -126,10 +121,10 @@ std::string polar_missing(const Machine& m) {
   return {};
 }
 
-bool polar_line(PostState& s, const Statement& st, Point3 from, Point3 to, double index, bool rapid,
-                double feed) {
-  if (!enter(s, st, from, index, rapid)) return false;
-  const FacePoint a{s.mill.polar_x, s.mill.polar_y}, b = at_c0(to, index);
+bool polar_line(PostState& s, LiveState& l, const Statement& st, Point3 from, Point3 to,
+                double index, bool rapid, double feed) {
+  if (!enter(s, l, st, from, index, rapid)) return false;
+  const FacePoint a{l.mill.polar_x, l.mill.polar_y}, b = at_c0(to, index);
   if (!rapid && std::abs(to.z - from.z) > 1e-9 && std::hypot(b.x - a.x, b.y - a.y) > 1e-9) {
     error(s, st, st.loc,
           "a feed move along Z and across the face at once in polar interpolation: how the "
@@ -139,22 +134,22 @@ bool polar_line(PostState& s, const Statement& st, Point3 from, Point3 to, doubl
   NcWriter& w = s.prog.writer();
   // A rapid as a G1 at millturn.polar_rapid_feed, on a control that takes no G0 in the mode.
   const bool g1 = !rapid || s.m.polar_rapid_feed > 0;
-  if (g1) per_minute(s, w);
+  if (g1) per_minute_code(s, l, w);
   w.code(s.m.code(g1 ? "linear" : "rapid"));
   point_words(s, w, b, to.z);
   if (g1) w.word("F", rapid ? s.m.polar_rapid_feed : feed);
   w.end_block();
-  moved_to(s, b, to.z, rapid);
+  moved_to(s, l, b, to.z, rapid);
   return true;
 }
 
-bool polar_arc(PostState& s, const Statement& st, Point3 center, bool ccw, Point3 from, Point3 to,
-               double index, double feed) {
+bool polar_arc(PostState& s, LiveState& l, const Statement& st, Point3 center, bool ccw,
+               Point3 from, Point3 to, double index, double feed) {
   if (std::abs(to.z - from.z) > 1e-9) {
     error(s, st, st.loc, "a helix in polar interpolation is not written (an arc at one Z is)");
     return false;
   }
-  if (!enter(s, st, from, index, false)) return false;
+  if (!enter(s, l, st, from, index, false)) return false;
   const FacePoint c = at_c0(center, index), a = at_c0(from, index), b = at_c0(to, index);
   const double a0 = std::atan2(a.y - c.y, a.x - c.x), r = std::hypot(a.x - c.x, a.y - c.y);
   double sweep = std::atan2(b.y - c.y, b.x - c.x) - a0;
@@ -166,23 +161,23 @@ bool polar_arc(PostState& s, const Statement& st, Point3 center, bool ccw, Point
   for (int k = 1; k <= n; ++k) {
     const double ang = a0 + (ccw ? 1 : -1) * sweep * k / n;
     const FacePoint e = k == n ? b : FacePoint{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
-    per_minute(s, w);
+    per_minute_code(s, l, w);
     w.code(s.m.code(ccw ? "arc_ccw" : "arc_cw"));
     point_words(s, w, e, to.z);
     w.word("I", c.x - at.x).word("J", c.y - at.y).word("F", feed).end_block();
-    moved_to(s, e, to.z, false);
+    moved_to(s, l, e, to.z, false);
     at = e;
   }
   return true;
 }
 
-void polar_exit(PostState& s) {
-  if (!s.mill.polar) return;
+void polar_exit(PostState& s, LiveState& l) {
+  if (!l.mill.polar) return;
   s.prog.writer().code(s.m.code("polar_off")).end_block();
   s.prog.forget_modal();
-  s.mill.polar = false;
+  l.mill.polar = false;
   // C is at the angle of the tool's point in the plane (where it entered when on the centre).
-  const double x = s.mill.polar_x, y = s.mill.polar_y;
+  const double x = l.mill.polar_x, y = l.mill.polar_y;
   const double c = std::hypot(x, y) > 1e-9 ? degrees(std::atan2(y, x)) : 0;
   if (s.m.c_rotation == CRotation::kRollover)
     s.c.angle = c < 0 ? c + 360 : c;

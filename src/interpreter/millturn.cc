@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "interpreter/milling_motion.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_path.h"
 #include "machine/template_values.h"
 
 namespace clpost {
@@ -34,22 +34,14 @@ void code_block(PostState& s, const std::string& key) {
   if (!code.empty()) s.prog.writer().code(code).end_block();
 }
 
-// The live tool stops (template live_spindle_stop) when it turns.
-void stop_live(PostState& s, const Statement& st) {
-  if (!s.live.on) return;
-  s.live.on = false;
-  if (TemplateWrite r = s.prog.write_template(TemplateFill<tmpl::kLiveSpindleStop>()); !r)
-    error(s, st, st.loc, template_error(s.m, r));
-}
+}  // namespace
 
-// The main spindle stops for milling or C positioning: written when the CL left it turning.
 void hold_main_spindle(PostState& s, const Statement& st) {
   if (!s.spindle.on || s.spindle_stopped) return;
   s.spindle_stopped = true;  // turns again, as the CL left it, before the next turning motion
   if (TemplateWrite r = s.prog.spindle_stop(); !r) error(s, st, st.loc, template_error(s.m, r));
 }
 
-// The main spindle becomes the C axis (once, until it turns again).
 void engage_c(PostState& s, const Statement& st) {
   if (!s.m.c_axis || s.c.engaged) return;
   hold_main_spindle(s, st);
@@ -58,8 +50,6 @@ void engage_c(PostState& s, const Statement& st) {
   s.c.clamped = false;
   s.c.angle.reset();
 }
-
-}  // namespace
 
 std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st, size_t first,
                                         SourceLoc& at) {
@@ -74,56 +64,12 @@ std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st,
   return s.cl_mode;
 }
 
-bool millturn_tool_change(PostState& s, const Statement& st, int tool,
-                          const std::optional<ToolKindWord>& kind, SourceLoc at) {
-  const bool mills = kind && kind->kind == ToolKind::kMill;
-  s.mill_motion_reported = false;
-  if (mills && !s.m.live_tools) {
-    const std::string where = kind->line == st.loc.line
-                                  ? std::string("LOADTL's MILL word")
-                                  : fmt::format("{} at line {}", kind->said, kind->line);
-    error(s, st, at,
-          fmt::format("tool {} is a milling (live) tool ({}), but machine '{}' has no live tools "
-                      "(millturn.live_tools: false): its SPINDL would turn the main spindle, "
-                      "with the part, at the live tool's speed",
-                      tool, where, s.m.name));
-    s.mill_motion_reported = true;  // its motions are not reported again
-    return false;
-  }
-  end_milling_section(s, st, false);
-  if (mills) hold_main_spindle(s, st);
-  return true;
-}
-
-void end_milling_section(PostState& s, const Statement& st, bool release) {
-  if (s.tool.mills()) {
-    end_milling(s);
-    stop_live(s, st);
-  }
-  if (release) release_c(s);
-}
-
-void millturn_after_tool_change(PostState& s, const Statement& st) {
-  if (s.tool.mills()) engage_c(s, st);
-}
-
 void release_c(PostState& s) {
   if (!s.c.engaged) return;
   if (s.c.clamped) code_block(s, "c_unclamp");
   time_c(s, 0, s.c.clamped ? 1 : 0);
   code_block(s, "c_disengage");
   s.c = CAxisState{};
-}
-
-bool live_xz_move(const PostState& s, Point3 p) {
-  if (!s.tool.mills()) return false;
-  // A tool axis off Z is still an XZ move when it is along X at Y 0: the radial drill's approach.
-  if (s.hole_axis_radial && (std::fabs(axis_value(s.tool_axis, third_axis(s))) > 1e-6 ||
-                             std::fabs(axis_value(s.tool_axis, s.m.cl_axial)) > 1e-6))
-    return false;
-  if (std::fabs(axis_value(p, third_axis(s))) > 1e-4) return false;
-  if (!s.c.angle && std::fabs(cl2(s, p).x) > 1e-4) return false;
-  return s.rapid_next || s.feed_mode != FeedMode::kPerRev;
 }
 
 bool c_at_index(const PostState& s) {
@@ -250,7 +196,7 @@ void rotabl_stmt(PostState& s, const Statement& st) {
                              st.major, s.m.name));
   ensure_started(s);
   engage_c(s, st);
-  if (s.mill.polar) end_milling(s);  // C is an axis again
+  s.path->before_c_index(s, st);  // a live tool leaves polar interpolation: C is an axis again
   if (w.incremental && !s.c.angle)
     return error(s, st, st.loc,
                  fmt::format("{}/…,INCR: C's position is not known yet (no ROTABL since the C "

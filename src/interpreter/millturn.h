@@ -13,24 +13,15 @@ namespace clpost {
 // TOOLNO/…,MILL), else the CL's mode (APPLY/MILL); none: a turning tool.
 std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st, size_t first,
                                         SourceLoc& at);
-// Before tool `tool` of `kind` is loaded: the live tool of the one leaving stops, the main
-// spindle stops for a milling tool. False (an error at `at`): a milling tool on a machine
-// without live tools.
-bool millturn_tool_change(PostState& s, const Statement& st, int tool,
-                          const std::optional<ToolKindWord>& kind, SourceLoc at);
-// The end of a live tool's work, the same before a tool change and at the program end: cutter
-// compensation off, Y back to 0 (a rapid from where the CL left the tool) and the lathe plane
-// (end_milling), the live tool stopped. With `release` (the program end) C is unclamped and
-// disengaged too, whatever the tool; across a tool change C stays engaged for a next milling
-// tool, until the main spindle turns again (release_c).
-void end_milling_section(PostState& s, const Statement& st, bool release);
-// After the tool change block: a milling tool engages C.
-void millturn_after_tool_change(PostState& s, const Statement& st);
-// Before the main spindle turns: C is unclamped and disengaged.
+// The main spindle stops for milling or C positioning: written when the CL left it turning (it
+// turns again, as the CL left it, before the next turning motion: restart_stopped_spindle).
+void hold_main_spindle(PostState& s, const Statement& st);
+// The main spindle becomes the C axis (codes.c_engage), once, until it turns again: for a
+// milling tool (ToolPath::begin) and for ROTABL/.
+void engage_c(PostState& s, const Statement& st);
+// Before the main spindle turns, and at the program end: C is unclamped and disengaged. Across a
+// tool change C stays engaged for a next milling tool.
 void release_c(PostState& s);
-// A GOTO of a milling tool to `p` that is an XZ move at the C index, written as a lathe's move:
-// Y 0, the tool axis along Z, C indexed (or X 0), a rapid or a feed per minute.
-bool live_xz_move(const PostState& s, Point3 p);
 // C is at the C index (the last ROTABL's angle, whole turns aside), or either is not known.
 bool c_at_index(const PostState& s);
 // The C words that take C from `from` (unknown: none) to `angle` (incremental: by `angle`),

@@ -1,12 +1,13 @@
-// Motion statements: GOTO, FROM, GODLTA, CIRCLE (+ the GOTO that ends its arc), RAPID.
+// Motion statements: GOTO, FROM, GODLTA, CIRCLE (+ the GOTO that ends its arc), RAPID, read
+// here and written by the path of the tool loaded (tool_path.h); and the lathe's own move
+// (move_to) with verify's record of it.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "interpreter/milling_motion.h"
-#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_path.h"
 
 namespace clpost {
 
@@ -210,7 +211,7 @@ void move_to(PostState& s, const Statement& st, Point3 p) {
   const Vec2 v = cl2(s, p);
   if (s.rapid_next) {
     s.prog.rapid(LathePoint{v.x, v.z});
-    if (s.tool.mills()) s.mill.rapid_reached(v.x);  // a live tool's XZ approach
+    s.path->rapid_reached(v.x);  // a live tool's XZ approach
     time_rapid(s, v);
   } else {
     if (!s.feed_given) error(s, st, st.loc, "feed move before any FEDRAT/: the feed is unknown");
@@ -243,30 +244,12 @@ void goto_stmt(PostState& s, const Statement& st) {
         !number_arg(s, st, 5, "a tool axis component", t.z))
       return;
     const double len = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
-    s.hole_axis_radial =
+    s.tool_axis.radial =
         !(len > 0) || std::fabs(std::fabs(axis_value(t, s.m.cl_axial)) / len - 1) > 1e-6;
-    if (len > 0) s.tool_axis = Point3{t.x / len, t.y / len, t.z / len};
-    if (!s.tool.mills())
-      note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
+    if (len > 0) s.tool_axis.dir = Point3{t.x / len, t.y / len, t.z / len};
+    s.path->tool_axis(s, st);
   }
-  // A live tool's hole cycle GOTOs are face holes (hole_goto.cc), its XZ moves at the C index
-  // are a lathe's moves; its other motion is refused.
-  // A live tool's motion is milling (milling_motion.cc), but the radial drill's approach along X
-  // at Y 0 (live_xz_move) from the +X side, the lathe's XZ move; a tool from the -X side is
-  // milling (C turns it to the turret's side). Without Y only a rapid at the C index on the
-  // tool's side of the centre line is that approach: a radial tool's other moves are milling in
-  // X Z C, the point giving C (docs/millturn.md, "Peripheral milling without Y").
-  const bool radial_approach = s.hole_axis_radial && live_xz_move(s, p) && s.tool_axis.x > 0 &&
-                               (s.m.y_axis || (s.rapid_next && c_at_index(s) && p.x > 0));
-  if (s.tool.mills() && !s.in_cycle && !radial_approach) return milling_goto(s, st, p);
-  if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
-    if (s.hole_cycle && s.tool.mills()) end_milling(s);  // hole_live.cc turns C
-    if (s.hole_cycle) hole_goto(s, st, p);
-    return;
-  }
-  if (!frame_point(s, st, p)) return;
-  if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
-  move_to(s, st, p);
+  s.path->go_to(s, st, p);
 }
 
 bool circle_waits(PostState& s, const Statement& st) {
@@ -302,11 +285,7 @@ void godlta_stmt(PostState& s, const Statement& st) {
     if (!number_arg(s, st, 0, "dX", d.x) || !number_arg(s, st, 1, "dY", d.y)) return;
     if (st.args.size() >= 3 && !number_arg(s, st, 2, "dZ", d.z)) return;
   }
-  const Point3 p{s.pos->x + d.x, s.pos->y + d.y, s.pos->z + d.z};
-  if (s.tool.mills()) return milling_goto(s, st, p);
-  if (!frame_point(s, st, p)) return;
-  if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
-  move_to(s, st, p);
+  s.path->go_delta(s, st, Point3{s.pos->x + d.x, s.pos->y + d.y, s.pos->z + d.z});
 }
 
 void circle_stmt(PostState& s, const Statement& st) {
@@ -317,20 +296,7 @@ void circle_stmt(PostState& s, const Statement& st) {
       !number_arg(s, st, 6, "the radius", c.radius))
     return;
   c.loc = st.loc;
-  if (s.tool.mills()) return milling_circle(s, st, c);
-  frame_normal(s, st, Point3{c.ax, c.ay, c.az});
-  // The arc turns about its axis; in the lathe frame that axis must be normal to the plane.
-  const double axis[3] = {c.ax, c.ay, c.az};
-  const double len = std::sqrt(c.ax * c.ax + c.ay * c.ay + c.az * c.az);
-  if (!(len > 0) || std::abs(std::abs(axis[static_cast<int>(third_axis(s))] / len) - 1) > 1e-6) {
-    error(s, st, st.loc,
-          fmt::format("CIRCLE axis ({}, {}, {}) is not normal to the lathe plane: the arc cannot "
-                      "be cut on a lathe",
-                      c.ax, c.ay, c.az));
-    return;
-  }
-  if (!frame_point(s, st, Point3{c.cx, c.cy, c.cz})) return;
-  s.circle = c;
+  s.path->circle(s, st, c);
 }
 
 // Fusion's APT post: MOVARC/cx,cy,cz,i,j,k,r[,ANGLE,a] (or CENTER,cx,cy,cz,AXIS,i,j,k,RADIUS,r)
@@ -362,6 +328,10 @@ void movarc_stmt(PostState& s, const Statement& st) {
 
 void rapid_stmt(PostState& s, const Statement&) {
   s.rapid_next = true;
+}
+
+void helical_stmt(PostState& s, const Statement& st) {
+  s.path->helical(s, st);
 }
 
 }  // namespace clpost

@@ -6,12 +6,14 @@
 #include <algorithm>
 
 #include "emitters/planner_settings.h"
+#include "interpreter/tool_paths.h"
 
 namespace clpost {
 
 PostState::PostState(const Machine& machine, NcProgram& program, Diagnostics& d,
                      const PostOptions& o)
-    : m(machine), prog(program), diags(d), opts(o) {
+    : m(machine), prog(program), diags(d), opts(o), paths(std::make_unique<ToolPaths>()) {
+  path = &paths->turning;  // no tool loaded yet: the lathe's
   radial_auto = machine.cl_radial == ClAxis::kAuto;
   // Undecided: the first of the two axes besides the axial one (all points so far on the axis).
   radial =
@@ -20,6 +22,8 @@ PostState::PostState(const Machine& machine, NcProgram& program, Diagnostics& d,
   thread.settings = planner_settings(machine);
   thread.emitter = make_emitter(machine);
 }
+
+PostState::~PostState() = default;
 
 void error(PostState& s, const Statement& st, SourceLoc loc, std::string msg) {
   s.diags.error(loc, st.line_text(loc.line), std::move(msg));

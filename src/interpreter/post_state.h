@@ -1,10 +1,13 @@
 #pragma once
 // The state of one post in progress: the machine, the program being written, the diagnostics and
 // the CL's modal state (units, position, feed, spindle, tool, thread sequences). Every statement
-// handler (statement_table.h) reads and changes it; one PostState per file, nothing shared.
+// handler (statement_table.h) reads and changes it; one PostState per file, nothing shared. What
+// one kind of tool alone needs is its motion path's (tool_path.h): PostState holds the path in
+// force and the paths with their state (ToolPaths).
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -84,23 +87,16 @@ struct CAxisState {
   std::optional<double> index;
 };
 
-// Face milling written so far (milling_motion.cc): the G17 plane and Y of a machine with Y, and
-// the inverse-time feed mode of XZC moves, as last written.
-struct MillState {
-  int plane = 18;                   // the plane in force: 17 (plane_face), 19 (plane_side), 18
-  double y = 0;                     // Y as last written (output units)
-  bool inverse_time = false;        // codes.inverse_time in force
-  bool per_minute = false;          // codes.feed_per_min written for this tool's milling
-  bool polar = false;               // in polar interpolation (codes.polar_on written)
-  double polar_x = 0, polar_y = 0;  // there: the tool in the face plane at C0 (a radius)
-  // The live tool's G41/G42 in force (CUTCOM): the plane does not change under it, and G40 is
-  // written before the plane goes back (end_milling).
-  CutterComp comp = CutterComp::kOff;
-  // The largest X (a radius, output units) a rapid of this live tool reached: its approach,
-  // which the CL put in the clear. end_milling goes back out to it before the post's own Y 0.
-  std::optional<double> rapid_x;
-  void rapid_reached(double x) { rapid_x = std::max(rapid_x.value_or(x), x); }
+// The tool axis as the CL's last GOTO/x,y,z,i,j,k gave it, until the next tool change (one that
+// is refused keeps it): what a live tool's path reads (its face or radial work, tool_paths.h); a
+// turning tool's is noted and ignored.
+struct ToolAxis {
+  Point3 dir{0, 0, 1};  // a unit vector in the CL frame (the last one given of length > 0)
+  bool radial = false;  // not along the spindle's axis (or of length 0): across it, or tilted
 };
+
+class ToolPath;
+struct ToolPaths;
 
 // The tool in the spindle or turret station, as the CL described it: the tool change sets number
 // and offset; tool-data words (TOOLNO, TPRINT, CUTTER, SWITCH, a `PPRINT TOOL:` comment) fill in
@@ -128,6 +124,7 @@ inline bool within_limits(double v) {
 
 struct PostState {
   PostState(const Machine& machine, NcProgram& program, Diagnostics& d, const PostOptions& o);
+  ~PostState();
 
   const Machine& m;
   NcProgram& prog;
@@ -148,15 +145,15 @@ struct PostState {
   FeedMode feed_mode = FeedMode::kPerMinute;
   double feed = 0;  // output units
   SpindleState spindle;
-  // Mill-turn (millturn.cc): the live tool's spindle, the C axis, the CL's mill/turn mode
-  // (APPLY/, SET/MODE, MODE/) for tool changes that do not say, and whether the first milling
-  // motion of the tool loaded last was reported (later ones are then left out silently).
-  SpindleState live;
+  // The motion path of the tool loaded (tool_path.h), selected at the tool change, and every
+  // path of the post with its own state (tool_paths.h).
+  std::unique_ptr<ToolPaths> paths;
+  ToolPath* path = nullptr;
+  // Mill-turn (millturn.cc): the C axis (the main spindle as an axis, for any tool's ROTABL/),
+  // the CL's mill/turn mode (APPLY/, SET/MODE, MODE/) for tool changes that do not say.
   CAxisState c;
   std::optional<ToolKindWord> cl_mode;
-  bool mill_motion_reported = false;
-  bool hole_axis_radial = false;    // the last GOTO's tool axis (i,j,k) is not along the spindle's
-  Point3 tool_axis{0, 0, 1};        // the last GOTO's tool axis, a unit vector in the CL frame
+  ToolAxis tool_axis;
   bool spindle_stopped = false;     // the control's tool change stopped the CL's turning spindle
   Coolant coolant = Coolant::kOff;  // as the CL last set it
   // OPSKIP/ON … OFF: the spindle and coolant before the range, which the blocks after it must
@@ -192,8 +189,6 @@ struct PostState {
   ThreadSequence thread;                // the thread sequence being read, if any
   double clock_feed = -1;         // the feed in force for the clock, per minute (time_feed_rate)
   bool clock_feed_noted = false;  // the clock tool's feeds and speeds have the feed in force
-  MillState mill;                 // face milling of a live tool (milling_motion.cc)
-  std::vector<MillSegment> mill_path;  // every milling piece written, in order (verify)
 };
 
 // Diagnostics at statement `st` (its own line text is shown).

@@ -3,10 +3,8 @@
 #include <fmt/format.h>
 
 #include "interpreter/clock.h"
-#include "interpreter/milling_motion.h"
-#include "interpreter/milling_polar.h"
-#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_path.h"
 
 namespace clpost {
 
@@ -131,27 +129,6 @@ void coolnt_stmt(PostState& s, const Statement& st) {
   s.prog.coolant(c);
 }
 
-namespace {
-
-// A live tool whose axis is 0,0,-1 (it stands on the -Z side of the face it works:
-// milling_motion.cc, side_turn).
-bool face_tool_from_minus_z(const PostState& s) {
-  return s.tool.mills() && axis_value(s.tool_axis, s.m.cl_axial) < -1 + 1e-6;
-}
-
-// CUTCOM's side seen from +Z. APT's LEFT and RIGHT are seen looking down the tool axis from
-// the tool; a control's G41/G42 in the face plane (G17) from +Z (docs/millturn.md, "A face tool
-// on the -Z side"): for a tool whose axis is 0,0,-1 the two views are opposite.
-CutterComp opposite_side(PostState& s, const Statement& st, CutterComp c) {
-  if (c == CutterComp::kOff) return c;
-  note_once(s, st, "cutcom-minus-z",
-            "CUTCOM/ with a live tool whose axis is 0,0,-1: the CL's side is seen from the tool, "
-            "on the -Z side; the control's G41/G42 from +Z: written as the other side");
-  return c == CutterComp::kLeft ? CutterComp::kRight : CutterComp::kLeft;
-}
-
-}  // namespace
-
 void cutcom_stmt(PostState& s, const Statement& st) {
   if (st.args.empty() || !st.args[0].is_word()) {
     error(s, st, st.args.empty() ? st.loc : st.args[0].loc, "expected CUTCOM/LEFT, RIGHT or OFF");
@@ -170,27 +147,7 @@ void cutcom_stmt(PostState& s, const Statement& st) {
           fmt::format("unknown CUTCOM word '{}': expected LEFT, RIGHT or OFF", a.text));
     return;
   }
-  // Without Y (nor polar interpolation) the post computes X Z C itself: the control's G41/G42
-  // would offset the lathe's X and Z, not the path on the face.
-  // One cause per tool (milling_motion.cc): after this, or after its motion was refused, the
-  // tool's milling is not reported again.
-  if (s.tool.mills() && !s.m.y_axis && !s.m.polar_interpolation && c != CutterComp::kOff) {
-    if (s.mill_motion_reported) return;
-    s.mill_motion_reported = true;
-    return error(s, st, a.loc,
-                 fmt::format("CUTCOM/{} with live tool {}: machine '{}' has no Y axis, and its "
-                             "milling is X Z C computed by the post, where the control's cutter "
-                             "compensation does not offset the path on the part: give the tool "
-                             "centre's path (CUTCOM/OFF) (docs/millturn.md)",
-                             a.text, s.tool.number, s.m.name));
-  }
-  ensure_started(s);
-  if (s.tool.mills()) {
-    // The plane first: a control refuses a plane change under G41/G42 (docs/millturn.md).
-    if (c != CutterComp::kOff) milling_comp_plane(s);
-    s.mill.comp = c;
-  }
-  s.prog.cutter_comp(face_tool_from_minus_z(s) ? opposite_side(s, st, c) : c);
+  s.path->cutter_comp(s, st, a, c);
 }
 
 void stop_stmt(PostState& s, const Statement& st) {
@@ -206,9 +163,8 @@ void finish_program(PostState& s, const Statement& at) {
   if (s.ended) return;
   end_sequences(s);
   ensure_started(s);
-  end_milling_section(s, at,
-                      true);  // as before a tool change (polar interpolation off), C released
-  end_nc_lines(s);            // the program end is no tool's
+  s.path->leave(s, at, true);  // as before a tool change (polar interpolation off), C released
+  end_nc_lines(s);             // the program end is no tool's
   if (TemplateWrite r = s.prog.end(s.partno); !r)
     s.diags.error(SourceLoc{}, {}, template_error(s.m, r));
   const NcWriter& w = s.prog.writer();

@@ -5,7 +5,9 @@
 #include <optional>
 
 #include "interpreter/millturn.h"
+#include "interpreter/spindle_words.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_path.h"
 #include "machine/template_values.h"
 
 namespace clpost {
@@ -13,15 +15,6 @@ namespace clpost {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-
-// SPINDL/ as read: the words in any order.
-struct SpindleWords {
-  std::optional<double> value, max_rpm;
-  SourceLoc value_loc;
-  bool css = false, off = false, on = false;
-  const Arg* surface_word = nullptr;  // SFM or SMM
-  std::optional<SpindleDir> dir;
-};
 
 // Reads SPINDL/'s words into `w`; false (reported) on a bad one.
 bool read_spindle_words(PostState& s, const Statement& st, SpindleWords& w) {
@@ -85,56 +78,6 @@ void surface_speed_unit(PostState& s, const Statement& st, SpindleWords& w) {
                         w.surface_word->text, *w.value, file_unit));
 }
 
-// A speed the S format rounds to nothing would be written as S0: a turning spindle that stands
-// still on the machine (CATIA writes its tools' SPINDL/0.398,RPM defaults). False: reported.
-bool speed_written(PostState& s, const Statement& st, const SpindleWords& w) {
-  const NumberFormat& f = s.m.format_for("S");
-  if (std::llround(*w.value * f.scale * std::pow(10.0, f.decimals)) != 0) return true;
-  error(s, st, w.value_loc,
-        fmt::format("spindle speed {} would be written as S{} (formats.S: {} decimals): the "
-                    "spindle would not turn",
-                    *w.value, s.prog.num("S", *w.value), f.decimals));
-  return false;
-}
-
-// SPINDL/ while a milling tool is loaded: the live tool's speed (templates live_spindle_rpm and
-// live_spindle_stop, codes live_spindle_cw/ccw, millturn.live_max_rpm). The main spindle stays
-// stopped.
-void live_spindl(PostState& s, const Statement& st, SpindleWords w) {
-  if (!s.m.live_tools) return;  // the tool change was an error already
-  SpindleState& sp = s.live;
-  ensure_started(s);
-  if (w.off) {
-    sp.on = false;
-    if (TemplateWrite r = s.prog.write_template(TemplateFill<tmpl::kLiveSpindleStop>()); !r)
-      error(s, st, st.loc, template_error(s.m, r));
-    return;
-  }
-  if (w.css)
-    return error(s, st, w.surface_word ? w.surface_word->loc : st.loc,
-                 fmt::format("a live tool turns at a speed in RPM: a surface speed for milling "
-                             "tool {} is not supported",
-                             s.tool.number));
-  if (!w.value && w.on && sp.value > 0) w.value = sp.value;
-  if (!w.value) return error(s, st, st.loc, "SPINDL/ needs a speed for the live tool");
-  if (!(*w.value > 0))
-    return error(s, st, w.value_loc,
-                 fmt::format("spindle speed must be positive, got {}", *w.value));
-  if (!speed_written(s, st, w)) return;
-  if (s.m.live_max_rpm > 0 && *w.value > s.m.live_max_rpm)
-    return error(s, st, w.value_loc,
-                 fmt::format("live tool speed {} rpm exceeds the machine's maximum {} rpm "
-                             "(millturn.live_max_rpm)",
-                             *w.value, s.m.live_max_rpm));
-  if (w.dir) sp.dir = *w.dir;
-  sp.value = *w.value, sp.on = true;
-  TemplateFill<tmpl::kLiveSpindleRpm> v;
-  v.text<"rpm">(s.prog.num("S", sp.value))
-      .text<"direction">(
-          s.m.code(sp.dir == SpindleDir::kCw ? "live_spindle_cw" : "live_spindle_ccw"));
-  if (TemplateWrite r = s.prog.write_template(v); !r) error(s, st, st.loc, template_error(s.m, r));
-}
-
 // Turns the spindle on at the speed of `w` (the earlier speed for SPINDL/ON).
 void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
   SpindleState& sp = s.spindle;
@@ -183,6 +126,16 @@ void spindle_on(PostState& s, const Statement& st, SpindleWords w) {
 }
 
 }  // namespace
+
+bool speed_written(PostState& s, const Statement& st, const SpindleWords& w) {
+  const NumberFormat& f = s.m.format_for("S");
+  if (std::llround(*w.value * f.scale * std::pow(10.0, f.decimals)) != 0) return true;
+  error(s, st, w.value_loc,
+        fmt::format("spindle speed {} would be written as S{} (formats.S: {} decimals): the "
+                    "spindle would not turn",
+                    *w.value, s.prog.num("S", *w.value), f.decimals));
+  return false;
+}
 
 void fedrat_stmt(PostState& s, const Statement& st) {
   double value = 0;
@@ -249,7 +202,7 @@ void restate_spindle(PostState& s, const Statement& st) {
 }
 
 void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_text) {
-  if (!s.spindle_stopped || s.tool.mills()) return;  // it stays stopped while a tool mills
+  if (!s.spindle_stopped || !s.path->turns_main_spindle()) return;  // a live tool keeps it
   release_c(s);
   s.spindle_stopped = false;
   if (s.before_skip) s.spindle_in_skip = true;  // a skipped block: stated again after the range
@@ -258,8 +211,10 @@ void restart_stopped_spindle(PostState& s, SourceLoc loc, std::string_view line_
 
 void spindl_stmt(PostState& s, const Statement& st) {
   SpindleWords w;
-  if (!read_spindle_words(s, st, w)) return;
-  if (s.tool.mills()) return live_spindl(s, st, w);
+  if (read_spindle_words(s, st, w)) s.path->spindle(s, st, w);
+}
+
+void main_spindl(PostState& s, const Statement& st, SpindleWords w) {
   s.spindle_stopped = false;  // this statement says what the spindle does
   if (s.before_skip) s.spindle_in_skip = true;
   surface_speed_unit(s, st, w);

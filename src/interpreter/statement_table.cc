@@ -1,8 +1,6 @@
 // The major words the interpreter knows and their handlers (statement_table.h).
 #include "interpreter/statement_table.h"
 
-#include "interpreter/milling_motion.h"
-
 #include <algorithm>
 #include <array>
 
@@ -17,7 +15,7 @@ constexpr StatementEntry kEntries[] = {
     {"GODLTA", godlta_stmt},
     {"CIRCLE", circle_stmt},
     {"MOVARC", movarc_stmt},
-    {"HELICAL", helical_stmt},  // milling_motion.cc
+    {"HELICAL", helical_stmt},  // motion.cc
     {"RAPID", rapid_stmt},
     // Feed, spindle, dwell (spindle_feed.cc)
     {"FEDRAT", fedrat_stmt},

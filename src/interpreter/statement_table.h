@@ -1,11 +1,13 @@
 #pragma once
 // Statement handlers by major word. Each family lives in its own file: motion.cc (GOTO, FROM,
-// GODLTA, CIRCLE, RAPID), spindle_feed.cc (FEDRAT, SPINDL, DELAY), tool.cc (LOADTL, LOAD/TOOL,
-// TURRET), program_words.cc (UNITS, COOLNT, CUTCOM, STOP, FINI, … and the words skipped),
-// text_words.cc (PARTNO, PPRINT, INSERT, TOOL PATH, unknown words), thread_statements.cc
+// GODLTA, CIRCLE, RAPID, HELICAL), spindle_feed.cc (FEDRAT, SPINDL, DELAY), tool.cc (LOADTL,
+// LOAD/TOOL, TURRET), program_words.cc (UNITS, COOLNT, CUTCOM, STOP, FINI, … and the words
+// skipped), text_words.cc (PARTNO, PPRINT, INSERT, TOOL PATH, unknown words), thread_statements.cc
 // (PITCH, THREAD, OP/THREAD, COUPLE), cycles.cc (CYCLE/), cam_words.cc (SYN, DNTCUT/CUT, TOOLNO,
 // TPRINT, CUTTER, SWITCH), geometric_motion.cc (INDIRV, PSIS, GOFWD …; its geometry in
-// lathe_geometry.cc). A new CL word is one entry in statement_table.cc and one handler.
+// lathe_geometry.cc). A new CL word is one entry in statement_table.cc and one handler. What a
+// statement does for one kind of tool is its motion path's (tool_path.h): the handler reads the
+// statement and calls the path in force.
 #include <span>
 #include <string_view>
 
@@ -33,6 +35,9 @@ void godlta_stmt(PostState& s, const Statement& st);
 void circle_stmt(PostState& s, const Statement& st);
 void rapid_stmt(PostState& s, const Statement& st);
 void movarc_stmt(PostState& s, const Statement& st);
+// HELICAL/ (CATIA): an arc or a helix of a milling tool; the comment an unknown statement is for
+// a turning tool.
+void helical_stmt(PostState& s, const Statement& st);
 void fedrat_stmt(PostState& s, const Statement& st);
 void spindl_stmt(PostState& s, const Statement& st);
 void delay_stmt(PostState& s, const Statement& st);
@@ -84,17 +89,20 @@ void switch_stmt(PostState& s, const Statement& st);
 void indirv_stmt(PostState& s, const Statement& st);
 void psis_stmt(PostState& s, const Statement& st);
 void go_stmt(PostState& s, const Statement& st);  // GOFWD, GOLFT, GORGT, GOBACK
+// The turning path's geometric motion and PSIS/ (geometric_motion.cc): in the lathe plane.
+void lathe_go(PostState& s, const Statement& st);
+void lathe_part_surface(PostState& s, const Statement& st);
 // The replacement SYN/ gave major word `major` (empty: ignored), or nullptr.
 const std::string* synonym_of(const PostState& s, std::string_view major);
 // GOFWD, GOLFT, GORGT, GOBACK: the words whose modifiers (TLON, TLLFT, TLRGT) go_stmt reads.
 inline bool is_motion_word(std::string_view w) {
   return w == "GOFWD" || w == "GOLFT" || w == "GORGT" || w == "GOBACK";
 }
-// Hole-making cycles (hole_cycles.cc): CYCLE/DRILL, DEEP, … and CYCLE/INIT; the GOTO of a hole
-// while one is in force (hole_goto.cc).
+// Hole-making cycles (hole_cycles.cc): CYCLE/DRILL, DEEP, … and CYCLE/INIT; the GOTO of a
+// turning tool's hole while one is in force (hole_goto.cc).
 bool is_hole_cycle(std::string_view word);
 void hole_cycle_stmt(PostState& s, const Statement& st);
-void hole_goto(PostState& s, const Statement& st, Point3 p);
+void lathe_hole(PostState& s, const Statement& st, Point3 p);
 
 // Mill-turn (millturn.cc): TDATA/TLDATA, APPLY/SET/MODE, ROTABL/ROTATE, SYNC.
 void tdata_stmt(PostState& s, const Statement& st);
@@ -119,11 +127,18 @@ void end_sequences(PostState& s);
 
 // FINI or the end of input (`at`: the FINI, or an empty statement at the file's last line): a
 // single-pass thread is cut, open sequences reported, a live tool's milling ended
-// (end_milling_section), the program end written (once).
+// (ToolPath::leave), the program end written (once).
 void finish_program(PostState& s, const Statement& at);
 
 // The ordinary move to `p` (motion.cc): rapid, feed or the arc of a CIRCLE/ before it.
 void move_to(PostState& s, const Statement& st, Point3 p);
+// A GOTO in the lathe plane (the turning path's, a radial live tool's approach): on the frame's
+// plane, a thread sequence's point while one is open, else the ordinary move.
+inline void lathe_goto(PostState& s, const Statement& st, Point3 p) {
+  if (!frame_point(s, st, p)) return;
+  if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
+  move_to(s, st, p);
+}
 // Verify's record of a motion to `to` (PostOptions::keep_motions): its end point and, when it
 // changed, the state it is made with (motion.cc). `from_pos`: the motion starts where s.pos
 // is (a GOTO), so it stays put when `to` is there; false for a hole's retract, which follows the

@@ -5,6 +5,7 @@
 
 #include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_paths.h"
 #include "machine/template_values.h"
 
 namespace clpost {
@@ -56,7 +57,8 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   SourceLoc kind_at;
   const std::optional<ToolKindWord> kind = loadtl_kind(s, st, first, kind_at);
   ensure_started(s);
-  if (!millturn_tool_change(s, st, static_cast<int>(tool), kind, kind_at)) {
+  // The path of the tool leaving ends its work, the new tool's path is selected (tool_paths.h).
+  if (!change_path(s, st, static_cast<int>(tool), kind, kind_at)) {
     s.tool = ToolInfo{};  // its SPINDL and motions are not posted: the error says why
     s.tool.number = static_cast<int>(tool), s.tool.kind = kind;
     return;
@@ -70,8 +72,6 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   s.tool.number = static_cast<int>(tool);
   s.tool.motions_at_change = s.stats.motions;
   s.tool_line = st.loc.line;
-  s.hole_axis_radial = false;  // a tool axis the CL gave the last tool is not the new one's
-  s.tool_axis = Point3{0, 0, 1};
   s.tool.offset = offset;
   time_tool_change(s);
   if (TemplateWrite r = s.prog.tool_change(static_cast<int>(tool), offset, ""); !r)
@@ -79,7 +79,7 @@ void tool_change(PostState& s, const Statement& st, size_t first) {
   // A tool change leaves the spindle as the CL left it (docs/cl-meaning.md).
   if (s.m.control && s.m.control->tool_change_stops_spindle && s.spindle.on)
     s.spindle_stopped = true;
-  millturn_after_tool_change(s, st);
+  s.path->begin(s, st);
 }
 
 }  // namespace
