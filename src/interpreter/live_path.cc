@@ -80,23 +80,23 @@ void LivePath::tool_axis(PostState& s, const Statement&) {
 
 void LivePath::hole(PostState& s, const Statement& st, Point3 p) {
   leave_milling(s, st, Leave::kMilling);  // the hole's C is hole_live.cc's
-  live_hole(s, l_, st, p, radial());
+  live_hole(s, l_, st, p, radial_);
 }
 
 void LivePath::go_delta(PostState& s, const Statement& st, Point3 p) {
-  milling_goto(s, l_, st, p, radial());
+  milling_goto(s, l_, st, p, radial_);
 }
 
 void LivePath::circle(PostState& s, const Statement& st, const Circle& c) {
-  milling_circle(s, l_, st, c, radial());
+  milling_circle(s, l_, st, c, radial_);
 }
 
 void LivePath::helical(PostState& s, const Statement& st) {
-  milling_helical(s, l_, st, radial());
+  milling_helical(s, l_, st, radial_);
 }
 
 void LivePath::go(PostState& s, const Statement& st) {
-  milling_go(s, l_, st, radial());
+  milling_go(s, l_, st, radial_);
 }
 
 void LivePath::part_surface(PostState& s, const Statement& st) {
@@ -160,7 +160,7 @@ void LivePath::cutter_comp(PostState& s, const Statement& st, const Arg& word, C
   ensure_started(s);
   // The plane first, G17 for a face tool, G19 for a radial one: a control refuses a plane change
   // under G41/G42 (docs/millturn.md).
-  if (c != CutterComp::kOff && s.m.y_axis) plane_code(s, l_, s.prog.writer(), radial() ? 19 : 17);
+  if (c != CutterComp::kOff && s.m.y_axis) plane_code(s, l_, s.prog.writer(), radial_ ? 19 : 17);
   l_.mill.comp = c;
   // A tool whose axis is 0,0,-1 stands on the -Z side of the face it works (milling_motion.cc,
   // side_turn).

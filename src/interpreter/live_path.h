@@ -56,7 +56,8 @@ enum class Leave : uint8_t {
 
 class LivePath : public ToolPath {
  public:
-  explicit LivePath(LiveState& l) : l_(l) {}
+  // `radial`: the tool works across the axis, else the face.
+  LivePath(LiveState& l, bool radial) : l_(l), radial_(radial) {}
 
   void prepare(PostState& s, const Statement& st) override;
   void begin(PostState& s, const Statement& st) override;
@@ -74,11 +75,9 @@ class LivePath : public ToolPath {
   void before_c_index(PostState& s, const Statement& st) override;
 
  protected:
-  // The tool works across the axis (radial), not the face.
-  virtual bool radial() const = 0;
   // Before the post's own Y 0 at the end of the milling: what takes the tool clear of the part
-  // first (a radial tool: X out).
-  virtual void retract(PostState& s) = 0;
+  // first (a face tool: nothing; a radial tool: X out).
+  virtual void retract(PostState&) {}
   // The end of the milling, in the one order a control takes it (docs/millturn.md, "What a tool
   // change does"): cutter compensation off, polar interpolation off, the retract and Y back to
   // 0, the lathe plane; then with kTool or kProgram the live spindle stops, with kProgram C is
@@ -88,27 +87,23 @@ class LivePath : public ToolPath {
   void hole(PostState& s, const Statement& st, Point3 p);
 
   LiveState& l_;
+  const bool radial_;
 };
 
 // A live tool at the face (live_face_path.cc): its axis along the spindle's.
 class LiveFacePath final : public LivePath {
  public:
-  using LivePath::LivePath;
+  explicit LiveFacePath(LiveState& l) : LivePath(l, false) {}
   void go_to(PostState& s, const Statement& st, Point3 p) override;
-
- private:
-  bool radial() const override { return false; }
-  void retract(PostState&) override {}
 };
 
 // A live tool across the axis (live_radial_path.cc): its axis through the centre line.
 class LiveRadialPath final : public LivePath {
  public:
-  using LivePath::LivePath;
+  explicit LiveRadialPath(LiveState& l) : LivePath(l, true) {}
   void go_to(PostState& s, const Statement& st, Point3 p) override;
 
  private:
-  bool radial() const override { return true; }
   void retract(PostState& s) override;
 };
 

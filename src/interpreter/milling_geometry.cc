@@ -1,7 +1,7 @@
 // Geometric motion of a milling tool (docs/millturn.md): CATIA's
 // TLON,GOFWD/(CYLNDR/…),ON[,n,INTOF],(PLANE/…) in MillTurn3x_PATH1: the tool centre on the
 // cylinder, from where it is, the way INDIRV starts it, around the cylinder's axis to the n-th
-// point on the check plane; written as the arc (milling_motion.cc). Other drive or check
+// point on the check plane; written as the arc (milling_arc.cc). Other drive or check
 // surfaces, tool sides and conditions of a milling tool are located errors.
 #include <fmt/format.h>
 

@@ -23,9 +23,6 @@ void milling_go(PostState& s, LiveState& l, const Statement& st, bool radial);
 // HELICAL/CENTER,…,INDIRV,…,AXIS,…,END,… (CATIA): an arc (a helix when END moves along the
 // axis) from where the tool is to END, turning the way INDIRV starts it.
 void milling_helical(PostState& s, LiveState& l, const Statement& st, bool radial);
-// The feed-per-minute code (codes.feed_per_min) before the first feed block of the milling (the
-// lathe's last mode may be per revolution).
-void per_minute_code(PostState& s, LiveState& l, NcWriter& w);
 // The plane code `plane` (17 plane_face, 18 plane_lathe, 19 plane_side) when another is in
 // force.
 void plane_code(PostState& s, LiveState& l, NcWriter& w, int plane);

@@ -22,7 +22,7 @@
 //   when the linear axis is the X-axis", the Fanuc manual), each at most 120 degrees (both
 //   posts: maximumCircularSweep 120, "reduced sweep due to G112 support"); the Haas post
 //   linearizes every arc in G112 (onCircular), so haas-st-20y writes chords
-//   (milling_motion.cc, mill_arc).
+//   (milling_arc.cc, mill_arc).
 // A feed move along Z and across the plane at once is an error: no source says how F is taken
 // for it.
 #include "interpreter/milling_polar.h"
@@ -32,7 +32,7 @@
 #include <cmath>
 
 #include "interpreter/clock.h"
-#include "interpreter/milling_motion.h"
+#include "interpreter/milling_parts.h"
 #include "interpreter/millturn.h"
 #include "support/angles.h"
 

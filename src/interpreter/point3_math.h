@@ -1,8 +1,8 @@
 #pragma once
 // Vector arithmetic on Point3 (a CL point or direction as read, before the lathe frame), for the
 // interpreter's 3D geometry: geometric motion (lathe_geometry.cc, geometric_motion.cc) and
-// milling (milling_geometry.cc, milling_motion.cc). In its own namespace, like vec2_math.h;
-// `using namespace clpost::point3_math;` in a .cc file to use it.
+// milling (milling_geometry.cc, milling_arc.cc, milling_motion.cc). In its own namespace, like
+// vec2_math.h; `using namespace clpost::point3_math;` in a .cc file to use it.
 #include <cmath>
 
 #include "laws/xzc_law.h"

@@ -4,7 +4,7 @@
 // C = index + atan2(y, x). A straight part-frame line is not straight in X and C: it is split
 // into pieces, each moving X, Z and C together (linearly, as the control interpolates them),
 // whose chordal error from the line stays within a tolerance. Pure geometry: the interpreter
-// writes the pieces (interpreter/milling_motion.cc), verify maps X and C back.
+// writes the pieces (interpreter/milling_xzc.cc), verify maps X and C back.
 #include <cstdint>
 #include <vector>
 
