@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_kind.h"
 
 namespace clpost {
 
@@ -98,10 +99,7 @@ void toolno_stmt(PostState& s, const Statement& st) {
   if (!number_arg(s, st, 0, "a tool number", n)) return;
   ToolInfo& t = s.next_tool;
   t.number = static_cast<int>(n);
-  for (size_t i = 1; i < st.args.size(); ++i)  // Fusion's TOOLNO/n,MILL,…; ICAM's …,(MILL,TURN),…
-    if (st.args[i].is("MILL") || st.args[i].is("TURN"))
-      t.kind = ToolKindWord{st.args[i].is("MILL") ? ToolKind::kMill : ToolKind::kTurn,
-                            fmt::format("TOOLNO/…,{}", st.args[i].text), st.loc.line};
+  if (std::optional<ToolKindWord> kind = toolno_kind(st)) t.kind = kind;
   if (st.args.size() < 2 || !st.args[1].is("TURN")) return;
   auto number_at = [&](size_t i) -> std::optional<double> {
     if (i < st.args.size() && st.args[i].is_number() && within_limits(st.args[i].number))

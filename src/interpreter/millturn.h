@@ -1,6 +1,7 @@
 #pragma once
-// Mill-turn in the interpreter (millturn.cc, docs/millturn.md): milling tools, the live spindle
-// and the C axis around tool changes, spindle starts and motions.
+// Mill-turn in the interpreter (millturn.cc, docs/millturn.md): the main spindle as the C axis
+// around tool changes, spindle starts and motions, and C positioning. A live tool's own work is
+// its path's (live_path.h); which tools mill, tool_kind.h.
 #include <optional>
 #include <vector>
 
@@ -8,11 +9,6 @@
 
 namespace clpost {
 
-// The kind of the tool LOADTL-like statement `st` loads (its tool number is argument `first`):
-// a MILL or TURN word of its own (`at` set to it), else the tool data before it (TDATA/MILL,
-// TOOLNO/…,MILL), else the CL's mode (APPLY/MILL); none: a turning tool.
-std::optional<ToolKindWord> loadtl_kind(const PostState& s, const Statement& st, size_t first,
-                                        SourceLoc& at);
 // The main spindle stops for milling or C positioning: written when the CL left it turning (it
 // turns again, as the CL left it, before the next turning motion: restart_stopped_spindle).
 void hold_main_spindle(PostState& s, const Statement& st);

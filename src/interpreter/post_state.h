@@ -112,7 +112,6 @@ struct ToolInfo {
   std::optional<ToolKindWord> kind;   // what the CL said it does (none: it turns)
   std::optional<double> diameter;     // CL units: CUTTER/d, TLDATA/MILL|DRILL,…,d
   size_t motions_at_change = 0;       // PostStats::motions when it was loaded
-  bool mills() const { return kind && kind->kind == ToolKind::kMill; }
 };
 
 // The largest CL value (coordinate, feed, speed, time) that becomes an NC word: anything larger

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "interpreter/millturn.h"
 #include "interpreter/statement_table.h"
+#include "interpreter/tool_kind.h"
 #include "interpreter/tool_paths.h"
 #include "machine/template_values.h"
 
