@@ -70,7 +70,7 @@ void frame_normal(PostState& s, const Statement& st, Point3 n) {
   }
 }
 
-bool frame_point_checked(PostState& s, const Statement& st, Point3 p) {
+bool frame_point_checked(PostState& s, const Statement& st, const Point3& p) {
   if (s.radial_auto && s.radial_found == 0) return decide(s, st, p);
   const ClAxis third = third_axis(s);
   const double off = axis_value(p, third);

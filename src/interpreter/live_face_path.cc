@@ -6,7 +6,7 @@
 
 namespace clpost {
 
-void LiveFacePath::go_to(PostState& s, const Statement& st, Point3 p) {
+void LiveFacePath::go_to(PostState& s, const Statement& st, const Point3& p) {
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
     if (s.hole_cycle) hole(s, st, p);
     return;

@@ -83,7 +83,7 @@ void LivePath::hole(PostState& s, const Statement& st, Point3 p) {
   live_hole(s, l_, st, p, radial_);
 }
 
-void LivePath::go_delta(PostState& s, const Statement& st, Point3 p) {
+void LivePath::go_delta(PostState& s, const Statement& st, const Point3& p) {
   milling_goto(s, l_, st, p, radial_);
 }
 

@@ -63,7 +63,7 @@ class LivePath : public ToolPath {
   void begin(PostState& s, const Statement& st) override;
   void leave(PostState& s, const Statement& st, bool program_end) override;
   void tool_axis(PostState& s, const Statement& st) override;
-  void go_delta(PostState& s, const Statement& st, Point3 p) override;
+  void go_delta(PostState& s, const Statement& st, const Point3& p) override;
   void circle(PostState& s, const Statement& st, const Circle& c) override;
   void helical(PostState& s, const Statement& st) override;
   void go(PostState& s, const Statement& st) override;
@@ -94,14 +94,14 @@ class LivePath : public ToolPath {
 class LiveFacePath final : public LivePath {
  public:
   explicit LiveFacePath(LiveState& l) : LivePath(l, false) {}
-  void go_to(PostState& s, const Statement& st, Point3 p) override;
+  void go_to(PostState& s, const Statement& st, const Point3& p) override;
 };
 
 // A live tool across the axis (live_radial_path.cc): its axis through the centre line.
 class LiveRadialPath final : public LivePath {
  public:
   explicit LiveRadialPath(LiveState& l) : LivePath(l, true) {}
-  void go_to(PostState& s, const Statement& st, Point3 p) override;
+  void go_to(PostState& s, const Statement& st, const Point3& p) override;
 
  private:
   void retract(PostState& s) override;

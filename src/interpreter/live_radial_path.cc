@@ -37,7 +37,7 @@ bool xz_approach(const PostState& s, Point3 p) {
 
 }  // namespace
 
-void LiveRadialPath::go_to(PostState& s, const Statement& st, Point3 p) {
+void LiveRadialPath::go_to(PostState& s, const Statement& st, const Point3& p) {
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
     if (s.hole_cycle) hole(s, st, p);
     return;

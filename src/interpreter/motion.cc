@@ -180,7 +180,7 @@ void check_spindle_for_feed(PostState& s, const Statement& st) {
 }
 }  // namespace
 
-void move_to(PostState& s, const Statement& st, Point3 p) {
+void move_to(PostState& s, const Statement& st, const Point3& p) {
   if (s.dntcut) {  // DNTCUT … CUT: the position is tracked, nothing is written
     s.pos = p;
     s.rapid_next = false;

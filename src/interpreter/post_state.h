@@ -251,8 +251,8 @@ double axis_value(Point3 p, ClAxis a);
 // the lathe plane after that is an error; with a fixed axis such a point is warned about once
 // and its third coordinate ignored. False: an error was reported.
 // The common case inline (every GOTO comes here): the frame is settled and the point on the plane.
-bool frame_point_checked(PostState& s, const Statement& st, Point3 p);
-inline bool frame_point(PostState& s, const Statement& st, Point3 p) {
+bool frame_point_checked(PostState& s, const Statement& st, const Point3& p);
+inline bool frame_point(PostState& s, const Statement& st, const Point3& p) {
   if (s.off_plane_axis >= 0) {
     const double v[3] = {p.x, p.y, p.z};
     if (!(std::abs(v[s.off_plane_axis]) > 1e-6)) return true;

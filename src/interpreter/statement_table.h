@@ -118,7 +118,7 @@ void unknown_stmt(PostState& s, const Statement& st);
 void odd_statement(PostState& s, const Statement& st, bool known);
 
 // Thread sequences (thread_statements.cc). A GOTO's point while a sequence is open.
-void thread_goto(PostState& s, const Statement& st, Point3 p);
+void thread_goto(PostState& s, const Statement& st, const Point3& p);
 // Whether statement `st` may stand inside the open sequence; false: reported, skip it. A
 // single-pass thread ends at the first statement that is not a GOTO: it is cut here.
 bool sequence_accepts(PostState& s, const Statement& st);
@@ -131,10 +131,10 @@ void end_sequences(PostState& s);
 void finish_program(PostState& s, const Statement& at);
 
 // The ordinary move to `p` (motion.cc): rapid, feed or the arc of a CIRCLE/ before it.
-void move_to(PostState& s, const Statement& st, Point3 p);
+void move_to(PostState& s, const Statement& st, const Point3& p);
 // A GOTO in the lathe plane (the turning path's, a radial live tool's approach): on the frame's
 // plane, a thread sequence's point while one is open, else the ordinary move.
-inline void lathe_goto(PostState& s, const Statement& st, Point3 p) {
+inline void lathe_goto(PostState& s, const Statement& st, const Point3& p) {
   if (!frame_point(s, st, p)) return;
   if (s.thread.kind != ThreadSequence::Kind::kNone) return thread_goto(s, st, p);
   move_to(s, st, p);

@@ -274,7 +274,7 @@ void couple_stmt(PostState& s, const Statement& st) {
   open_couple(s, st);
 }
 
-void thread_goto(PostState& s, const Statement& st, Point3 p) {
+void thread_goto(PostState& s, const Statement& st, const Point3& p) {
   ThreadSequence& t = s.thread;
   const Vec2 v = cl2(s, p);
   if (t.kind == Kind::kSingle && t.single.gotos.empty() && !t.failed) {

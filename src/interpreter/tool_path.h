@@ -32,9 +32,9 @@ class ToolPath {
   // GOTO/x,y,z,i,j,k gave a tool axis (PostState::tool_axis, already stored).
   virtual void tool_axis(PostState& s, const Statement& st) = 0;
   // GOTO/ to CL point `p`: every motion of a turning program comes here.
-  virtual void go_to(PostState& s, const Statement& st, Point3 p) = 0;
+  virtual void go_to(PostState& s, const Statement& st, const Point3& p) = 0;
   // GODLTA/: to `p`, where the increment takes the tool.
-  virtual void go_delta(PostState& s, const Statement& st, Point3 p) = 0;
+  virtual void go_delta(PostState& s, const Statement& st, const Point3& p) = 0;
   // CIRCLE/ (and MOVARC/) `c`: the arc the next GOTO ends.
   virtual void circle(PostState& s, const Statement& st, const Circle& c) = 0;
   // HELICAL/.

@@ -17,7 +17,7 @@ void TurningPath::tool_axis(PostState& s, const Statement& st) {
   note_once(s, st, "tool-axis", "tool axis vectors (GOTO i,j,k) are ignored on a lathe");
 }
 
-void TurningPath::go_to(PostState& s, const Statement& st, Point3 p) {
+void TurningPath::go_to(PostState& s, const Statement& st, const Point3& p) {
   if (s.in_cycle) {  // a hole cycle's GOTOs are holes; a refused cycle's were reported at CYCLE/
     if (s.hole_cycle) lathe_hole(s, st, p);
     return;
@@ -25,7 +25,7 @@ void TurningPath::go_to(PostState& s, const Statement& st, Point3 p) {
   lathe_goto(s, st, p);
 }
 
-void TurningPath::go_delta(PostState& s, const Statement& st, Point3 p) {
+void TurningPath::go_delta(PostState& s, const Statement& st, const Point3& p) {
   lathe_goto(s, st, p);
 }
 

@@ -14,8 +14,8 @@ class TurningPath final : public ToolPath {
   void begin(PostState&, const Statement&) override {}
   void leave(PostState& s, const Statement& st, bool program_end) override;
   void tool_axis(PostState& s, const Statement& st) override;
-  void go_to(PostState& s, const Statement& st, Point3 p) override;
-  void go_delta(PostState& s, const Statement& st, Point3 p) override;
+  void go_to(PostState& s, const Statement& st, const Point3& p) override;
+  void go_delta(PostState& s, const Statement& st, const Point3& p) override;
   void circle(PostState& s, const Statement& st, const Circle& c) override;
   void helical(PostState& s, const Statement& st) override;
   void go(PostState& s, const Statement& st) override;
