@@ -6,7 +6,7 @@
 #include <array>
 #include <string_view>
 
-#include "controls/control.h"
+#include "machine/control.h"
 
 namespace clpost {
 

@@ -48,7 +48,7 @@ std::unique_ptr<Emitter> make_emitter(const Machine& m);
 std::string threading_summary(const Machine& m);
 
 // The emitter of a loop style (controls/registry_output.cc); a machine's cycle is its control's
-// (controls/control.h).
+// (machine/control.h).
 std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l);
 std::unique_ptr<Emitter> make_emulation_emitter();
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "controls/control.h"
+#include "machine/control.h"
 #include "controls/control_settings.h"
 
 namespace clpost {
@@ -36,7 +36,7 @@ struct NumberFormat {
 enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
 enum class ThreadFallback : uint8_t { kLoop, kEmulate, kError };
 // The control's single-pass loop block (threading.loop); the multi-pass cycle (threading.cycle)
-// is a registered control's (controls/control.h). See docs/machines.md.
+// is a registered control's (machine/control.h). See docs/machines.md.
 enum class ThreadLoop : uint8_t { kG33, kG92 };
 // kAuto (cl.radial_axis only): the radial axis is found from the program (the one of the two
 // non-axial axes that is not constantly 0).

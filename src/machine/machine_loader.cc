@@ -422,7 +422,7 @@ bool looks_like_path(std::string_view s) {
   return s.find('/') != std::string_view::npos || s.ends_with(".yaml") || s.ends_with(".yml");
 }
 
-// A control's own codes (controls/control.h: FixedCode) are its meaning, not machine data: a post,
+// A control's own codes (machine/control.h: FixedCode) are its meaning, not machine data: a post,
 // machine file or --set that redefines one is an error at the key (docs/cl-meaning.md).
 bool check_fixed_code(const Machine& m, const FixedCode& f, const KeyOrigins& origins,
                       const YamlText& machine_text, std::string& errors) {

@@ -402,7 +402,7 @@ TEST(MachineLoader, AnEmptyTemplateIsPresent) {
 namespace clpost {
 namespace {
 
-// A control's own codes are its meaning (controls/control.h: FixedCode): a machine file or --set
+// A control's own codes are its meaning (machine/control.h: FixedCode): a machine file or --set
 // that redefines one fails to load, naming the key and the control's meaning; builder codes
 // (coolant) stay machine data.
 TEST(MachineLoader, AControlsFixedCodesCannotBeRedefined) {

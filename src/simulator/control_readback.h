@@ -1,7 +1,7 @@
 #pragma once
 // What a control contributes to the simulation (control_sim.cc): its cycles and calls read back
 // with its laws, and the dialect words whose meaning is its own. Each control has one, in its
-// folder (its Control's readback, controls/control.h); control_sim.cc knows no control by name.
+// folder (its Control's readback, machine/control.h); control_sim.cc knows no control by name.
 #include <span>
 #include <string_view>
 

@@ -1,7 +1,7 @@
 #pragma once
 // A toy control, registered only in this test: proof of the path a new control takes
 // (docs/adding-a-control.md) — a law, an emitter, a read-back and one Control.
-#include "controls/control.h"
+#include "machine/control.h"
 
 namespace clpost::toy {
 

@@ -1,9 +1,9 @@
 #pragma once
-// The Fanuc control's fixed codes (controls/control.h: FixedCode): Fanuc 0i-TF Operator's Manual
+// The Fanuc control's fixed codes (machine/control.h: FixedCode): Fanuc 0i-TF Operator's Manual
 // (B-64604EN), G-code system A: G20/G21 units, G32 thread cutting, G98/G99 feed per minute / per
 // revolution. Haas's lathe control means the same by them (Haas Lathe Operator's Manual, G-code
 // list) and uses this list.
-#include "controls/control.h"
+#include "machine/control.h"
 
 namespace clpost {
 

@@ -1,5 +1,5 @@
 // Fanuc (system A lathe): the two-block G76 (fanuc_emitter.h, fanuc_law.h) and its read-back.
-#include "controls/control.h"
+#include "machine/control.h"
 #include "controls/fanuc/fanuc_codes.h"
 #include "controls/fanuc/fanuc_emitter.h"
 #include "controls/fanuc/fanuc_readback.h"

@@ -1,6 +1,6 @@
 // Haas lathe: the one-block G76 (haas_emitter.h, haas_law.h) and its read-back; its G92 is
 // Fanuc's (threading.loop: g92).
-#include "controls/control.h"
+#include "machine/control.h"
 #include "controls/fanuc/fanuc_codes.h"
 #include "controls/haas/haas_emitter.h"
 #include "controls/haas/haas_readback.h"

@@ -1,6 +1,6 @@
 // HEIDENHAIN DIN (CNC PILOT): G31 on its contour … G80 (heidenhain_emitter.h, heidenhain_law.h)
 // and its read-back.
-#include "controls/control.h"
+#include "machine/control.h"
 #include "controls/heidenhain/heidenhain_emitter.h"
 #include "controls/heidenhain/heidenhain_readback.h"
 

@@ -1,6 +1,6 @@
 // LinuxCNC: G76 (linuxcnc_emitter.h, linuxcnc_law.h, checked against its own rs274) and its
 // read-back.
-#include "controls/control.h"
+#include "machine/control.h"
 #include "controls/linuxcnc/linuxcnc_emitter.h"
 #include "controls/linuxcnc/linuxcnc_readback.h"
 

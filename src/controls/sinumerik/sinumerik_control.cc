@@ -1,6 +1,6 @@
 // SINUMERIK: CYCLE99 threads, CYCLE98 chains, CYCLE96 undercuts (cycle9*_emitter.h, their laws)
 // and their read-back.
-#include "controls/control.h"
+#include "machine/control.h"
 #include "controls/sinumerik/cycle96_emitter.h"
 #include "controls/sinumerik/cycle98_emitter.h"
 #include "controls/sinumerik/cycle99_emitter.h"

@@ -1,8 +1,10 @@
 #pragma once
-// A control clpost writes for and reads back: one folder of src/controls/ (its laws, emitters and
-// read-back), described by one Control in its <control>_control.cc and listed by the registry
-// (registry.h). A machine selects its control with threading.cycle; nothing outside the folder
-// and the registry names a control. docs/adding-a-control.md walks through adding one.
+// The interface every control implements, below all of them (as LLVM's TargetRegistry.h is below
+// its targets): a control clpost writes for and reads back is one folder of src/controls/ (its
+// laws, emitters and read-back), described by one Control in its <control>_control.cc. The
+// program is given a set of them (ControlSet: the cli the registry's, controls/registry.h; a test
+// its own); a machine selects one with threading.cycle. Nothing below src/controls/ names a
+// control. docs/adding-a-control.md walks through adding one.
 #include <memory>
 #include <span>
 #include <string_view>
