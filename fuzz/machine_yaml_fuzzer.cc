@@ -57,6 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const bool is_post = size > 0 && (data[0] & 1) != 0;
   Machine m = is_post ? Machine{} : *g_base;
+  m.controls = g_base->controls;  // the set generic-lathe was loaded with
   m.name = "fuzz";
   std::string errors;
   if (!apply_machine_yaml("fuzz.yaml", text, is_post, m, errors)) return 0;

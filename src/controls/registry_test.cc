@@ -1,22 +1,59 @@
-// The registry: what the schema documents for threading.cycle is what the shipped controls are,
-// and each control is whole.
+// The registry: each control is whole, and the schema of its controls is the one docs/machines.md
+// documents.
 #include "controls/registry.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "emitters/emitter.h"
+#include "machine/machine_schema.h"
+#include "machine/schema_markdown.h"
 #include "simulator/control_readback.h"
 
 namespace clpost {
 namespace {
 
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// docs/machines.md's tables are the shipped controls' schema: regenerate them with
+//   build/clpost schema --markdown
+// and paste the output over the block between the markers.
+// Every key has a row in the docs' tables: a key of a section the tables do not list would not.
+TEST(Registry, EveryKeyIsInTheDocsTables) {
+  const Schema s = schema(shipped_controls());
+  const std::string md = schema_markdown(s);
+  for (const KeySpec& k : s.keys)
+    EXPECT_NE(md.find(fmt::format("| `{}` |", k.path)), std::string::npos) << k.path;
+}
+
+TEST(Registry, DocsTablesAreTheSchemas) {
+  const std::string docs = read_text(std::string(CLPOST_SOURCE_DIR) + "/docs/machines.md");
+  const size_t begin = docs.find(kSchemaDocBegin);
+  const size_t end = docs.find(kSchemaDocEnd);
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  const std::string block = docs.substr(begin, end - begin + std::string(kSchemaDocEnd).size());
+  EXPECT_EQ(block + "\n", schema_markdown(schema(shipped_controls())))
+      << "docs/machines.md is stale: run build/clpost schema --markdown";
+}
+
+// threading.cycle chooses among "none" and the shipped cycles, in the registry's order.
 TEST(Registry, TheSchemaListsEveryShippedCycle) {
-  std::vector<std::string_view> cycles = {"none"};
-  for (const Control* c : shipped_controls()) cycles.push_back(c->cycle);
-  EXPECT_EQ(cycles, std::vector<std::string_view>(kShippedCycles.begin(), kShippedCycles.end()));
+  const Schema s = schema(shipped_controls());
+  std::vector<std::string_view> cycles;
+  for (const Choice& c : find_key(s, "threading.cycle")->choices) cycles.push_back(c.name);
+  EXPECT_EQ(cycles, (std::vector<std::string_view>{"none", "cycle99", "fanuc_g76", "haas_g76",
+                                                   "heidenhain_g31", "linuxcnc_g76"}));
 }
 
 TEST(Registry, EveryControlWritesAndReadsBackItsCycle) {

@@ -12,6 +12,9 @@
 namespace clpost {
 
 struct Machine;
+struct KeySpec;       // machine/machine_schema.h
+struct NameSpec;      // machine/machine_schema.h
+struct TemplateSpec;  // machine/machine_schema.h
 struct ThreadPlan;
 struct Undercut;
 template <class Job>
@@ -74,6 +77,15 @@ struct Control {
   // mode and F again at the next feed that is not per revolution. Empty: the feed mode codes
   // leave the spindle alone.
   std::string_view css_feed_per_min = {}, css_feed_per_rev = {};
+
+  // What it declares in the schema of post and machine files (machine/machine_schema.h: schema()
+  // lists each control's after the program's own, in the set's order): its keys (its parameters
+  // or settings a machine file states), the code names and formats it writes besides the
+  // program's, and the templates its cycles are written through.
+  std::span<const KeySpec> keys = {};
+  std::span<const NameSpec> codes = {};
+  std::span<const NameSpec> formats = {};
+  std::span<const TemplateSpec* const> templates = {};
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.

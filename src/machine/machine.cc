@@ -21,7 +21,7 @@ void use_units(Machine& copy, const Machine& loaded, bool inch) {
 
 const std::string& Machine::code(const std::string& key) const {
   // A name the schema does not declare is a typo in clpost (Debug and sanitizer builds stop).
-  assert(find_code(key) != nullptr && "code name not declared in machine_schema.cc");
+  assert(declared_code(controls, key) && "code name not declared (machine_schema.cc, a Control)");
   static const std::string kEmpty;
   auto it = codes.find(key);
   return it == codes.end() ? kEmpty : it->second;

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "machine/control.h"
 #include "controls/control_settings.h"
+#include "machine/control.h"
 
 namespace clpost {
 

@@ -27,7 +27,8 @@ std::string yaml_scalar(const std::string& s) {
 
 std::vector<MachineValue> machine_values(const Machine& m) {
   std::vector<MachineValue> out;
-  for (const KeySpec& k : machine_keys()) {
+  const Schema s = schema(m.controls);
+  for (const KeySpec& k : s.keys) {
     std::string v = key_value_text(k, m);
     if (k.type == KeyType::kString) v = yaml_scalar(v);
     out.push_back({std::string(k.path), std::move(v)});

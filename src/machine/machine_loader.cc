@@ -34,6 +34,7 @@ struct Ctx {
   // is known too.
   std::vector<std::string> addresses = {};
   KeyOrigins* origins = nullptr;  // where each key was set, when asked for
+  Schema spec = {};               // the keys, codes, formats and templates of m.controls
 
   SourceLoc loc(const YAML::Node& n) const {
     const YAML::Mark m = n.Mark();
@@ -231,10 +232,10 @@ bool check_template(Ctx& c, const YAML::Node& n, const TemplateSpec& spec,
 
 bool apply_format(Ctx& c, const YAML::Node& key, const YAML::Node& node, NumberFormat& f) {
   const std::string addr = key.Scalar();
-  if (!find_format(addr) &&
+  if (!find_format(c.spec, addr) &&
       std::find(c.addresses.begin(), c.addresses.end(), addr) == c.addresses.end()) {
     std::vector<std::string_view> names;
-    for (const NameSpec& s : format_names()) names.push_back(s.name);
+    for (const NameSpec& s : c.spec.formats) names.push_back(s.name);
     c.error(key, fmt::format("unknown format 'formats.{}'{}: a format is an address the machine "
                              "writes or a named format (docs/machines.md)",
                              addr, did_you_mean(addr, names)));
@@ -270,9 +271,9 @@ bool apply_codes(Ctx& c, const YAML::Node& value, Machine& m) {
   bool ok = true;
   for (const auto& kv : value) {
     const std::string name = kv.first.Scalar();
-    if (!find_code(name)) {
+    if (!find_code(c.spec, name)) {
       std::vector<std::string_view> names;
-      for (const NameSpec& s : code_names()) names.push_back(s.name);
+      for (const NameSpec& s : c.spec.codes) names.push_back(s.name);
       c.error(kv.first, fmt::format("unknown code 'codes.{}'{}", name, did_you_mean(name, names)));
       ok = false;
       continue;
@@ -287,10 +288,10 @@ bool apply_codes(Ctx& c, const YAML::Node& value, Machine& m) {
 // write nothing for it).
 bool apply_template(Ctx& c, const YAML::Node& key, const YAML::Node& value, Machine& m) {
   const std::string tname = key.Scalar();
-  const TemplateSpec* spec = find_template(tname);
+  const TemplateSpec* spec = find_template(c.spec, tname);
   if (!spec) {
     std::vector<std::string_view> names;
-    for (const TemplateSpec* t : template_specs()) names.push_back(t->name);
+    for (const TemplateSpec* t : c.spec.templates) names.push_back(t->name);
     c.error(key,
             fmt::format("unknown template 'templates.{}'{}", tname, did_you_mean(tname, names)));
     return false;
@@ -333,9 +334,9 @@ const std::vector<std::string>& map_keys() {
   return kMaps;
 }
 
-std::vector<std::string> valid_children(const std::string& prefix) {
+std::vector<std::string> valid_children(const Schema& s, const std::string& prefix) {
   std::set<std::string> out;
-  for (const KeySpec& k : machine_keys()) {
+  for (const KeySpec& k : s.keys) {
     if (!k.path.starts_with(prefix)) continue;
     std::string_view rest = k.path.substr(prefix.size());
     out.insert(std::string(rest.substr(0, rest.find('.'))));
@@ -346,8 +347,8 @@ std::vector<std::string> valid_children(const std::string& prefix) {
 }
 
 // Whether keys start with `prefix` ("limits."): `prefix` names a section, not a scalar.
-bool has_children(const std::string& prefix) {
-  for (const KeySpec& k : machine_keys())
+bool has_children(const Schema& s, const std::string& prefix) {
+  for (const KeySpec& k : s.keys)
     if (k.path.starts_with(prefix)) return true;
   return false;
 }
@@ -368,7 +369,7 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
   }
   if (prefix.empty() && name == "codes") return apply_codes(c, value, m);
   if (prefix.empty() && name == "templates") return apply_templates(c, value, m);
-  if (const KeySpec* k = find_key(path)) {
+  if (const KeySpec* k = find_key(c.spec, path)) {
     if (k->machine_only && c.is_post) {
       c.error(key, fmt::format("a post cannot '{}' another post", path));
       return false;
@@ -376,11 +377,12 @@ bool apply_key(Ctx& c, const YAML::Node& key, const YAML::Node& value, const std
     c.set_from(path, key);
     return set_key(c, value, *k, m);
   }
-  if (has_children(path + ".")) {
+  if (has_children(c.spec, path + ".")) {
     if (!value.IsMap()) return c.error(value, fmt::format("'{}' must be a map", path)), false;
     return apply_map(c, value, path + ".", m);
   }
-  c.error(key, fmt::format("unknown key '{}'{}", path, did_you_mean(name, valid_children(prefix))));
+  c.error(key, fmt::format("unknown key '{}'{}", path,
+                           did_you_mean(name, valid_children(c.spec, prefix))));
   return false;
 }
 
@@ -480,6 +482,7 @@ bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_po
                         std::string& errors, KeyOrigins* origins) {
   Ctx c{Diagnostics(std::string(file)), YamlText(text), is_post};
   c.origins = origins;
+  c.spec = schema(m.controls);
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
@@ -510,13 +513,14 @@ namespace {
 
 bool check_required(const std::string& path, const std::string& text, const Machine& m,
                     std::string& errors) {
+  const Schema s = schema(m.controls);
   std::vector<std::string> missing;
-  for (const NameSpec& c : code_names())
+  for (const NameSpec& c : s.codes)
     if (c.required && m.code(std::string(c.name)).empty())
       missing.push_back(fmt::format("codes.{}", c.name));
   std::vector<const TemplateSpec*> selected;  // required by a setting
-  for (const TemplateSpec* t : template_specs()) {
-    if (!template_required(*t, m) || m.templates.count(std::string(t->name))) continue;
+  for (const TemplateSpec* t : s.templates) {
+    if (!template_required(s, *t, m) || m.templates.count(std::string(t->name))) continue;
     if (t->need == Need::kAlways)
       missing.push_back(fmt::format("templates.{}", t->name));
     else

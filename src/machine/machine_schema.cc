@@ -6,8 +6,7 @@
 #include <array>
 #include <type_traits>
 
-#include "controls/registry.h"
-#include "controls/registry_schema.h"
+#include "machine/control.h"
 #include "support/json_text.h"
 
 namespace clpost {
@@ -20,15 +19,8 @@ constexpr Choice kUnits[] = {{"mm", "mm"}, {"in", "in"}};
 constexpr Choice kAxes[] = {{"x"}, {"y"}, {"z"}};                  // ClAxis order
 constexpr Choice kRadialAxes[] = {{"x"}, {"y"}, {"z"}, {"auto"}};  // ClAxis order
 constexpr Choice kLineEndings[] = {{"lf", "\n"}, {"crlf", "\r\n"}};
-constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};  // ThreadStrategy order
-constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};   // ThreadFallback order
-// The shipped controls' cycles, as documented (a machine's own set decides what loads:
-// machine_loader.cc).
-constexpr auto kCycles = [] {
-  std::array<Choice, kShippedCycles.size()> c{};
-  for (size_t i = 0; i < c.size(); ++i) c[i] = Choice{kShippedCycles[i]};
-  return c;
-}();
+constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};   // ThreadStrategy order
+constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};    // ThreadFallback order
 constexpr Choice kLoops[] = {{"g33"}, {"g92"}};                        // ThreadLoop order
 constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};               // false, true
 constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};               // false, true
@@ -131,8 +123,9 @@ constexpr KeySpec kEarlierKeys[] = {
      "what to try first: the control's multi-pass cycle, its single-pass loop block, or plain "
      "G1/G33 emulation",
      0, 0, kStrategies},
+    // Its choices are the set's (schema()).
     {"threading.cycle", kThr, kChoice, &M::control,
-     "which cycle `strategy: cycle` writes (it needs the template of that name)", 0, 0, kCycles},
+     "which cycle `strategy: cycle` writes (it needs the template of that name)"},
     {"threading.loop", kThr, kChoice, &M::thread_loop,
      "the loop block: G33 chains (Siemens, NCT, LinuxCNC, Heidenhain) or Fanuc G92 (templates g92 "
      "and g92_next)",
@@ -189,7 +182,7 @@ constexpr KeySpec kEarlierKeys[] = {
      1e-4, 0.5},
 };
 
-// The keys after the controls' own (controls/registry_schema.h).
+// The keys after the controls' own.
 constexpr KeySpec kLaterKeys[] = {
     {"holes.rigid_tapping", kHoles, kBool, &M::rigid_tapping,
      "the spindle is synchronised for tapping: CYCLE/TAP uses template hole_tap_rigid (Fanuc "
@@ -385,23 +378,8 @@ const NameSpec kFormats[] = {
     {"hole_peck", "peck depth of the hole templates (Fanuc Q: 0.001 mm, decimals 0, scale 1000)"},
 };
 
-// a, then b, then c, as one array.
-template <typename T, size_t A, size_t B, size_t C>
-constexpr std::array<T, A + B + C> join(const T (&a)[A], const T (&b)[B], const T (&c)[C]) {
-  std::array<T, A + B + C> all{};
-  size_t n = 0;
-  for (const T& x : a) all[n++] = x;
-  for (const T& x : b) all[n++] = x;
-  for (const T& x : c) all[n++] = x;
-  return all;
-}
-
-// Every key, every code: the program's own, then the controls' (in the registry's order).
-constexpr auto kKeys = join(kEarlierKeys, kControlKeys, kLaterKeys);
-constexpr auto kCodes = join(kEarlierCodes, kControlCodes, kLaterCodes);
-
-// Every template: the program's own, the controls' (the registry's), then the holes' and the
-// CL words'.
+// The program's templates before the controls' own, and after them: the holes' and the CL
+// words'.
 constexpr const TemplateSpec* kCommonTemplates[] = {
     &tmpl::kProgramStart, &tmpl::kProgramEnd,  &tmpl::kToolChange, &tmpl::kSpindleRpm,
     &tmpl::kSpindleCss,   &tmpl::kSpindleStop, &tmpl::kDwell};
@@ -430,7 +408,6 @@ constexpr const TemplateSpec* kLaterTemplates[] = {&tmpl::kHoleDrill,
                                                    &tmpl::kLiveSpindleRpm,
                                                    &tmpl::kLiveSpindleStop,
                                                    &tmpl::kCIndex};
-constexpr auto kTemplates = join(kCommonTemplates, tmpl::kControlTemplates, kLaterTemplates);
 
 template <typename T, typename N>
 const T* find_by(std::span<const T> list, std::string_view name, N T::*field) {
@@ -442,7 +419,36 @@ std::string number_text(double v) {
   return fmt::format("{}", v);
 }
 
+// `earlier`, then each control's (`of`), then `later`.
+template <typename T, typename Of>
+std::vector<T> joined(std::span<const T> earlier, ControlSet controls, Of of,
+                      std::span<const T> later) {
+  std::vector<T> all(earlier.begin(), earlier.end());
+  for (const Control* c : controls) {
+    const auto own = of(*c);
+    all.insert(all.end(), own.begin(), own.end());
+  }
+  all.insert(all.end(), later.begin(), later.end());
+  return all;
+}
+
 }  // namespace
+
+Schema schema(ControlSet controls) {
+  Schema s;
+  s.cycles.push_back({"none"});
+  for (const Control* c : controls) s.cycles.push_back({c->cycle});
+  s.keys = joined<KeySpec>(
+      kEarlierKeys, controls, [](const Control& c) { return c.keys; }, kLaterKeys);
+  for (KeySpec& k : s.keys)
+    if (std::holds_alternative<const Control * Machine::*>(k.member)) k.choices = s.cycles;
+  s.codes = joined<NameSpec>(
+      kEarlierCodes, controls, [](const Control& c) { return c.codes; }, kLaterCodes);
+  s.formats = joined<NameSpec>(kFormats, controls, [](const Control& c) { return c.formats; }, {});
+  s.templates = joined<const TemplateSpec*>(
+      kCommonTemplates, controls, [](const Control& c) { return c.templates; }, kLaterTemplates);
+  return s;
+}
 
 std::string text_list(const std::vector<std::string>& items) {
   std::string s = "[";
@@ -450,44 +456,42 @@ std::string text_list(const std::vector<std::string>& items) {
   return s + "]";
 }
 
-std::span<const KeySpec> machine_keys() {
-  return kKeys;
-}
 std::span<const FormatKeySpec> format_keys() {
   return kFormatKeys;
 }
-std::span<const NameSpec> code_names() {
-  return kCodes;
-}
-std::span<const NameSpec> format_names() {
-  return kFormats;
-}
-std::span<const TemplateSpec* const> template_specs() {
-  return kTemplates;
-}
 
-const KeySpec* find_key(std::string_view path) {
-  return find_by(machine_keys(), path, &KeySpec::path);
+const KeySpec* find_key(const Schema& s, std::string_view path) {
+  return find_by<KeySpec>(s.keys, path, &KeySpec::path);
 }
 const FormatKeySpec* find_format_key(std::string_view name) {
   return find_by(format_keys(), name, &FormatKeySpec::name);
 }
-const NameSpec* find_code(std::string_view name) {
-  return find_by(code_names(), name, &NameSpec::name);
+const NameSpec* find_code(const Schema& s, std::string_view name) {
+  return find_by<NameSpec>(s.codes, name, &NameSpec::name);
 }
-const NameSpec* find_format(std::string_view name) {
-  return find_by(format_names(), name, &NameSpec::name);
+const NameSpec* find_format(const Schema& s, std::string_view name) {
+  return find_by<NameSpec>(s.formats, name, &NameSpec::name);
 }
-const TemplateSpec* find_template(std::string_view name) {
-  for (const TemplateSpec* t : kTemplates)
+const TemplateSpec* find_template(const Schema& s, std::string_view name) {
+  for (const TemplateSpec* t : s.templates)
     if (t->name == name) return t;
   return nullptr;
 }
 
-bool template_required(const TemplateSpec& spec, const Machine& m) {
+bool declared_code(ControlSet controls, std::string_view name) {
+  const auto named = [&](std::span<const NameSpec> codes) {
+    return find_by(codes, name, &NameSpec::name) != nullptr;
+  };
+  if (named(kEarlierCodes) || named(kLaterCodes)) return true;
+  for (const Control* c : controls)
+    if (named(c->codes)) return true;
+  return false;
+}
+
+bool template_required(const Schema& s, const TemplateSpec& spec, const Machine& m) {
   if (spec.need == Need::kAlways) return true;
   if (spec.need != Need::kSetting) return false;
-  const KeySpec* k = find_key(spec.setting);
+  const KeySpec* k = find_key(s, spec.setting);
   return k != nullptr && key_value_text(*k, m) == spec.choice;
 }
 

@@ -416,21 +416,41 @@ inline constexpr TemplateSpec kSelctl{
 
 // --- The whole schema ------------------------------------------------------------------------
 
-std::span<const KeySpec> machine_keys();
+// The schema of the post and machine files a program reads, for the set of controls it was given
+// (machine/control.h): the program's own keys, codes, formats and templates with each control's
+// (Control::keys, codes, formats, templates) among them, in the set's order. threading.cycle's
+// choices are "none" and the set's cycles. Its keys' choices point into it: it moves, never
+// copies.
+struct Schema {
+  std::vector<KeySpec> keys;
+  std::vector<NameSpec> codes;
+  std::vector<NameSpec> formats;
+  std::vector<const TemplateSpec*> templates;
+  std::vector<Choice> cycles;  // threading.cycle's
+
+  Schema() = default;
+  Schema(Schema&&) = default;
+  Schema& operator=(Schema&&) = default;
+  Schema(const Schema&) = delete;
+  Schema& operator=(const Schema&) = delete;
+};
+Schema schema(ControlSet controls);
+
+// The number format keys (decimals, …): the same for every set of controls.
 std::span<const FormatKeySpec> format_keys();
-std::span<const NameSpec> code_names();
-std::span<const NameSpec> format_names();
-std::span<const TemplateSpec* const> template_specs();
 
 // Lookups: nullptr when the name is not declared.
-const KeySpec* find_key(std::string_view path);
+const KeySpec* find_key(const Schema& s, std::string_view path);
 const FormatKeySpec* find_format_key(std::string_view name);
-const NameSpec* find_code(std::string_view name);
-const NameSpec* find_format(std::string_view name);
-const TemplateSpec* find_template(std::string_view name);
+const NameSpec* find_code(const Schema& s, std::string_view name);
+const NameSpec* find_format(const Schema& s, std::string_view name);
+const TemplateSpec* find_template(const Schema& s, std::string_view name);
+// Whether code `name` is the program's or one of `controls`' (schema(controls) has it), without
+// building the schema.
+bool declared_code(ControlSet controls, std::string_view name);
 
 // Whether `spec` is required on machine `m` (always, or selected by m's settings).
-bool template_required(const TemplateSpec& spec, const Machine& m);
+bool template_required(const Schema& s, const TemplateSpec& spec, const Machine& m);
 
 // Key `k`'s value in `m` as a machine file would write it ("cycle", "0.005", "[\"%\", \"O\"]").
 std::string key_value_text(const KeySpec& k, const Machine& m);

@@ -1,52 +1,95 @@
 #include "machine/machine_schema.h"
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
-#include "controls/fanuc/fanuc_templates.h"
-#include "controls/registry.h"
+#include "machine/control.h"
 #include "machine/machine_loader.h"
-#include "machine/schema_markdown.h"
 
 namespace clpost {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+using enum FieldKind;
+using enum Need;
+
+// A control of this test's own, declaring a code, a format and two templates.
+constexpr NameSpec kProbeCodes[] = {{"probe_on", "the probe's own code"}};
+constexpr NameSpec kProbeFormats[] = {{"probe_depth", "the probe cycle's depth"}};
+constexpr TemplateField kProbeFields[] = {{"depth", kText, "depth, format probe_depth"}};
+constexpr TemplateSpec kProbeCycle{"probe_cycle",       kProbeFields,      kSetting,
+                                   "the probe's cycle", "threading.cycle", "probe_g1"};
+constexpr TemplateSpec kProbeNote{"probe_note", {}, kOptional, "a note", {}, {}, "PPRINT"};
+constexpr const TemplateSpec* kProbeTemplates[] = {&kProbeCycle, &kProbeNote};
+constexpr Control kProbe{.name = "probe",
+                         .cycle = "probe_g1",
+                         .codes = kProbeCodes,
+                         .formats = kProbeFormats,
+                         .templates = kProbeTemplates};
+constexpr const Control* kProbeSet[] = {&kProbe};
+
+// The set's declarations join the program's own: each after the program's that come before the
+// controls' (the codes before live_spindle_cw, the templates before the holes'), threading.cycle
+// choosing among "none" and the set's cycles.
+TEST(MachineSchema, IsBuiltFromTheSetOfControls) {
+  const Schema none = schema({});
+  const Schema probe = schema(kProbeSet);
+  EXPECT_EQ(find_code(none, "probe_on"), nullptr);
+  ASSERT_NE(find_code(probe, "probe_on"), nullptr);
+  ASSERT_EQ(probe.codes.size(), none.codes.size() + 1);
+  EXPECT_EQ(probe.codes[22].name, "thread_decreasing");
+  EXPECT_EQ(probe.codes[23].name, "probe_on");
+  EXPECT_EQ(probe.codes[24].name, "live_spindle_cw");
+  EXPECT_NE(find_format(probe, "probe_depth"), nullptr);
+  EXPECT_EQ(probe.formats.back().name, "probe_depth");
+  EXPECT_EQ(find_template(none, "probe_cycle"), nullptr);
+  EXPECT_EQ(find_template(probe, "probe_cycle"), &kProbeCycle);
+  EXPECT_EQ(probe.templates[7], &kProbeCycle);  // after program_start … dwell
+  EXPECT_EQ(probe.templates[8], &kProbeNote);
+  EXPECT_EQ(probe.templates[9]->name, "hole_drill");
+  const KeySpec* cycle = find_key(probe, "threading.cycle");
+  ASSERT_NE(cycle, nullptr);
+  ASSERT_EQ(cycle->choices.size(), 2u);
+  EXPECT_EQ(cycle->choices[0].name, "none");
+  EXPECT_EQ(cycle->choices[1].name, "probe_g1");
+  EXPECT_EQ(find_key(none, "threading.cycle")->choices.size(), 1u);
+  EXPECT_TRUE(declared_code(kProbeSet, "probe_on"));
+  EXPECT_TRUE(declared_code({}, "rapid"));
+  EXPECT_FALSE(declared_code({}, "probe_on"));
 }
 
-// docs/machines.md's tables are the schema's: regenerate them with
-//   build/clpost schema --markdown
-// and paste the output over the block between the markers.
-// Every key has a row in the docs' tables: a key of a section the tables do not list would not.
-TEST(MachineSchema, EveryKeyIsInTheDocsTables) {
-  const std::string md = schema_markdown();
-  for (const KeySpec& k : machine_keys())
-    EXPECT_NE(md.find(fmt::format("| `{}` |", k.path)), std::string::npos) << k.path;
-}
-
-TEST(MachineSchema, DocsTablesAreTheSchemas) {
-  const std::string docs = read_text(std::string(CLPOST_SOURCE_DIR) + "/docs/machines.md");
-  const size_t begin = docs.find(kSchemaDocBegin);
-  const size_t end = docs.find(kSchemaDocEnd);
-  ASSERT_NE(begin, std::string::npos);
-  ASSERT_NE(end, std::string::npos);
-  const std::string block = docs.substr(begin, end - begin + std::string(kSchemaDocEnd).size());
-  EXPECT_EQ(block + "\n", schema_markdown())
-      << "docs/machines.md is stale: run build/clpost schema --markdown";
+// A machine loaded with the set may use what the set declares; one without it may not.
+TEST(MachineSchema, AMachineFileMayUseWhatItsSetDeclares) {
+  const std::string doc =
+      "threading: {cycle: probe_g1}\ncodes: {probe_on: M77}\nformats: {probe_depth: {decimals: "
+      "4}}\ntemplates: {probe_cycle: \"G1 Z{depth}\"}\n";
+  Machine m;
+  m.controls = kProbeSet;
+  std::string errors;
+  EXPECT_TRUE(apply_machine_yaml("m.yaml", doc, false, m, errors)) << errors;
+  EXPECT_EQ(m.control, &kProbe);
+  EXPECT_EQ(m.code("probe_on"), "M77");
+  EXPECT_EQ(m.format_for("probe_depth").decimals, 4);
+  Machine plain;
+  errors.clear();
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", doc, false, plain, errors));
+  EXPECT_NE(errors.find("m.yaml:1:20: error: 'threading.cycle' must be one of none, not "
+                        "'probe_g1'"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("m.yaml:2:9: error: unknown code 'codes.probe_on'"), std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("m.yaml:3:11: error: unknown format 'formats.probe_depth'"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("m.yaml:4:13: error: unknown template 'templates.probe_cycle'"),
+            std::string::npos)
+      << errors;
 }
 
 // Every key's default, written back as a machine file, loads: the schema's rendering and the
 // loader agree, and every declared key is one the loader takes.
 TEST(MachineSchema, DefaultsRoundTripThroughTheLoader) {
   const Machine defaults;
-  for (const KeySpec& k : machine_keys()) {
+  for (const KeySpec& k : schema(kProbeSet).keys) {
     if (k.machine_only) continue;
     std::string value = key_value_text(k, defaults);
     if (k.type == KeyType::kString) value = "\"" + value + "\"";
@@ -58,6 +101,7 @@ TEST(MachineSchema, DefaultsRoundTripThroughTheLoader) {
       line += std::string(k.path.substr(start, dot - start)) + ": {";
     line += std::string(k.path.substr(start)) + ": " + value + std::string(depth, '}');
     Machine m;
+    m.controls = kProbeSet;
     std::string errors;
     EXPECT_TRUE(apply_machine_yaml("d.yaml", line + "\n", false, m, errors)) << line << errors;
     EXPECT_EQ(key_value_text(k, m), key_value_text(k, defaults)) << k.path;
@@ -70,29 +114,32 @@ TEST(MachineSchema, ValuesAsAMachineFileWritesThem) {
   m.line_ending = "\r\n";
   m.cycle_shifted_end = true;
   m.run_in.value = 2.5;
-  EXPECT_EQ(key_value_text(*find_key("threading.strategy"), m), "loop");
-  EXPECT_EQ(key_value_text(*find_key("output.line_ending"), m), "crlf");
-  EXPECT_EQ(key_value_text(*find_key("threading.cycle_pass_end"), m), "shifted");
-  EXPECT_EQ(key_value_text(*find_key("threading.run_in"), m), "2.5");
+  const Schema s = schema({});
+  EXPECT_EQ(key_value_text(*find_key(s, "threading.strategy"), m), "loop");
+  EXPECT_EQ(key_value_text(*find_key(s, "output.line_ending"), m), "crlf");
+  EXPECT_EQ(key_value_text(*find_key(s, "threading.cycle_pass_end"), m), "shifted");
+  EXPECT_EQ(key_value_text(*find_key(s, "threading.run_in"), m), "2.5");
   m.run_in.automatic = true;
-  EXPECT_EQ(key_value_text(*find_key("threading.run_in"), m), "auto");
-  EXPECT_EQ(key_value_text(*find_key("block_numbers.skip"), m), "[\"%\", \"O\"]");
-  EXPECT_EQ(find_key("threading.strategi"), nullptr);
+  EXPECT_EQ(key_value_text(*find_key(s, "threading.run_in"), m), "auto");
+  EXPECT_EQ(key_value_text(*find_key(s, "block_numbers.skip"), m), "[\"%\", \"O\"]");
+  EXPECT_EQ(find_key(s, "threading.strategi"), nullptr);
 }
 
 TEST(MachineSchema, WhichTemplatesAMachineNeeds) {
+  const Schema s = schema(kProbeSet);
   Machine m;
-  EXPECT_TRUE(template_required(tmpl::kProgramStart, m));
-  EXPECT_FALSE(template_required(tmpl::kSpindleCss, m));  // only SPINDL/…,SMM reaches it
-  EXPECT_FALSE(template_required(tmpl::kFanucG76, m));
-  m.control = find_control(shipped_controls(), "fanuc_g76");
-  EXPECT_TRUE(template_required(tmpl::kFanucG76, m));
-  EXPECT_FALSE(template_required(tmpl::kG92, m));
+  EXPECT_TRUE(template_required(s, tmpl::kProgramStart, m));
+  EXPECT_FALSE(template_required(s, tmpl::kSpindleCss, m));  // only SPINDL/…,SMM reaches it
+  EXPECT_FALSE(template_required(s, kProbeCycle, m));
+  m.control = &kProbe;
+  EXPECT_TRUE(template_required(s, kProbeCycle, m));
+  EXPECT_FALSE(template_required(s, kProbeNote, m));
+  constexpr TemplateSpec kG92Loop{"g92", {}, kSetting, "a loop", "threading.loop", "g92"};
+  EXPECT_FALSE(template_required(s, kG92Loop, m));
   m.thread_loop = ThreadLoop::kG92;
-  EXPECT_TRUE(template_required(tmpl::kG92, m));
-  EXPECT_TRUE(template_required(tmpl::kG92Next, m));
+  EXPECT_TRUE(template_required(s, kG92Loop, m));
   // Compile-time field lookup.
-  static_assert(tmpl::kFanucG76.field("lead", FieldKind::kText) == 10);
+  static_assert(kProbeCycle.field("depth", FieldKind::kText) == 0);
   static_assert(tmpl::kToolChange.field("tool", FieldKind::kWhole) == 0);
 }
 

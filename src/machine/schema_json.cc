@@ -77,10 +77,10 @@ std::string key_schema(const KeySpec& k, size_t indent) {
 }
 
 // The keys under `prefix` ("" or "threading."), as properties, nested sections as objects.
-Members key_properties(size_t indent) {
+Members key_properties(const Schema& s, size_t indent) {
   Members props;
   std::vector<std::string> sections;
-  for (const KeySpec& k : machine_keys()) {
+  for (const KeySpec& k : s.keys) {
     const size_t dot = k.path.find('.');
     if (dot == std::string_view::npos) {
       props.push_back({std::string(k.path), key_schema(k, indent)});
@@ -90,9 +90,9 @@ Members key_properties(size_t indent) {
     if (std::find(sections.begin(), sections.end(), section) != sections.end()) continue;
     sections.push_back(section);
     Members inner;
-    for (const KeySpec& s : machine_keys())
-      if (s.path.starts_with(section + "."))
-        inner.push_back({std::string(s.path.substr(dot + 1)), key_schema(s, indent + 4)});
+    for (const KeySpec& in : s.keys)
+      if (in.path.starts_with(section + "."))
+        inner.push_back({std::string(in.path.substr(dot + 1)), key_schema(in, indent + 4)});
     props.push_back({section, object(indent, {{"type", str("object")},
                                               {"additionalProperties", "false"},
                                               {"properties", object(indent + 2, inner)}})});
@@ -100,9 +100,9 @@ Members key_properties(size_t indent) {
   return props;
 }
 
-std::string formats_schema(size_t indent) {
+std::string formats_schema(const Schema& s, size_t indent) {
   Members props;
-  for (const NameSpec& f : format_names())
+  for (const NameSpec& f : s.formats)
     props.push_back(
         {std::string(f.name), object(indent + 4, {{"$ref", str("#/$defs/number_format")},
                                                   {"description", str(f.doc)}})});
@@ -137,9 +137,9 @@ std::string number_format_schema(size_t indent) {
                          {"properties", object(indent + 2, props)}});
 }
 
-std::string codes_schema(size_t indent) {
+std::string codes_schema(const Schema& s, size_t indent) {
   Members props;
-  for (const NameSpec& c : code_names())
+  for (const NameSpec& c : s.codes)
     props.push_back({std::string(c.name),
                      fmt::format(R"({{"type": {}, "description": {}}})", kScalar,
                                  str(std::string(c.doc) + (c.required ? " (required)" : "")))});
@@ -156,9 +156,9 @@ std::string line_pattern(const TemplateSpec& t) {
   return "^(?:[^{}]|\\{\\{|\\}\\}" + field + ")*$";
 }
 
-std::string templates_schema(size_t indent) {
+std::string templates_schema(const Schema& s, size_t indent) {
   Members props;
-  for (const TemplateSpec* t : template_specs()) {
+  for (const TemplateSpec* t : s.templates) {
     const std::string line =
         fmt::format(R"({{"type": "string", "pattern": {}}})", str(line_pattern(*t)));
     std::string fields;
@@ -180,11 +180,11 @@ std::string templates_schema(size_t indent) {
 
 }  // namespace
 
-std::string schema_json() {
-  Members props = key_properties(4);
-  props.push_back({"formats", formats_schema(4)});
-  props.push_back({"codes", codes_schema(4)});
-  props.push_back({"templates", templates_schema(4)});
+std::string schema_json(const Schema& s) {
+  Members props = key_properties(s, 4);
+  props.push_back({"formats", formats_schema(s, 4)});
+  props.push_back({"codes", codes_schema(s, 4)});
+  props.push_back({"templates", templates_schema(s, 4)});
   return object(
              0,
              {{"$schema", str("https://json-schema.org/draft/2020-12/schema")},

@@ -7,6 +7,8 @@
 
 namespace clpost {
 
-std::string schema_json();
+struct Schema;  // machine_schema.h
+
+std::string schema_json(const Schema& s);
 
 }  // namespace clpost

@@ -67,14 +67,14 @@ std::string cell(std::string_view value) {
   return value.empty() ? std::string("—") : fmt::format("`{}`", value);
 }
 
-std::string keys_tables() {
+std::string keys_tables(const Schema& schema) {
   const Machine defaults;
   std::string out;
   for (const Section& s : kSections) {
     out += fmt::format("### {}\n\n", s.heading);
     if (!s.intro.empty()) out += fmt::format("{}\n\n", s.intro);
     out += "| key | type | default | meaning |\n|---|---|---|---|\n";
-    for (const KeySpec& k : machine_keys()) {
+    for (const KeySpec& k : schema.keys) {
       if (k.section != s.name) continue;
       out += fmt::format("| `{}` | {} | {} | {} |\n", k.path, type_text(k),
                          cell(key_value_text(k, defaults)), k.doc);
@@ -84,7 +84,7 @@ std::string keys_tables() {
   return out;
 }
 
-std::string formats_tables() {
+std::string formats_tables(const Schema& s) {
   std::string out =
       "### Number formats (`formats.<name>`)\n\n"
       "A map from a format name to how its numbers are written:\n\n"
@@ -104,16 +104,16 @@ std::string formats_tables() {
       "key of the machine names (`threading.lead_address`, `lead_address_x`, `tpi_address`, "
       "`start_angle_address`) may have a format too; any other name is an error.\n\n"
       "| format | used for |\n|---|---|\n";
-  for (const NameSpec& f : format_names()) out += fmt::format("| `{}` | {} |\n", f.name, f.doc);
+  for (const NameSpec& f : s.formats) out += fmt::format("| `{}` | {} |\n", f.name, f.doc);
   return out + "\n";
 }
 
-std::string codes_table() {
+std::string codes_table(const Schema& s) {
   std::string out =
       "### Codes (`codes.<name>`)\n\n"
       "G and M codes by role; any other name is an error.\n\n"
       "| code | required | used for |\n|---|---|---|\n";
-  for (const NameSpec& c : code_names())
+  for (const NameSpec& c : s.codes)
     out += fmt::format("| `{}` | {} | {} |\n", c.name, c.required ? "yes" : "", c.doc);
   return out + "\n";
 }
@@ -132,7 +132,7 @@ std::string need_text(const TemplateSpec& t) {
   return {};
 }
 
-std::string templates_tables() {
+std::string templates_tables(const Schema& s) {
   std::string out =
       "### Templates (`templates.<name>`)\n\n"
       "A block layout as a list of lines (each one NC block) with named `{fields}` in "
@@ -147,10 +147,10 @@ std::string templates_tables() {
       "700 in two digits) is an error at the CL line, never a word that reads as other "
       "numbers.\n\n"
       "| template | required | used for |\n|---|---|---|\n";
-  for (const TemplateSpec* t : template_specs())
+  for (const TemplateSpec* t : s.templates)
     out += fmt::format("| `{}` | {} | {} |\n", t->name, need_text(*t), t->doc);
   out += "\nThe fields of each template:\n\n";
-  for (const TemplateSpec* t : template_specs()) {
+  for (const TemplateSpec* t : s.templates) {
     std::string fields;
     for (const TemplateField& f : t->fields)
       fields += fmt::format("{}`{{{}}}` {}{}", fields.empty() ? "" : "; ", f.name,
@@ -162,9 +162,9 @@ std::string templates_tables() {
 
 }  // namespace
 
-std::string schema_markdown() {
-  return fmt::format("{}\n\n{}{}{}{}\n{}\n", kSchemaDocBegin, keys_tables(), formats_tables(),
-                     codes_table(), templates_tables(), kSchemaDocEnd);
+std::string schema_markdown(const Schema& s) {
+  return fmt::format("{}\n\n{}{}{}{}\n{}\n", kSchemaDocBegin, keys_tables(s), formats_tables(s),
+                     codes_table(s), templates_tables(s), kSchemaDocEnd);
 }
 
 }  // namespace clpost

@@ -1,10 +1,17 @@
 // Fanuc (system A lathe): the two-block G76 (fanuc_emitter.h, fanuc_law.h) and its read-back.
-#include "machine/control.h"
 #include "controls/fanuc/fanuc_codes.h"
 #include "controls/fanuc/fanuc_emitter.h"
 #include "controls/fanuc/fanuc_readback.h"
+#include "controls/fanuc/fanuc_templates.h"
+#include "machine/control.h"
 
 namespace clpost {
+
+namespace {
+
+constexpr const TemplateSpec* kFanucTemplates[] = {&tmpl::kFanucG76, &tmpl::kG92, &tmpl::kG92Next};
+
+}  // namespace
 
 extern const Control kFanucControl{
     .name = "fanuc",
@@ -19,6 +26,7 @@ extern const Control kFanucControl{
     // Increment system IS-B: least input increment 0.001 mm, 0.0001 in (Fanuc's increment
     // systems, as M. Lynch lists them: mmsonline.com, "Juggling Mismatches in Resolution and
     // Least Input Increment"; docs/cl-meaning.md, inch output).
-    .inch_length_increment = 0.0001};
+    .inch_length_increment = 0.0001,
+    .templates = kFanucTemplates};
 
 }  // namespace clpost

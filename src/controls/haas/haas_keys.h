@@ -1,6 +1,6 @@
 #pragma once
 // The Haas control's machine keys (its settings 86, 99 and 95, haas_settings.h), declared in the
-// schema through the registry (controls/registry_schema.h).
+// schema by its Control (Control::keys).
 #include "machine/machine_schema.h"
 
 namespace clpost {

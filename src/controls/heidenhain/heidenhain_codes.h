@@ -1,6 +1,6 @@
 #pragma once
 // HEIDENHAIN DIN's codes: G31's flank offset H values (heidenhain_law.h: g31_flank_codes),
-// declared in the schema through the registry (controls/registry_schema.h).
+// declared in the schema by its Control (Control::codes).
 #include "machine/machine_schema.h"
 
 namespace clpost {

@@ -1,8 +1,9 @@
 // LinuxCNC: G76 (linuxcnc_emitter.h, linuxcnc_law.h, checked against its own rs274) and its
 // read-back.
-#include "machine/control.h"
 #include "controls/linuxcnc/linuxcnc_emitter.h"
 #include "controls/linuxcnc/linuxcnc_readback.h"
+#include "controls/linuxcnc/linuxcnc_templates.h"
+#include "machine/control.h"
 
 namespace clpost {
 
@@ -21,6 +22,9 @@ constexpr FixedCode kLinuxcncCodes[] = {
     {"live_spindle_ccw", "M4", "starts a spindle counter-clockwise (the live tool's with `$1`)"},
 };
 
+constexpr const TemplateSpec* kLinuxcncTemplates[] = {&tmpl::kLinuxcncG76,
+                                                      &tmpl::kLinuxcncG76Taper};
+
 }  // namespace
 
 extern const Control kLinuxcncControl{
@@ -33,6 +37,7 @@ extern const Control kLinuxcncControl{
     // M6 stops the spindle: rs274 -g writes STOP_SPINDLE_TURNING between START_CHANGE and
     // CHANGE_TOOL (LinuxCNC 2.9, tests/rs274_test.cc).
     .tool_change_stops_spindle = true,
-    .fixed_codes = kLinuxcncCodes};
+    .fixed_codes = kLinuxcncCodes,
+    .templates = kLinuxcncTemplates};
 
 }  // namespace clpost

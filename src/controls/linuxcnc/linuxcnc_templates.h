@@ -1,7 +1,7 @@
 #pragma once
 // LinuxCNC's templates: G76, and G76 with an exit taper, declared
 // with their fields (machine/machine_schema.h: a field name a template does not declare does not
-// compile). Listed in the schema by the registry (controls/registry_templates.h).
+// compile). Listed in the schema by its Control (Control::templates).
 #include "machine/machine_schema.h"
 
 namespace clpost::tmpl {

@@ -1,11 +1,11 @@
 // SINUMERIK: CYCLE99 threads, CYCLE98 chains, CYCLE96 undercuts (cycle9*_emitter.h, their laws)
 // and their read-back.
-#include "machine/control.h"
 #include "controls/sinumerik/cycle96_emitter.h"
 #include "controls/sinumerik/cycle98_emitter.h"
 #include "controls/sinumerik/cycle99_emitter.h"
 #include "controls/sinumerik/sinumerik_readback.h"
 #include "controls/sinumerik/sinumerik_templates.h"
+#include "machine/control.h"
 
 namespace clpost {
 
@@ -26,6 +26,9 @@ constexpr FixedCode kSinumerikCodes[] = {
     {"feed_per_min", "G94", "is feed per minute"},
     {"feed_per_rev", "G95", "is feed per revolution"},
 };
+
+constexpr const TemplateSpec* kSinumerikTemplates[] = {&tmpl::kCycle99, &tmpl::kCycle98,
+                                                       &tmpl::kCycle96};
 
 }  // namespace
 
@@ -56,6 +59,7 @@ extern const Control kSinumerikControl{
     // Feeds (V1) 08/2005 §2.1: "The programmed F value is deleted when the system switches between
     // the feedrate types").
     .css_feed_per_min = "G961",
-    .css_feed_per_rev = "G96"};
+    .css_feed_per_rev = "G96",
+    .templates = kSinumerikTemplates};
 
 }  // namespace clpost

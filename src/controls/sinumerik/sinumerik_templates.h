@@ -2,7 +2,7 @@
 // SINUMERIK's templates: the thread cycle CYCLE99, the chain cycle CYCLE98 and the
 // undercut CYCLE96, declared
 // with their fields (machine/machine_schema.h: a field name a template does not declare does not
-// compile). Listed in the schema by the registry (controls/registry_templates.h).
+// compile). Listed in the schema by its Control (Control::templates).
 #include "machine/machine_schema.h"
 
 namespace clpost::tmpl {
