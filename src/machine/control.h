@@ -5,6 +5,7 @@
 // program is given a set of them (ControlSet: the cli the registry's, controls/registry.h; a test
 // its own); a machine selects one with threading.cycle. Nothing below src/controls/ names a
 // control. docs/adding-a-control.md walks through adding one.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string_view>
@@ -90,6 +91,15 @@ struct Control {
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.
 using ControlSet = std::span<const Control* const>;
+
+// Where control `c`'s keys start among the slots of `set`'s control keys (schema() numbers each
+// control's in the set's order): the number of keys the controls before it declare.
+uint32_t first_slot(ControlSet set, const Control* c);
+
+// The value of `key`, one of m.control's keys (Control::keys), on machine `m`: as its post,
+// machine file or --set gave it, else its initial value (machine/machine_schema.h: ControlSlot).
+// Read by the control's law through the key itself: no look-up by name.
+double control_value(const Machine& m, const KeySpec& key);
 
 // The control of `set` that threading.cycle `cycle` selects, or null ("none" selects none: plain
 // ISO, G33 loops and emulation).

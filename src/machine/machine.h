@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "controls/control_settings.h"
 #include "machine/control.h"
 
 namespace clpost {
@@ -53,7 +52,7 @@ struct LengthOrAuto {
   double value = 0;  // when not automatic
 };
 
-struct Machine : ControlSettings {
+struct Machine {
   std::string name;         // machine file stem, e.g. "generic-lathe"
   std::string post;         // the post (dialect) it extends, e.g. "iso-lathe"
   std::string description;  // one line, for `clpost machines`
@@ -88,6 +87,11 @@ struct Machine : ControlSettings {
   // machine was loaded with (the registry's shipped_controls(), or a test's own).
   const Control* control = nullptr;
   ControlSet controls;
+  // The values of the keys the set's controls declare (Control::keys), at the slots schema()
+  // gives them (machine_schema.h: ControlSlot), and the slot of m.control's first:
+  // control_value() (control.h) reads them.
+  std::vector<double> control_values;
+  uint32_t own_keys_at = 0;
   ThreadLoop thread_loop = ThreadLoop::kG33;
   std::string thread_lead_address_x;  // lead word when the X travel dominates ("" = same)
   std::string tpi_address;            // threads-per-inch word used when the CL gave TPI ("" none)

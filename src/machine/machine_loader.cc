@@ -190,7 +190,9 @@ bool set_member(Ctx& c, const YAML::Node& n, std::string_view path, KeyType type
       return false;
     }
     if constexpr (std::is_same_v<V, const Control*>) {
-      return get_control(c, n, path, obj.controls, v);
+      if (!get_control(c, n, path, obj.controls, v)) return false;
+      obj.own_keys_at = first_slot(obj.controls, v);
+      return true;
     } else {
       const int i = get_choice(c, n, path, choices);
       if (i < 0) return false;
@@ -206,7 +208,10 @@ bool set_member(Ctx& c, const YAML::Node& n, std::string_view path, KeyType type
 bool set_key(Ctx& c, const YAML::Node& n, const KeySpec& k, Machine& m) {
   return std::visit(
       [&](auto member) {
-        return set_member(c, n, k.path, k.type, k.lo, k.hi, k.choices, m, member);
+        if constexpr (std::is_same_v<decltype(member), ControlSlot>)
+          return get_number(c, n, k.path, k.lo, k.hi, m.control_values[member.index]);
+        else
+          return set_member(c, n, k.path, k.type, k.lo, k.hi, k.choices, m, member);
       },
       k.member);
 }
@@ -483,6 +488,9 @@ bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_po
   Ctx c{Diagnostics(std::string(file)), YamlText(text), is_post};
   c.origins = origins;
   c.spec = schema(m.controls);
+  // The control keys' slots m has not yet (a machine made in code): their initial values.
+  for (size_t i = m.control_values.size(); i < c.spec.control_defaults.size(); ++i)
+    m.control_values.push_back(c.spec.control_defaults[i]);
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));

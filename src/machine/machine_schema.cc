@@ -440,8 +440,13 @@ Schema schema(ControlSet controls) {
   for (const Control* c : controls) s.cycles.push_back({c->cycle});
   s.keys = joined<KeySpec>(
       kEarlierKeys, controls, [](const Control& c) { return c.keys; }, kLaterKeys);
-  for (KeySpec& k : s.keys)
+  for (KeySpec& k : s.keys) {
     if (std::holds_alternative<const Control * Machine::*>(k.member)) k.choices = s.cycles;
+    if (ControlSlot* slot = std::get_if<ControlSlot>(&k.member)) {
+      slot->index = static_cast<uint32_t>(s.control_defaults.size());
+      s.control_defaults.push_back(slot->initial);
+    }
+  }
   s.codes = joined<NameSpec>(
       kEarlierCodes, controls, [](const Control& c) { return c.codes; }, kLaterCodes);
   s.formats = joined<NameSpec>(kFormats, controls, [](const Control& c) { return c.formats; }, {});
@@ -495,33 +500,45 @@ bool template_required(const Schema& s, const TemplateSpec& spec, const Machine&
   return k != nullptr && key_value_text(*k, m) == spec.choice;
 }
 
+namespace {
+
+// Key `k`'s value `v` (a Machine member) as a machine file writes it.
+template <typename V>
+std::string member_text(const KeySpec& k, const V& v) {
+  if constexpr (std::is_same_v<V, std::vector<std::string>>) {
+    return text_list(v);
+  } else if constexpr (std::is_same_v<V, std::string>) {
+    if (k.type != KeyType::kChoice) return v;
+    for (const Choice& c : k.choices)
+      if (c.stored == v) return std::string(c.name);
+    return v;
+  } else if constexpr (std::is_same_v<V, bool>) {
+    if (k.type == KeyType::kChoice) return std::string(k.choices[v ? 1 : 0].name);
+    return v ? "true" : "false";
+  } else if constexpr (std::is_same_v<V, double>) {
+    return number_text(v);
+  } else if constexpr (std::is_same_v<V, int>) {
+    return fmt::format("{}", v);
+  } else if constexpr (std::is_same_v<V, const Control*>) {
+    return std::string(v != nullptr ? v->cycle : "none");
+  } else if constexpr (std::is_same_v<V, LengthOrAuto>) {
+    return v.automatic ? std::string("auto") : number_text(v.value);
+  } else {  // an enum: the choice of its index
+    const size_t i = static_cast<size_t>(v);
+    return i < k.choices.size() ? std::string(k.choices[i].name) : std::string("?");
+  }
+}
+
+}  // namespace
+
 std::string key_value_text(const KeySpec& k, const Machine& m) {
   return std::visit(
       [&](auto member) -> std::string {
-        const auto& v = m.*member;
-        using V = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<V, std::vector<std::string>>) {
-          return text_list(v);
-        } else if constexpr (std::is_same_v<V, std::string>) {
-          if (k.type != KeyType::kChoice) return v;
-          for (const Choice& c : k.choices)
-            if (c.stored == v) return std::string(c.name);
-          return v;
-        } else if constexpr (std::is_same_v<V, bool>) {
-          if (k.type == KeyType::kChoice) return std::string(k.choices[v ? 1 : 0].name);
-          return v ? "true" : "false";
-        } else if constexpr (std::is_same_v<V, double>) {
-          return number_text(v);
-        } else if constexpr (std::is_same_v<V, int>) {
-          return fmt::format("{}", v);
-        } else if constexpr (std::is_same_v<V, const Control*>) {
-          return std::string(v != nullptr ? v->cycle : "none");
-        } else if constexpr (std::is_same_v<V, LengthOrAuto>) {
-          return v.automatic ? std::string("auto") : number_text(v.value);
-        } else {  // an enum: the choice of its index
-          const size_t i = static_cast<size_t>(v);
-          return i < k.choices.size() ? std::string(k.choices[i].name) : std::string("?");
-        }
+        if constexpr (std::is_same_v<decltype(member), ControlSlot>)
+          return number_text(member.index < m.control_values.size() ? m.control_values[member.index]
+                                                                    : member.initial);
+        else
+          return member_text(k, m.*member);
       },
       k.member);
 }

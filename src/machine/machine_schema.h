@@ -24,13 +24,22 @@ struct Choice {
   std::string_view stored = {};
 };
 
-// Where a key's value lives: a pointer to the member it sets (no setter functions).
+// A key a control declares (Control::keys): a number, kept in Machine::control_values at
+// `index`, the slot schema() gives it (the control declares it with 0); `initial` until a file
+// sets it.
+struct ControlSlot {
+  uint32_t index = 0;
+  double initial = 0;
+};
+
+// Where a key's value lives: a pointer to the member it sets (no setter functions), or a
+// control's slot.
 using MachineMember =
     std::variant<std::string Machine::*, bool Machine::*, double Machine::*, int Machine::*,
                  std::vector<std::string> Machine::*, ThreadStrategy Machine::*,
                  ThreadFallback Machine::*, const Control * Machine::*, ThreadLoop Machine::*,
                  ClAxis Machine::*, LengthOrAuto Machine::*, CRotation Machine::*,
-                 PolarX Machine::*>;
+                 PolarX Machine::*, ControlSlot>;
 using FormatMember =
     std::variant<int NumberFormat::*, bool NumberFormat::*, double NumberFormat::*>;
 
@@ -426,7 +435,8 @@ struct Schema {
   std::vector<NameSpec> codes;
   std::vector<NameSpec> formats;
   std::vector<const TemplateSpec*> templates;
-  std::vector<Choice> cycles;  // threading.cycle's
+  std::vector<Choice> cycles;            // threading.cycle's
+  std::vector<double> control_defaults;  // each control slot's initial value
 
   Schema() = default;
   Schema(Schema&&) = default;

@@ -11,7 +11,9 @@ namespace {
 using enum FieldKind;
 using enum Need;
 
-// A control of this test's own, declaring a code, a format and two templates.
+// A control of this test's own, declaring a key, a code, a format and two templates.
+constexpr KeySpec kProbeKeys[] = {{"threading.probe_depth", "Control facts", KeyType::kNumber,
+                                   ControlSlot{.initial = 2.5}, "the probe's depth", 0, 10}};
 constexpr NameSpec kProbeCodes[] = {{"probe_on", "the probe's own code"}};
 constexpr NameSpec kProbeFormats[] = {{"probe_depth", "the probe cycle's depth"}};
 constexpr TemplateField kProbeFields[] = {{"depth", kText, "depth, format probe_depth"}};
@@ -21,6 +23,7 @@ constexpr TemplateSpec kProbeNote{"probe_note", {}, kOptional, "a note", {}, {},
 constexpr const TemplateSpec* kProbeTemplates[] = {&kProbeCycle, &kProbeNote};
 constexpr Control kProbe{.name = "probe",
                          .cycle = "probe_g1",
+                         .keys = kProbeKeys,
                          .codes = kProbeCodes,
                          .formats = kProbeFormats,
                          .templates = kProbeTemplates};
@@ -54,6 +57,54 @@ TEST(MachineSchema, IsBuiltFromTheSetOfControls) {
   EXPECT_TRUE(declared_code(kProbeSet, "probe_on"));
   EXPECT_TRUE(declared_code({}, "rapid"));
   EXPECT_FALSE(declared_code({}, "probe_on"));
+}
+
+// A control's key is kept by its slot: its initial value until a file sets it, read by the
+// control through the key (control_value).
+TEST(MachineSchema, AControlsKeyIsKeptInItsSlot) {
+  const Schema s = schema(kProbeSet);
+  const KeySpec* k = find_key(s, "threading.probe_depth");
+  ASSERT_NE(k, nullptr);
+  EXPECT_EQ(std::get<ControlSlot>(k->member).index, 0u);
+  EXPECT_EQ(s.control_defaults, std::vector<double>{2.5});
+  Machine m;
+  m.controls = kProbeSet;
+  EXPECT_EQ(key_value_text(*k, m), "2.5");
+  std::string errors;
+  ASSERT_TRUE(apply_machine_yaml("m.yaml", "threading: {cycle: probe_g1}\n", false, m, errors))
+      << errors;
+  EXPECT_EQ(control_value(m, kProbeKeys[0]), 2.5);
+  ASSERT_TRUE(apply_machine_yaml("m.yaml", "threading: {probe_depth: 4}\n", false, m, errors))
+      << errors;
+  EXPECT_EQ(control_value(m, kProbeKeys[0]), 4);
+  EXPECT_EQ(key_value_text(*k, m), "4");
+  EXPECT_FALSE(apply_machine_yaml("m.yaml", "threading: {probe_depth: 11}\n", false, m, errors));
+  EXPECT_NE(errors.find("'threading.probe_depth' is 11 but must be between 0 and 10"),
+            std::string::npos)
+      << errors;
+  EXPECT_EQ(find_key(schema({}), "threading.probe_depth"), nullptr);
+}
+
+// Behind another control's keys, the probe's key has the next slot, and the probe reads its own.
+TEST(MachineSchema, EachControlReadsItsOwnSlots) {
+  static constexpr KeySpec kGaugeKeys[] = {
+      {"threading.gauge_a", "Control facts", KeyType::kNumber, ControlSlot{}, "a", 0, 10},
+      {"threading.gauge_b", "Control facts", KeyType::kNumber, ControlSlot{.initial = 1}, "b", 0,
+       10}};
+  static constexpr Control kGauge{.name = "gauge", .cycle = "gauge_g1", .keys = kGaugeKeys};
+  constexpr const Control* kBoth[] = {&kGauge, &kProbe};
+  const Schema s = schema(kBoth);
+  EXPECT_EQ(s.control_defaults, (std::vector<double>{0, 1, 2.5}));
+  EXPECT_EQ(std::get<ControlSlot>(find_key(s, "threading.probe_depth")->member).index, 2u);
+  EXPECT_EQ(first_slot(kBoth, &kProbe), 2u);
+  Machine m;
+  m.controls = kBoth;
+  std::string errors;
+  ASSERT_TRUE(apply_machine_yaml(
+      "m.yaml", "threading: {cycle: probe_g1, gauge_b: 7, probe_depth: 3}\n", false, m, errors))
+      << errors;
+  EXPECT_EQ(m.control_values, (std::vector<double>{0, 7, 3}));
+  EXPECT_EQ(control_value(m, kProbeKeys[0]), 3);
 }
 
 // A machine loaded with the set may use what the set declares; one without it may not.

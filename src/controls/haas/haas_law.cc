@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "controls/haas/haas_keys.h"
 #include "machine/machine.h"
 #include "support/angles.h"
 
@@ -64,9 +65,9 @@ HaasSettings haas_settings(const Machine& m, LengthUnit plan_units) {
   if (m.default_units == "mm" && plan_units == LengthUnit::kInch) f = 1 / 25.4;
   if (m.default_units == "in" && plan_units == LengthUnit::kMm) f = 25.4;
   HaasSettings s;
-  s.finish_allowance = m.haas_finish_allowance * f;
-  s.min_cut = m.haas_min_cut * f;
-  s.chamfer = m.haas_chamfer;
+  s.finish_allowance = control_value(m, kHaasFinishAllowance) * f;
+  s.min_cut = control_value(m, kHaasMinCut) * f;
+  s.chamfer = control_value(m, kHaasChamfer);
   s.chamfer_angle = m.chamfer_angle;
   return s;
 }
