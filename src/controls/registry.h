@@ -1,8 +1,7 @@
 #pragma once
 // The registry: every shipped control, each described by its folder's Control
-// (controls/<control>/<control>_control.cc). It is, with the loop tables beside it
-// (registry_output.cc, registry_readback.cc: Fanuc's G92 serves Haas too), the only place
-// outside a control's folder that names one.
+// (controls/<control>/<control>_control.cc). It is the only place outside a control's folder
+// that names one.
 #include "machine/control.h"
 
 namespace clpost {

@@ -65,9 +65,16 @@ TEST(Registry, EveryControlWritesAndReadsBackItsCycle) {
     ASSERT_NE(c->readback, nullptr) << c->name;
     EXPECT_TRUE(c->readback->cycle != nullptr || c->readback->call != nullptr)
         << c->name << " writes a cycle that nothing reads back";
+    for (const LoopBlock& l : c->loops) {
+      ASSERT_NE(l.emitter, nullptr) << c->name << " " << l.name;
+      EXPECT_NE(l.emitter(), nullptr) << c->name << " " << l.name;
+      EXPECT_NE(l.readback, nullptr) << c->name << " writes " << l.name << ", which nothing reads";
+    }
   }
   EXPECT_EQ(find_control(shipped_controls(), "fanuc_g76")->name, "fanuc");
   EXPECT_EQ(find_control(shipped_controls(), "none"), nullptr);
+  EXPECT_EQ(find_loop(shipped_controls(), "g92"),
+            &find_control(shipped_controls(), "fanuc_g76")->loops[0]);
 }
 
 }  // namespace

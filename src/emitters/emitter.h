@@ -47,9 +47,9 @@ std::unique_ptr<Emitter> make_emitter(const Machine& m);
 // What make_emitter(m) tries, in order: "CYCLE99, else G33 loop" (for `clpost machines`).
 std::string threading_summary(const Machine& m);
 
-// The emitter of a loop style (controls/registry_output.cc); a machine's cycle is its control's
-// (machine/control.h).
-std::unique_ptr<Emitter> make_loop_emitter(ThreadLoop l);
+// The emitter of loop block `l` (threading.loop, a control's: machine/control.h), or of the G33
+// loop for null; a machine's cycle is its control's.
+std::unique_ptr<Emitter> make_loop_emitter(const LoopBlock* l);
 std::unique_ptr<Emitter> make_emulation_emitter();
 
 }  // namespace clpost

@@ -91,4 +91,9 @@ std::unique_ptr<Emitter> make_emulation_emitter() {
   return std::make_unique<EmulationEmitter>("emulation");
 }
 
+std::unique_ptr<Emitter> make_loop_emitter(const LoopBlock* l) {
+  if (l == nullptr) return std::make_unique<EmulationEmitter>("G33 loop");
+  return l->emitter != nullptr ? l->emitter() : nullptr;
+}
+
 }  // namespace clpost

@@ -1,6 +1,6 @@
 // make_emitter: the machine's threading strategy with its fallback ("exact or fall back",
-// controllers.md). The controls' cycle and loop emitters come from the registry
-// (controls/registry_output.cc).
+// controllers.md). The controls' cycle and loop emitters come from the machine's set of controls
+// (machine/control.h).
 #include <fmt/format.h>
 
 #include "emitters/emitter.h"

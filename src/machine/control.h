@@ -20,9 +20,12 @@ struct ThreadPlan;
 struct Undercut;
 template <class Job>
 class CycleOutput;
+struct NcBlock;  // nc_reader/nc_block.h
 namespace sim {
-struct ControlReadback;
-}
+struct ControlReadback;  // simulator/control_readback.h
+struct ReadbackState;    // simulator/control_readback.h
+struct State;            // simulator/sim_state.h
+}  // namespace sim
 
 // A code whose meaning is the control's own (its manual's), not the machine builder's: G0, G99,
 // M3 … A machine file may not redefine it (machine_loader.cc); builder codes (coolant, clamps,
@@ -41,6 +44,18 @@ inline constexpr FixedCode kIsoMotionCodes[] = {
     {"arc_ccw", "G3", "is a counter-clockwise arc"},
     {"spindle_cw", "M3", "starts the spindle clockwise"},
     {"spindle_ccw", "M4", "starts the spindle counter-clockwise"}};
+
+// A control's single-pass loop block (threading.loop): one block per pass, written where the
+// strategy or the fallback is `loop`. Any machine of the set may select it, whatever its
+// threading.cycle (Haas's machines take Fanuc's G92); "g33", the G33 loop every control has,
+// is none.
+struct LoopBlock {
+  std::string_view name;  // threading.loop's value: "g92"
+  // Writes it (emitters/emitter.h).
+  std::unique_ptr<CycleOutput<ThreadPlan>> (*emitter)() = nullptr;
+  // Reads a block that may be it back (simulator/control_readback.h: CycleReader).
+  bool (*readback)(sim::State& s, const NcBlock& b) = nullptr;
+};
 
 struct Control {
   std::string_view name;   // its folder: "fanuc"
@@ -87,6 +102,11 @@ struct Control {
   std::span<const NameSpec> codes = {};
   std::span<const NameSpec> formats = {};
   std::span<const TemplateSpec* const> templates = {};
+  // Its loop blocks (threading.loop's choices besides g33).
+  std::span<const LoopBlock> loops = {};
+  // Makes the state its read-back keeps while a program runs (a modal cycle's words), one per
+  // run (simulator/sim_state.h: State::own); null: it keeps none.
+  std::unique_ptr<sim::ReadbackState> (*readback_state)() = nullptr;
 };
 
 // The controls a machine may select: the registry's (shipped_controls()), or a test's own.
@@ -106,6 +126,14 @@ double control_value(const Machine& m, const KeySpec& key);
 inline const Control* find_control(ControlSet set, std::string_view cycle) {
   for (const Control* c : set)
     if (c->cycle == cycle) return c;
+  return nullptr;
+}
+
+// The loop block of `set` named `name` (threading.loop), or null ("g33" is none).
+inline const LoopBlock* find_loop(ControlSet set, std::string_view name) {
+  for (const Control* c : set)
+    for (const LoopBlock& l : c->loops)
+      if (l.name == name) return &l;
   return nullptr;
 }
 

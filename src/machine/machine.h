@@ -34,9 +34,6 @@ struct NumberFormat {
 
 enum class ThreadStrategy : uint8_t { kCycle, kLoop, kEmulate };
 enum class ThreadFallback : uint8_t { kLoop, kEmulate, kError };
-// The control's single-pass loop block (threading.loop); the multi-pass cycle (threading.cycle)
-// is a registered control's (machine/control.h). See docs/machines.md.
-enum class ThreadLoop : uint8_t { kG33, kG92 };
 // kAuto (cl.radial_axis only): the radial axis is found from the program (the one of the two
 // non-axial axes that is not constantly 0).
 enum class ClAxis : uint8_t { kX, kY, kZ, kAuto };
@@ -92,7 +89,8 @@ struct Machine {
   // control_value() (control.h) reads them.
   std::vector<double> control_values;
   uint32_t own_keys_at = 0;
-  ThreadLoop thread_loop = ThreadLoop::kG33;
+  // The loop block threading.loop selects from the set's (null: g33, the G33 loop).
+  const LoopBlock* thread_loop = nullptr;
   std::string thread_lead_address_x;  // lead word when the X travel dominates ("" = same)
   std::string tpi_address;            // threads-per-inch word used when the CL gave TPI ("" none)
   LengthOrAuto run_in;                // threading.run_in: the cycle words' run-in, or auto

@@ -148,19 +148,6 @@ int get_choice(Ctx& c, const YAML::Node& n, std::string_view key, std::span<cons
   return -1;
 }
 
-// The control `n` names by its cycle in `set` ("none": null); false after an error naming the
-// set's cycles.
-bool get_control(Ctx& c, const YAML::Node& n, std::string_view key, ControlSet set,
-                 const Control*& out) {
-  if (n.IsScalar() && n.Scalar() == "none") return out = nullptr, true;
-  if (n.IsScalar())
-    if (const Control* ctl = find_control(set, n.Scalar())) return out = ctl, true;
-  std::vector<Choice> choices{{"none"}};
-  for (const Control* ctl : set) choices.push_back({ctl->cycle});
-  get_choice(c, n, key, choices);
-  return false;
-}
-
 bool get_list(Ctx& c, const YAML::Node& n, std::string_view key, std::vector<std::string>& out) {
   if (!n.IsSequence()) return c.error(n, fmt::format("'{}' must be a list", key)), false;
   out.clear();
@@ -189,19 +176,19 @@ bool set_member(Ctx& c, const YAML::Node& n, std::string_view path, KeyType type
       if constexpr (std::is_same_v<V, bool>) return get_bool(c, n, path, v);
       return false;
     }
-    if constexpr (std::is_same_v<V, const Control*>) {
-      if (!get_control(c, n, path, obj.controls, v)) return false;
+    const int i = get_choice(c, n, path, choices);
+    if (i < 0) return false;
+    if constexpr (std::is_same_v<V, std::string>) {
+      v = std::string(choices[i].stored);
+    } else if constexpr (std::is_same_v<V, const Control*>) {  // "none", then the set's cycles
+      v = i == 0 ? nullptr : obj.controls[i - 1];
       obj.own_keys_at = first_slot(obj.controls, v);
-      return true;
+    } else if constexpr (std::is_same_v<V, const LoopBlock*>) {  // "g33", then the set's loops
+      v = i == 0 ? nullptr : find_loop(obj.controls, choices[i].name);
     } else {
-      const int i = get_choice(c, n, path, choices);
-      if (i < 0) return false;
-      if constexpr (std::is_same_v<V, std::string>)
-        v = std::string(choices[i].stored);
-      else
-        v = static_cast<V>(i);  // enums in choice order; bool: the second choice is true
-      return true;
+      v = static_cast<V>(i);  // enums in choice order; bool: the second choice is true
     }
+    return true;
   }
 }
 

@@ -222,7 +222,8 @@ TEST(MachineLoader, ThreadingCycleKeysAreChecked) {
       << errors;
   ASSERT_NE(m.control, nullptr);
   EXPECT_EQ(m.control->cycle, "fanuc_g76");
-  EXPECT_EQ(m.thread_loop, ThreadLoop::kG92);
+  ASSERT_NE(m.thread_loop, nullptr);
+  EXPECT_EQ(m.thread_loop->name, "g92");
   EXPECT_DOUBLE_EQ(m.run_in.value, 2.5);
   EXPECT_DOUBLE_EQ(m.thread_tolerance, 0.005);
   EXPECT_TRUE(m.extra_spring_passes);

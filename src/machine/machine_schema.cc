@@ -21,7 +21,6 @@ constexpr Choice kRadialAxes[] = {{"x"}, {"y"}, {"z"}, {"auto"}};  // ClAxis ord
 constexpr Choice kLineEndings[] = {{"lf", "\n"}, {"crlf", "\r\n"}};
 constexpr Choice kStrategies[] = {{"cycle"}, {"loop"}, {"emulate"}};   // ThreadStrategy order
 constexpr Choice kFallbacks[] = {{"loop"}, {"emulate"}, {"error"}};    // ThreadFallback order
-constexpr Choice kLoops[] = {{"g33"}, {"g92"}};                        // ThreadLoop order
 constexpr Choice kSurfaceSpeed[] = {{"file"}, {"word"}};               // false, true
 constexpr Choice kPassEnds[] = {{"fixed"}, {"shifted"}};               // false, true
 constexpr Choice kCRotations[] = {{"rollover"}, {"continuous"}};       // CRotation order
@@ -126,10 +125,10 @@ constexpr KeySpec kEarlierKeys[] = {
     // Its choices are the set's (schema()).
     {"threading.cycle", kThr, kChoice, &M::control,
      "which cycle `strategy: cycle` writes (it needs the template of that name)"},
+    // Its choices are the set's (schema()).
     {"threading.loop", kThr, kChoice, &M::thread_loop,
      "the loop block: G33 chains (Siemens, NCT, LinuxCNC, Heidenhain) or Fanuc G92 (templates g92 "
-     "and g92_next)",
-     0, 0, kLoops},
+     "and g92_next)"},
     {"threading.fallback", kThr, kChoice, &M::thread_fallback,
      "what to write when the first choice would not cut the plan exactly", 0, 0, kFallbacks},
     {"threading.tolerance", kThr, kNumber, &M::thread_tolerance,
@@ -438,10 +437,14 @@ Schema schema(ControlSet controls) {
   Schema s;
   s.cycles.push_back({"none"});
   for (const Control* c : controls) s.cycles.push_back({c->cycle});
+  s.loops.push_back({"g33"});
+  for (const Control* c : controls)
+    for (const LoopBlock& l : c->loops) s.loops.push_back({l.name});
   s.keys = joined<KeySpec>(
       kEarlierKeys, controls, [](const Control& c) { return c.keys; }, kLaterKeys);
   for (KeySpec& k : s.keys) {
     if (std::holds_alternative<const Control * Machine::*>(k.member)) k.choices = s.cycles;
+    if (std::holds_alternative<const LoopBlock * Machine::*>(k.member)) k.choices = s.loops;
     if (ControlSlot* slot = std::get_if<ControlSlot>(&k.member)) {
       slot->index = static_cast<uint32_t>(s.control_defaults.size());
       s.control_defaults.push_back(slot->initial);
@@ -521,6 +524,8 @@ std::string member_text(const KeySpec& k, const V& v) {
     return fmt::format("{}", v);
   } else if constexpr (std::is_same_v<V, const Control*>) {
     return std::string(v != nullptr ? v->cycle : "none");
+  } else if constexpr (std::is_same_v<V, const LoopBlock*>) {
+    return std::string(v != nullptr ? v->name : "g33");
   } else if constexpr (std::is_same_v<V, LengthOrAuto>) {
     return v.automatic ? std::string("auto") : number_text(v.value);
   } else {  // an enum: the choice of its index

@@ -37,9 +37,9 @@ struct ControlSlot {
 using MachineMember =
     std::variant<std::string Machine::*, bool Machine::*, double Machine::*, int Machine::*,
                  std::vector<std::string> Machine::*, ThreadStrategy Machine::*,
-                 ThreadFallback Machine::*, const Control * Machine::*, ThreadLoop Machine::*,
-                 ClAxis Machine::*, LengthOrAuto Machine::*, CRotation Machine::*,
-                 PolarX Machine::*, ControlSlot>;
+                 ThreadFallback Machine::*, const Control * Machine::*,
+                 const LoopBlock * Machine::*, ClAxis Machine::*, LengthOrAuto Machine::*,
+                 CRotation Machine::*, PolarX Machine::*, ControlSlot>;
 using FormatMember =
     std::variant<int NumberFormat::*, bool NumberFormat::*, double NumberFormat::*>;
 
@@ -428,14 +428,15 @@ inline constexpr TemplateSpec kSelctl{
 // The schema of the post and machine files a program reads, for the set of controls it was given
 // (machine/control.h): the program's own keys, codes, formats and templates with each control's
 // (Control::keys, codes, formats, templates) among them, in the set's order. threading.cycle's
-// choices are "none" and the set's cycles. Its keys' choices point into it: it moves, never
-// copies.
+// choices are "none" and the set's cycles, threading.loop's "g33" and the set's loop blocks. Its
+// keys' choices point into it: it moves, never copies.
 struct Schema {
   std::vector<KeySpec> keys;
   std::vector<NameSpec> codes;
   std::vector<NameSpec> formats;
   std::vector<const TemplateSpec*> templates;
   std::vector<Choice> cycles;            // threading.cycle's
+  std::vector<Choice> loops;             // threading.loop's
   std::vector<double> control_defaults;  // each control slot's initial value
 
   Schema() = default;

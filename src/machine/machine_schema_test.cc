@@ -11,7 +11,7 @@ namespace {
 using enum FieldKind;
 using enum Need;
 
-// A control of this test's own, declaring a key, a code, a format and two templates.
+// A control of this test's own, declaring a key, a code, a format, two templates and a loop block.
 constexpr KeySpec kProbeKeys[] = {{"threading.probe_depth", "Control facts", KeyType::kNumber,
                                    ControlSlot{.initial = 2.5}, "the probe's depth", 0, 10}};
 constexpr NameSpec kProbeCodes[] = {{"probe_on", "the probe's own code"}};
@@ -20,13 +20,16 @@ constexpr TemplateField kProbeFields[] = {{"depth", kText, "depth, format probe_
 constexpr TemplateSpec kProbeCycle{"probe_cycle",       kProbeFields,      kSetting,
                                    "the probe's cycle", "threading.cycle", "probe_g1"};
 constexpr TemplateSpec kProbeNote{"probe_note", {}, kOptional, "a note", {}, {}, "PPRINT"};
-constexpr const TemplateSpec* kProbeTemplates[] = {&kProbeCycle, &kProbeNote};
+constexpr TemplateSpec kProbeLoop{"probe_loop", {}, kSetting, "a loop", "threading.loop", "p1"};
+constexpr const TemplateSpec* kProbeTemplates[] = {&kProbeCycle, &kProbeNote, &kProbeLoop};
+constexpr LoopBlock kProbeLoops[] = {{"p1"}};
 constexpr Control kProbe{.name = "probe",
                          .cycle = "probe_g1",
                          .keys = kProbeKeys,
                          .codes = kProbeCodes,
                          .formats = kProbeFormats,
-                         .templates = kProbeTemplates};
+                         .templates = kProbeTemplates,
+                         .loops = kProbeLoops};
 constexpr const Control* kProbeSet[] = {&kProbe};
 
 // The set's declarations join the program's own: each after the program's that come before the
@@ -47,13 +50,22 @@ TEST(MachineSchema, IsBuiltFromTheSetOfControls) {
   EXPECT_EQ(find_template(probe, "probe_cycle"), &kProbeCycle);
   EXPECT_EQ(probe.templates[7], &kProbeCycle);  // after program_start … dwell
   EXPECT_EQ(probe.templates[8], &kProbeNote);
-  EXPECT_EQ(probe.templates[9]->name, "hole_drill");
+  EXPECT_EQ(probe.templates[9], &kProbeLoop);
+  EXPECT_EQ(probe.templates[10]->name, "hole_drill");
   const KeySpec* cycle = find_key(probe, "threading.cycle");
   ASSERT_NE(cycle, nullptr);
   ASSERT_EQ(cycle->choices.size(), 2u);
   EXPECT_EQ(cycle->choices[0].name, "none");
   EXPECT_EQ(cycle->choices[1].name, "probe_g1");
   EXPECT_EQ(find_key(none, "threading.cycle")->choices.size(), 1u);
+  const KeySpec* loop = find_key(probe, "threading.loop");
+  ASSERT_NE(loop, nullptr);
+  ASSERT_EQ(loop->choices.size(), 2u);
+  EXPECT_EQ(loop->choices[0].name, "g33");
+  EXPECT_EQ(loop->choices[1].name, "p1");
+  EXPECT_EQ(find_key(none, "threading.loop")->choices.size(), 1u);
+  EXPECT_EQ(find_loop(kProbeSet, "p1"), &kProbeLoops[0]);
+  EXPECT_EQ(find_loop(kProbeSet, "g33"), nullptr);
   EXPECT_TRUE(declared_code(kProbeSet, "probe_on"));
   EXPECT_TRUE(declared_code({}, "rapid"));
   EXPECT_FALSE(declared_code({}, "probe_on"));
@@ -110,13 +122,15 @@ TEST(MachineSchema, EachControlReadsItsOwnSlots) {
 // A machine loaded with the set may use what the set declares; one without it may not.
 TEST(MachineSchema, AMachineFileMayUseWhatItsSetDeclares) {
   const std::string doc =
-      "threading: {cycle: probe_g1}\ncodes: {probe_on: M77}\nformats: {probe_depth: {decimals: "
+      "threading: {cycle: probe_g1, loop: p1}\ncodes: {probe_on: M77}\nformats: {probe_depth: "
+      "{decimals: "
       "4}}\ntemplates: {probe_cycle: \"G1 Z{depth}\"}\n";
   Machine m;
   m.controls = kProbeSet;
   std::string errors;
   EXPECT_TRUE(apply_machine_yaml("m.yaml", doc, false, m, errors)) << errors;
   EXPECT_EQ(m.control, &kProbe);
+  EXPECT_EQ(m.thread_loop, &kProbeLoops[0]);
   EXPECT_EQ(m.code("probe_on"), "M77");
   EXPECT_EQ(m.format_for("probe_depth").decimals, 4);
   Machine plain;
@@ -124,6 +138,9 @@ TEST(MachineSchema, AMachineFileMayUseWhatItsSetDeclares) {
   EXPECT_FALSE(apply_machine_yaml("m.yaml", doc, false, plain, errors));
   EXPECT_NE(errors.find("m.yaml:1:20: error: 'threading.cycle' must be one of none, not "
                         "'probe_g1'"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("m.yaml:1:36: error: 'threading.loop' must be one of g33, not 'p1'"),
             std::string::npos)
       << errors;
   EXPECT_NE(errors.find("m.yaml:2:9: error: unknown code 'codes.probe_on'"), std::string::npos)
@@ -185,10 +202,9 @@ TEST(MachineSchema, WhichTemplatesAMachineNeeds) {
   m.control = &kProbe;
   EXPECT_TRUE(template_required(s, kProbeCycle, m));
   EXPECT_FALSE(template_required(s, kProbeNote, m));
-  constexpr TemplateSpec kG92Loop{"g92", {}, kSetting, "a loop", "threading.loop", "g92"};
-  EXPECT_FALSE(template_required(s, kG92Loop, m));
-  m.thread_loop = ThreadLoop::kG92;
-  EXPECT_TRUE(template_required(s, kG92Loop, m));
+  EXPECT_FALSE(template_required(s, kProbeLoop, m));
+  m.thread_loop = &kProbeLoops[0];
+  EXPECT_TRUE(template_required(s, kProbeLoop, m));
   // Compile-time field lookup.
   static_assert(kProbeCycle.field("depth", FieldKind::kText) == 0);
   static_assert(tmpl::kToolChange.field("tool", FieldKind::kWhole) == 0);

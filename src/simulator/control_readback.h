@@ -2,6 +2,7 @@
 // What a control contributes to the simulation (control_sim.cc): its cycles and calls read back
 // with its laws, and the dialect words whose meaning is its own. Each control has one, in its
 // folder (its Control's readback, machine/control.h); control_sim.cc knows no control by name.
+#include <memory>
 #include <span>
 #include <string_view>
 
@@ -31,8 +32,12 @@ struct ControlReadback {
   bool uw_are_cycle_words = false;
 };
 
-// The reader of the loop block threading.loop `l` selects, when it is a cycle of its own (G92);
-// null for G33, read as moves (controls/registry_readback.cc).
-CycleReader loop_reader(ThreadLoop l);
+// The state a control's read-back keeps while a program runs (Fanuc's G92 modal words), each
+// control its own kind, made by its Control::readback_state and found by that maker
+// (sim_state.h: State::own).
+struct ReadbackState {
+  virtual ~ReadbackState() = default;
+};
+using MakeReadbackState = std::unique_ptr<ReadbackState> (*)();
 
 }  // namespace clpost::sim

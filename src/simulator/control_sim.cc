@@ -295,8 +295,8 @@ bool cycle_block(State& s, const NcBlock& b, const Codes& c) {
     return true;
   }
   if (c.control->cycle != nullptr && c.control->cycle(s, b)) return true;
-  const sim::CycleReader loop = sim::loop_reader(s.m.thread_loop);
-  return loop != nullptr && loop(s, b);
+  const LoopBlock* loop = s.m.thread_loop;  // null: G33, read as moves
+  return loop != nullptr && loop->readback != nullptr && loop->readback(s, b);
 }
 
 // The block's modal motion code, if it has one (s.motion set).
@@ -354,7 +354,7 @@ void modal_move(State& s, const NcBlock& b, const Codes& c, const Code* motion_c
                                                           : c.thread_dec;
       return thread_move(s, b, to, code);
     }
-    case Motion::kG92:
+    case Motion::kCycle:
       return;
   }
 }

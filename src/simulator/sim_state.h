@@ -11,6 +11,7 @@
 #include "laws/cut_pass.h"
 #include "nc_reader/nc_block.h"
 #include "planner/thread_words.h"
+#include "simulator/control_readback.h"
 #include "simulator/control_sim.h"
 
 namespace clpost {
@@ -83,6 +84,8 @@ struct ModalWords {
 };
 ModalWords modal_words(const Machine& m);
 
+// kCycle: a control's modal cycle is in force (Fanuc's G92): a block of its words alone repeats
+// it, which its read-back reads; control_sim moves nothing for it.
 enum class Motion {
   kNone,
   kRapid,
@@ -92,7 +95,7 @@ enum class Motion {
   kThread,
   kThreadInc,
   kThreadDec,
-  kG92
+  kCycle
 };
 
 // A cycle whose words span several blocks, as its control's read-back has read it so far: the
@@ -107,17 +110,14 @@ struct PendingCycle {
   std::optional<Vec2> from, to;
 };
 
-// G92's modal words (a block of only X/Z/R/Q repeats the cycle with them).
-struct G92Modal {
-  double x = 0, z = 0, r = 0, f = 0;
-  std::optional<double> q;
-};
-
 struct State {
   State(const Machine& machine, Diagnostics& d, Simulation& o, const SimOptions& so)
       : m(machine), diags(d), out(o), opt(so) {
     for (size_t i = 0; i < letter_scale.size(); ++i)
       letter_scale[i] = m.format_for(std::string(1, static_cast<char>('A' + i))).scale;
+    for (const Control* c : m.controls)
+      if (c->readback_state != nullptr)
+        readback_states.emplace_back(c->readback_state, c->readback_state());
   }
   const Machine& m;
   // The format scale of each one-letter address ('A' first), looked up once: nearly every word
@@ -139,7 +139,9 @@ struct State {
   bool last_was_thread = false;         // the previous move was synchronized
   bool pullout_open = false;            // the previous move ended a synchronized cut
   PendingCycle pending;                 // a multi-block cycle being read (its control's read-back)
-  G92Modal g92;
+  // The read-back state of each control of the set that keeps one (Control::readback_state),
+  // made as the run starts, with its maker.
+  std::vector<std::pair<MakeReadbackState, std::unique_ptr<ReadbackState>>> readback_states;
   std::optional<double> c;  // the C axis (millturn.c_axis) as last written, degrees
   double y = 0;             // Y as last written (milling on a machine with Y)
   // Polar interpolation (codes polar_on .. polar_off, millturn.polar_interpolation): on, the C it
@@ -159,6 +161,14 @@ struct State {
   // The codes of the machine's own positions (positions.cc), found at the first block.
   std::optional<std::vector<Code>> position_codes;
 
+  // The read-back state `make` makes (a control's read-back asks for its own, of type T): the
+  // one made as the run started, or, for a control outside the machine's set, one made now.
+  template <class T>
+  T& own(MakeReadbackState make) {
+    for (auto& [maker, state] : readback_states)
+      if (maker == make) return static_cast<T&>(*state);
+    return static_cast<T&>(*readback_states.emplace_back(make, make()).second);
+  }
   // A word's value as the control reads it: divided by the format's scale (machine formats).
   double value(const NcWord& w, std::string_view format) const;
   double value(const NcWord& w) const { return value(w, w.address); }

@@ -1,4 +1,5 @@
-// Fanuc (system A lathe): the two-block G76 (fanuc_emitter.h, fanuc_law.h) and its read-back.
+// Fanuc (system A lathe): the two-block G76 and the G92 loop block (fanuc_emitter.h,
+// fanuc_law.h) and their read-back.
 #include "controls/fanuc/fanuc_codes.h"
 #include "controls/fanuc/fanuc_emitter.h"
 #include "controls/fanuc/fanuc_readback.h"
@@ -10,6 +11,11 @@ namespace clpost {
 namespace {
 
 constexpr const TemplateSpec* kFanucTemplates[] = {&tmpl::kFanucG76, &tmpl::kG92, &tmpl::kG92Next};
+
+// G92, the box cycle one block a pass (Haas's machines take it too: threading.loop g92).
+constexpr LoopBlock kFanucLoops[] = {
+    {"g92", []() -> std::unique_ptr<Emitter> { return std::make_unique<G92Emitter>(); },
+     sim::g92_cycle}};
 
 }  // namespace
 
@@ -27,6 +33,8 @@ extern const Control kFanucControl{
     // systems, as M. Lynch lists them: mmsonline.com, "Juggling Mismatches in Resolution and
     // Least Input Increment"; docs/cl-meaning.md, inch output).
     .inch_length_increment = 0.0001,
-    .templates = kFanucTemplates};
+    .templates = kFanucTemplates,
+    .loops = kFanucLoops,
+    .readback_state = sim::fanuc_readback_state};
 
 }  // namespace clpost

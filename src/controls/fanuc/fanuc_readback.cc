@@ -11,6 +11,24 @@
 
 namespace clpost::sim {
 
+namespace {
+
+// G92's modal words: a block of only X/Z/R/Q repeats the cycle with them.
+struct G92Words {
+  double x = 0, z = 0, r = 0, f = 0;
+  std::optional<double> q;
+};
+
+struct FanucState : ReadbackState {
+  G92Words g92;
+};
+
+}  // namespace
+
+std::unique_ptr<ReadbackState> fanuc_readback_state() {
+  return std::make_unique<FanucState>();
+}
+
 std::string_view g76_depth_format(const State& s) {
   return s.out.units == LengthUnit::kInch ? "g76_depth_in" : "g76_depth";
 }
@@ -70,7 +88,7 @@ bool g92_cycle(State& s, const NcBlock& b) {
   const bool starts = has_code(b, code);
   if (!starts) {
     // A continuation block repeats G92 while it is the modal motion: only X/Z/R/Q words.
-    if (s.motion != Motion::kG92) return false;
+    if (s.motion != Motion::kCycle) return false;
     for (const NcWord& w : b.words)
       if (w.address == "G") {
         s.motion = Motion::kNone;
@@ -78,10 +96,10 @@ bool g92_cycle(State& s, const NcBlock& b) {
       }
     if (b.find("X") == nullptr && b.find("Z") == nullptr) return false;
   }
-  G92Modal& g = s.g92;
+  G92Words& g = s.own<FanucState>(fanuc_readback_state).g92;
   if (starts) {
     if (missing(s, b, code, "XZF")) return true;
-    g = G92Modal{};
+    g = G92Words{};
   }
   if (const NcWord* x = b.find("X")) g.x = s.radius(*x);
   if (const NcWord* z = b.find("Z")) g.z = s.value(*z);
@@ -89,7 +107,7 @@ bool g92_cycle(State& s, const NcBlock& b) {
   if (const NcWord* f = b.find("F")) g.f = s.value(*f);
   g.q.reset();  // Q is one-shot
   if (const NcWord* q = b.find("Q")) g.q = s.value(*q, "thread_angle");
-  s.motion = Motion::kG92;
+  s.motion = Motion::kCycle;
   // The box: in to X (+R at the start), the cut to X Z, out to the start's X, back to the start.
   const Vec2 start = s.pos;
   NcCut c;
