@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cl_generator.h"
+#include "controls/registry.h"
 #include "emitters/emitter.h"
 #include "emitters/planner_settings.h"
 #include "interpreter/post.h"
@@ -34,7 +35,8 @@ const Machine& generic_lathe() {
   static const Machine m = [] {
     Machine out;
     std::string errors;
-    if (!load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {}, out, errors)) std::abort();
+    if (!load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {}, shipped_controls(), out, errors))
+      std::abort();
     return out;
   }();
   return m;

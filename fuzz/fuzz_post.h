@@ -23,7 +23,7 @@ namespace clpost::fuzz {
 inline Machine shipped_machine(const char* name) {
   Machine m;
   std::string errors;
-  if (!load_machine(name, {CLPOST_SOURCE_DIR}, {}, m, errors)) {
+  if (!load_machine(name, {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors)) {
     std::fprintf(stderr, "fuzz: cannot load machine %s:\n%s", name, errors.c_str());
     std::abort();
   }

@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "controls/registry.h"
 #include "machine/machine_loader.h"
 #include "reader/line_source.h"
 #include "simulator/control_sim.h"
@@ -801,7 +802,7 @@ TEST_P(ConformanceRs274, SimulationAgreesWithRs274) {
 
   Machine m;
   std::string errors;
-  ASSERT_TRUE(load_machine(machine, {source_dir()}, {}, m, errors)) << errors;
+  ASSERT_TRUE(load_machine(machine, {source_dir()}, {}, shipped_controls(), m, errors)) << errors;
   const std::string text = read_file(ngc);
   reader::LineSource src{std::string_view(text)};
   Diagnostics diags(ngc);

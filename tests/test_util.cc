@@ -1,4 +1,5 @@
 #include "test_util.h"
+#include "controls/registry.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -15,7 +16,7 @@ namespace clpost::test {
 Machine shipped_machine(const std::string& name) {
   Machine m;
   std::string errors;
-  EXPECT_TRUE(load_machine(name, {source_dir()}, {}, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {source_dir()}, {}, shipped_controls(), m, errors)) << errors;
   return m;
 }
 

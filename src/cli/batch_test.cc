@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "cli/batch_report.h"
+#include "controls/registry.h"
 #include "machine/machine_loader.h"
 
 namespace clpost {
@@ -107,7 +108,8 @@ TEST(BatchOutputs, DuplicateStemsAreRefused) {
 TEST(BatchRun, ProgramsArePublishedInGroups) {
   Machine m;
   std::string errors;
-  ASSERT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
+  ASSERT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors))
+      << errors;
   for (unsigned jobs : {1u, 2u}) {
     TempDir d;
     std::vector<std::string> files;

@@ -26,6 +26,7 @@
 #include "cli/schema_command.h"
 #include "cli/sheet_command.h"
 #include "cli/verify_command.h"
+#include "controls/registry.h"
 #include "emitters/emitter.h"
 #include "machine/machine_loader.h"
 #include "planner/plan_format.h"
@@ -92,7 +93,7 @@ void add_machine_opts(CLI::App& app, MachineOpts& o) {
 
 bool load(const MachineOpts& o, Machine& m) {
   std::string errors;
-  if (load_machine(o.machine, data_dirs(), o.sets, m, errors)) return true;
+  if (load_machine(o.machine, data_dirs(), o.sets, shipped_controls(), m, errors)) return true;
   print_err(errors);
   return false;
 }
@@ -370,7 +371,7 @@ int list_machines_command() {
   for (const MachineInfo& mi : list_machines(data_dirs())) {
     Machine m;
     std::string errors;
-    if (!load_machine(mi.path, data_dirs(), {}, m, errors)) {
+    if (!load_machine(mi.path, data_dirs(), {}, shipped_controls(), m, errors)) {
       print_out(fmt::format("{:<18} {:<5} {}\n", mi.name, "?", "(does not load, see below)"));
       print_err(errors);
       rc = kExitUsage;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "controls/registry.h"
 #include "machine/machine_listing.h"
 #include "machine/machine_loader.h"
 
@@ -21,7 +22,7 @@ CommandOutput machines_show(const std::string& machine, const std::vector<std::s
   CommandOutput r;
   Machine m;
   KeyOrigins origins;
-  if (!load_machine(machine, data_dirs, sets, m, r.err, &origins)) {
+  if (!load_machine(machine, data_dirs, sets, shipped_controls(), m, r.err, &origins)) {
     r.exit_code = kExitUsage;
     return r;
   }
@@ -42,7 +43,8 @@ CommandOutput machines_diff(const std::string& a, const std::string& b,
                             const std::vector<std::string>& data_dirs) {
   CommandOutput r;
   Machine ma, mb;
-  if (!load_machine(a, data_dirs, {}, ma, r.err) || !load_machine(b, data_dirs, {}, mb, r.err)) {
+  if (!load_machine(a, data_dirs, {}, shipped_controls(), ma, r.err) ||
+      !load_machine(b, data_dirs, {}, shipped_controls(), mb, r.err)) {
     r.exit_code = kExitUsage;
     return r;
   }

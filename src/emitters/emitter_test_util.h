@@ -10,6 +10,7 @@
 #include "emitters/emitter.h"
 #include "emitters/planner_settings.h"
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 #include "planner/planner_test_util.h"
 #include "support/sink.h"
 
@@ -18,7 +19,8 @@ namespace clpost::testing {
 inline Machine shipped_machine(const std::string& name, std::vector<std::string> sets = {}) {
   Machine m;
   std::string errors;
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 

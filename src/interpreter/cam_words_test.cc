@@ -5,6 +5,7 @@
 #include "interpreter/post.h"
 #include "interpreter/statement_table.h"
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 #include "reader/cl_reader.h"
 #include "support/sink.h"
 #include "writer/nc_program.h"
@@ -23,7 +24,8 @@ Machine lathe(std::vector<std::string> sets = {}, const char* name = "generic-la
   std::string errors;
   if (std::string(name) == "generic-lathe") sets.push_back("block_numbers.enabled=false");
   sets.push_back("templates.program_header=[]");  // the header's own tests: cycle_time_test.cc
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "interpreter/post_test_util.h"
+#include "machine/machine_test_util.h"
 
 namespace clpost {
 namespace {
@@ -191,7 +192,8 @@ constexpr const char* kTwoTools =
 Machine shipped(const std::string& name) {
   Machine m;
   std::string errors;
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, kRates, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, kRates, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 

@@ -4,6 +4,7 @@
 
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 
 namespace clpost {
 namespace {
@@ -18,8 +19,8 @@ Posted post(const std::string& cl) {
   Machine m;
   std::string errors;
   EXPECT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR},
-                           {"block_numbers.enabled=false", "templates.program_header=[]"}, m,
-                           errors))
+                           {"block_numbers.enabled=false", "templates.program_header=[]"},
+                           shipped_controls(), m, errors))
       << errors;
   PostedText r = post_text(cl, m, "t.cl", {});
   return Posted{r.program, r.diags.render_all(), r.diags.error_count()};

@@ -1,6 +1,7 @@
 #include "interpreter/interpreter.h"
 #include "interpreter/post.h"
 #include "interpreter/statement_table.h"
+#include "machine/machine_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,9 @@ Machine generic(std::vector<std::string> sets = {}) {
   std::string errors;
   sets.push_back("block_numbers.enabled=false");
   sets.push_back("templates.program_header=[]");  // the header's own tests: cycle_time_test.cc
-  EXPECT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  EXPECT_TRUE(
+      load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, sets, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 
@@ -701,8 +704,8 @@ TEST(InterpreterThreads, CoupledVariableLeadStartsEachMoveAtItsLead) {
   Machine m;
   std::string errors;
   ASSERT_TRUE(load_machine("sinumerik-840d", {CLPOST_SOURCE_DIR},
-                           {"block_numbers.enabled=false", "templates.program_header=[]"}, m,
-                           errors))
+                           {"block_numbers.enabled=false", "templates.program_header=[]"},
+                           shipped_controls(), m, errors))
       << errors;
   Posted p = post(
       "SPINDL/500,RPM,CLW\nRAPID\nGOTO/10,0,2\nCOUPLE/ON,MMPR,2,INCR,0.1\nGOTO/10,0,-18\n"

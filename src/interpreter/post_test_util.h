@@ -10,6 +10,7 @@
 
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 
 namespace clpost::test {
 
@@ -24,7 +25,8 @@ inline Machine load(const std::string& name, std::vector<std::string> sets = {})
   std::string errors;
   // The caller's sets win.
   sets.insert(sets.begin(), {"block_numbers.enabled=false", "templates.program_header=[]"});
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 

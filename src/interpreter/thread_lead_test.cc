@@ -4,6 +4,7 @@
 
 #include "interpreter/post.h"
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 
 namespace clpost {
 namespace {
@@ -17,7 +18,8 @@ namespace {
 TEST(ThreadLead, ALeadTheFormatRoundsAwayOverALongThreadIsAnError) {
   Machine m;
   std::string errors;
-  ASSERT_TRUE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
+  ASSERT_TRUE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors))
+      << errors;
   const PostedText r = post_text(
       "UNITS/MM\nLOADTL/1\nSPINDL/300,RPM,CLW\nRAPID\nGOTO/30,0,5\n"
       "THREAD/ON,TPI,9,DEPTH,1.7,CUTS,4,OPTION,1\nGOTO/25,0,3\nGOTO/25,0,-700\nTHREAD/OFF\n"
@@ -36,7 +38,8 @@ TEST(ThreadLead, ALeadTheFormatRoundsAwayOverALongThreadIsAnError) {
 TEST(ThreadLead, ALeadWithinTheToleranceOverTheThreadPosts) {
   Machine m;
   std::string errors;
-  ASSERT_TRUE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
+  ASSERT_TRUE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors))
+      << errors;
   const PostedText r = post_text(
       "UNITS/MM\nLOADTL/1\nSPINDL/300,RPM,CLW\nRAPID\nGOTO/30,0,5\n"
       "THREAD/ON,TPI,9,DEPTH,1.7,CUTS,4,OPTION,1\nGOTO/25,0,3\nGOTO/25,0,-297\nTHREAD/OFF\n"

@@ -109,7 +109,8 @@ struct Control {
   std::unique_ptr<sim::ReadbackState> (*readback_state)() = nullptr;
 };
 
-// The controls a machine may select: the registry's (shipped_controls()), or a test's own.
+// The controls a program was given, which its machines may select: the cli gives the registry's
+// (controls/registry.h), a test may give its own.
 using ControlSet = std::span<const Control* const>;
 
 // Where control `c`'s keys start among the slots of `set`'s control keys (schema() numbers each

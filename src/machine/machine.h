@@ -81,7 +81,7 @@ struct Machine {
   std::string thread_lead_address = "F";  // G33 lead word (F, K, ...)
   std::string start_angle_address = "Q";  // when start_angle_word
   // The control threading.cycle selects (null: "none", plain ISO), from `controls`: the set the
-  // machine was loaded with (the registry's shipped_controls(), or a test's own).
+  // machine was loaded with (the registry's, or a test's own).
   const Control* control = nullptr;
   ControlSet controls;
   // The values of the keys the set's controls declare (Control::keys), at the slots schema()

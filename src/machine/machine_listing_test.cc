@@ -4,6 +4,7 @@
 
 #include "machine/machine_loader.h"
 #include "machine/machine_schema.h"
+#include "machine/machine_test_util.h"
 #include "machine/schema_json.h"
 
 namespace clpost {
@@ -25,8 +26,8 @@ TEST(MachineListing, OriginsOfThePostTheMachineAndSet) {
   Machine m;
   std::string errors;
   KeyOrigins o;
-  ASSERT_TRUE(
-      load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {"limits.max_rpm=2500"}, m, errors, &o))
+  ASSERT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {"limits.max_rpm=2500"},
+                           shipped_controls(), m, errors, &o))
       << errors;
   const std::string dir = CLPOST_SOURCE_DIR;
   EXPECT_EQ(o.at("limits.max_rpm"), "--set");

@@ -646,8 +646,8 @@ bool apply_override(const std::string& ov, Machine& m, std::string& errors, KeyO
 }  // namespace
 
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
-                  const std::vector<std::string>& overrides, Machine& out, std::string& errors,
-                  KeyOrigins* origins, ControlSet controls) {
+                  const std::vector<std::string>& overrides, ControlSet controls, Machine& out,
+                  std::string& errors, KeyOrigins* origins) {
   KeyOrigins own_origins;  // where each key came from, for the errors of check_fixed_codes
   if (origins == nullptr) origins = &own_origins;
   std::string path;

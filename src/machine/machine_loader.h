@@ -8,7 +8,6 @@
 #include <string_view>
 #include <vector>
 
-#include "controls/registry.h"
 #include "machine/machine.h"
 
 namespace clpost {
@@ -25,15 +24,16 @@ using KeyOrigins = std::map<std::string, std::string>;
 
 // `name_or_path`: a shipped machine name (looked up as <dir>/machines/<name>.yaml in each of
 // `data_dirs`, first match wins) or a path to a YAML file (contains '/' or ends in .yaml/.yml).
-// On failure returns false and `errors` holds the rendered diagnostics. threading.cycle selects
-// one of `controls` (the registry's shipped controls unless a test brings its own).
+// On failure returns false and `errors` holds the rendered diagnostics. The machine's schema is
+// that of `controls` (the set the program was given: the cli's are the registry's, a test may
+// bring its own), and threading.cycle selects one of them.
 bool load_machine(std::string_view name_or_path, const std::vector<std::string>& data_dirs,
-                  const std::vector<std::string>& overrides, Machine& out, std::string& errors,
-                  KeyOrigins* origins = nullptr, ControlSet controls = shipped_controls());
+                  const std::vector<std::string>& overrides, ControlSet controls, Machine& out,
+                  std::string& errors, KeyOrigins* origins = nullptr);
 
 // Applies one YAML document (a post or a machine file) on top of `m`. `file` names it in
-// diagnostics; `text` is its content; threading.cycle selects one of m.controls. Exposed for
-// tests.
+// diagnostics; `text` is its content; its schema is m.controls' (threading.cycle selects one of
+// them). Exposed for tests.
 bool apply_machine_yaml(std::string_view file, std::string_view text, bool is_post, Machine& m,
                         std::string& errors, KeyOrigins* origins = nullptr);
 

@@ -1,4 +1,5 @@
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,8 @@ TEST(MachineLoader, ShippedMachinesLoad) {
   for (const MachineInfo& mi : list_machines(kDirs)) {
     Machine m;
     std::string errors;
-    EXPECT_TRUE(load_machine(mi.name, kDirs, {}, m, errors)) << mi.name << "\n" << errors;
+    EXPECT_TRUE(load_machine(mi.name, kDirs, {}, shipped_controls(), m, errors)) << mi.name << "\n"
+                                                                                 << errors;
     EXPECT_EQ(errors, "");
     EXPECT_FALSE(mi.description.empty()) << mi.name;
   }
@@ -24,7 +26,7 @@ TEST(MachineLoader, ShippedMachinesLoad) {
 TEST(MachineLoader, GenericLatheTakesPostThenMachineKeys) {
   Machine m;
   std::string errors;
-  ASSERT_TRUE(load_machine("generic-lathe", kDirs, {}, m, errors)) << errors;
+  ASSERT_TRUE(load_machine("generic-lathe", kDirs, {}, shipped_controls(), m, errors)) << errors;
   EXPECT_EQ(m.name, "generic-lathe");
   EXPECT_EQ(m.post, "iso-lathe");
   EXPECT_EQ(m.code("thread"), "G33");  // from the post
@@ -37,7 +39,8 @@ TEST(MachineLoader, SetOverridesAKey) {
   Machine m;
   std::string errors;
   ASSERT_TRUE(load_machine("generic-lathe", kDirs,
-                           {"block_numbers.enabled=false", "limits.max_rpm=2500"}, m, errors))
+                           {"block_numbers.enabled=false", "limits.max_rpm=2500"},
+                           shipped_controls(), m, errors))
       << errors;
   EXPECT_FALSE(m.block_numbers);
   EXPECT_DOUBLE_EQ(m.max_rpm, 2500);
@@ -154,7 +157,7 @@ TEST(MachineLoader, DeeplyNestedYamlIsAnErrorNotACrash) {
 TEST(MachineLoader, UnknownMachineListsShippedOnes) {
   Machine m;
   std::string errors;
-  EXPECT_FALSE(load_machine("generic-lath", kDirs, {}, m, errors));
+  EXPECT_FALSE(load_machine("generic-lath", kDirs, {}, shipped_controls(), m, errors));
   EXPECT_EQ(errors.rfind("clpost: error: unknown machine 'generic-lath' (did you mean "
                          "'generic-lathe'?); shipped machines: ",
                          0),
@@ -169,7 +172,7 @@ namespace clpost {
 namespace {
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  std::string path = testing::TempDir() + name;
+  std::string path = ::testing::TempDir() + name;
   FILE* f = std::fopen(path.c_str(), "w");
   std::fwrite(text.data(), 1, text.size(), f);
   std::fclose(f);
@@ -180,7 +183,7 @@ TEST(MachineLoader, MachineWithoutPostMissesRequiredKeys) {
   std::string path = write_temp("lonely.yaml", "description: no post\nunits: mm\n");
   Machine m;
   std::string errors;
-  EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+  EXPECT_FALSE(load_machine(path, kDirs, {}, shipped_controls(), m, errors));
   EXPECT_EQ(errors, path +
                         ":1:1: error: missing required keys 'codes.rapid', 'codes.linear', "
                         "'codes.arc_cw', 'codes.arc_ccw', 'codes.thread', 'codes.metric', "
@@ -198,7 +201,7 @@ TEST(MachineLoader, EmptiedRequiredCodeIsAnError) {
       write_temp("emptied.yaml", "# no thread code\nextends: iso-lathe\ncodes: {thread: ''}\n");
   Machine m;
   std::string errors;
-  EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+  EXPECT_FALSE(load_machine(path, kDirs, {}, shipped_controls(), m, errors));
   EXPECT_EQ(errors, path +
                         ":2:1: error: missing required key 'codes.thread': empty or absent in "
                         "this machine and its post 'iso-lathe'\n"
@@ -283,17 +286,20 @@ TEST(MachineLoader, FormatOfAnAddressTheMachineNames) {
 TEST(MachineLoader, SetOfAnUnknownCodeOrFormatIsAnError) {
   Machine m;
   std::string errors;
-  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"codes.rapdi=G0"}, m, errors));
+  EXPECT_FALSE(
+      load_machine("generic-lathe", kDirs, {"codes.rapdi=G0"}, shipped_controls(), m, errors));
   EXPECT_EQ(errors,
             "--set codes.rapdi=G0: error: unknown code 'codes.rapdi' (did you mean 'rapid'?)\n");
   errors.clear();
-  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"formats.x.decimals=4"}, m, errors));
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"formats.x.decimals=4"}, shipped_controls(), m,
+                            errors));
   EXPECT_EQ(errors,
             "--set formats.x.decimals=4: error: unknown format 'formats.x' (did you mean 'X'?): a "
             "format is an address the machine writes or a named format (docs/machines.md)\n");
   errors.clear();
   EXPECT_TRUE(load_machine("generic-lathe", kDirs,
-                           {"codes.coolant_air=M12", "formats.X.decimals=4"}, m, errors))
+                           {"codes.coolant_air=M12", "formats.X.decimals=4"}, shipped_controls(), m,
+                           errors))
       << errors;
   EXPECT_EQ(m.code("coolant_air"), "M12");
 }
@@ -302,7 +308,8 @@ TEST(MachineLoader, SetOfAnUnknownCodeOrFormatIsAnError) {
 TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
   Machine m;
   std::string errors;
-  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.cycle=fanuc_g76"}, m, errors));
+  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.cycle=fanuc_g76"},
+                            shipped_controls(), m, errors));
   EXPECT_EQ(errors, std::string(CLPOST_SOURCE_DIR) +
                         "/machines/generic-lathe.yaml:3:1: error: threading.cycle is 'fanuc_g76', "
                         "which writes template 'templates.fanuc_g76': absent in this machine and "
@@ -310,7 +317,8 @@ TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
                         "  extends: iso-lathe\n"
                         "  ^\n");
   errors.clear();
-  EXPECT_FALSE(load_machine("generic-lathe", kDirs, {"threading.loop=g92"}, m, errors));
+  EXPECT_FALSE(
+      load_machine("generic-lathe", kDirs, {"threading.loop=g92"}, shipped_controls(), m, errors));
   EXPECT_NE(errors.find("threading.loop is 'g92', which writes template 'templates.g92':"),
             std::string::npos)
       << errors;
@@ -322,7 +330,7 @@ TEST(MachineLoader, TemplateSelectedBySettingIsRequired) {
   EXPECT_TRUE(load_machine("generic-lathe", kDirs,
                            {"threading.cycle=fanuc_g76", "templates.fanuc_g76=[\"G76 X{x} Z{z}\"]",
                             "codes.thread=G32", "codes.feed_per_min=G98", "codes.feed_per_rev=G99"},
-                           m, errors))
+                           shipped_controls(), m, errors))
       << errors;
 }
 
@@ -341,7 +349,7 @@ TEST(MachineLoader, EveryRequiredTemplateIsRequired) {
     const std::string path = write_temp("one-less.yaml", text);
     Machine m;
     std::string errors;
-    EXPECT_FALSE(load_machine(path, kDirs, {}, m, errors));
+    EXPECT_FALSE(load_machine(path, kDirs, {}, shipped_controls(), m, errors));
     EXPECT_EQ(errors, path + ":1:1: error: missing required key 'templates." + left_out +
                           "' (a machine file normally 'extends' a post from posts/ that defines "
                           "them)\n  " +
@@ -375,7 +383,7 @@ TEST(MachineLoader, EveryRequiredTemplateIsRequired) {
   for (const auto& [set, message] : selected) {
     Machine m;
     std::string errors;
-    EXPECT_FALSE(load_machine("generic-lathe", kDirs, {set}, m, errors));
+    EXPECT_FALSE(load_machine("generic-lathe", kDirs, {set}, shipped_controls(), m, errors));
     const std::string line = dir + "/machines/generic-lathe.yaml:3:1: error: " + message +
                              ": absent in this machine and its post 'iso-lathe'\n"
                              "  extends: iso-lathe\n"
@@ -391,8 +399,8 @@ TEST(MachineLoader, AnEmptyTemplateIsPresent) {
   std::string errors;
   EXPECT_TRUE(load_machine(
       "generic-lathe", kDirs,
-      {"templates.dwell=[]", "threading.loop=g92", "templates.g92=[]", "templates.g92_next=[]"}, m,
-      errors))
+      {"templates.dwell=[]", "threading.loop=g92", "templates.g92=[]", "templates.g92_next=[]"},
+      shipped_controls(), m, errors))
       << errors;
   EXPECT_TRUE(m.templates.at("dwell").empty());
 }
@@ -409,25 +417,26 @@ namespace {
 TEST(MachineLoader, AControlsFixedCodesCannotBeRedefined) {
   Machine m;
   std::string errors;
-  EXPECT_FALSE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {"codes.spindle_cw=M4"}, m, errors));
+  EXPECT_FALSE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {"codes.spindle_cw=M4"},
+                            shipped_controls(), m, errors));
   EXPECT_EQ(errors,
             "--set: error: codes.spindle_cw is 'M4', but on the fanuc control M3 starts the "
             "spindle clockwise: a control's own codes are its meaning, not machine data\n");
   errors.clear();
   const std::string path = ::testing::TempDir() + "/fixed-codes.yaml";
   std::ofstream(path) << "extends: linuxcnc\ncodes:\n  feed_per_rev: G99\n";
-  EXPECT_FALSE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, m, errors));
+  EXPECT_FALSE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors));
   EXPECT_EQ(errors, path +
                         ":3:3: error: codes.feed_per_rev is 'G99', but on the linuxcnc control "
                         "G95 is feed per revolution: a control's own codes are its meaning, not "
                         "machine data\n    feed_per_rev: G99\n    ^\n");
   errors.clear();
-  EXPECT_TRUE(
-      load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {"codes.coolant_flood=M7"}, m, errors))
+  EXPECT_TRUE(load_machine("fanuc-0i-t", {CLPOST_SOURCE_DIR}, {"codes.coolant_flood=M7"},
+                           shipped_controls(), m, errors))
       << errors;
   // A machine without a control of the registry (plain ISO) keeps every code its own.
-  EXPECT_TRUE(
-      load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {"codes.spindle_cw=M4"}, m, errors))
+  EXPECT_TRUE(load_machine("generic-lathe", {CLPOST_SOURCE_DIR}, {"codes.spindle_cw=M4"},
+                           shipped_controls(), m, errors))
       << errors;
 }
 

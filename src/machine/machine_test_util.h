@@ -1,11 +1,14 @@
 #pragma once
 // The shipped machines for tests and fuzz targets (which define CLPOST_SOURCE_DIR): the source
-// tree's machines/, listed by list_machines as `clpost machines` lists them. A test or fuzz target
-// that runs on every machine takes them from here and names none, so a machine added to
-// machines/ is tested everywhere. (No gtest here: the fuzz targets use it too.)
+// tree's machines/, listed by list_machines as `clpost machines` lists them, and the registry's
+// controls they load with (shipped_controls(): tests name them, the stages below the controls
+// never do). A test or fuzz target that runs on every machine takes them from here and names
+// none, so a machine added to machines/ is tested everywhere. (No gtest here: the fuzz targets
+// use it too.)
 #include <string>
 #include <vector>
 
+#include "controls/registry.h"
 #include "machine/machine_loader.h"
 
 namespace clpost::testing {

@@ -5,13 +5,14 @@
 #include <string>
 
 #include "machine/machine_loader.h"
+#include "machine/machine_test_util.h"
 
 namespace clpost::testing {
 
 inline Machine shipped(const std::string& name) {
   Machine m;
   std::string errors;
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, {}, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors)) << errors;
   return m;
 }
 

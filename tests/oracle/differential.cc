@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "canon.h"
+#include "controls/registry.h"
 #include "fanuc_reader.h"
 #include "generator.h"
 #include "heidenhain_reader.h"
@@ -160,7 +161,8 @@ bool Differential::init(const std::string& source_dir, std::string& error, Contr
                         const std::string& machine) {
   control_ = control;
   const std::string name = machine.empty() ? machine_of(control) : machine;
-  if (!clpost::load_machine(name, {source_dir}, {}, machine_, error)) return false;
+  if (!clpost::load_machine(name, {source_dir}, {}, clpost::shipped_controls(), machine_, error))
+    return false;
   // Fanuc, Haas and NCT: IS-B, 0.001 mm and 0.0001 in; HEIDENHAIN: 1 µm, 0.0001 in
   // (docs/cl-meaning.md, "Inch output"; NCT 99M manual, "Specification and Value Range of
   // Coordinate Data"); SINUMERIK: what sinumerik-840d writes, 0.001 mm and 0.0001 in.

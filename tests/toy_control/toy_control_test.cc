@@ -35,7 +35,7 @@ Machine toy_machine(ControlSet controls, const std::string& threading) {
                       << "block_numbers: {enabled: false}\nthreading: " << threading << "\n";
   Machine m;
   std::string errors;
-  EXPECT_TRUE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, m, errors, nullptr, controls)) << errors;
+  EXPECT_TRUE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, controls, m, errors)) << errors;
   return m;
 }
 
@@ -80,7 +80,7 @@ TEST(ToyControl, OnlyASetThatRegistersItCanSelectIt) {
   std::string errors;
   const std::string path = ::testing::TempDir() + "/toy-lathe-shipped.yaml";
   std::ofstream(path) << "extends: iso-lathe\nthreading: {strategy: cycle, cycle: toy_g177}\n";
-  EXPECT_FALSE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, m, errors));
+  EXPECT_FALSE(load_machine(path, {CLPOST_SOURCE_DIR}, {}, shipped_controls(), m, errors));
   EXPECT_NE(errors.find("'threading.cycle' must be one of none, cycle99, fanuc_g76, haas_g76, "
                         "heidenhain_g31, linuxcnc_g76, not 'toy_g177'"),
             std::string::npos)

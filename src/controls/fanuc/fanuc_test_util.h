@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "controls/registry.h"
 #include "emitters/emitter.h"
 #include "emitters/planner_settings.h"
 #include "machine/machine_loader.h"
@@ -17,7 +18,8 @@ inline Machine load(const std::string& name, std::vector<std::string> sets = {})
   Machine m;
   std::string errors;
   sets.push_back("block_numbers.enabled=false");
-  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  EXPECT_TRUE(load_machine(name, {CLPOST_SOURCE_DIR}, sets, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "controls/registry.h"
 #include "emitters/planner_settings.h"
 #include "machine/machine_loader.h"
 #include "planner/planner_test_util.h"
@@ -21,7 +22,9 @@ Machine siemens(std::vector<std::string> sets = {}) {
   Machine m;
   std::string errors;
   sets.push_back("block_numbers.enabled=false");
-  EXPECT_TRUE(load_machine("sinumerik-840d", {CLPOST_SOURCE_DIR}, sets, m, errors)) << errors;
+  EXPECT_TRUE(
+      load_machine("sinumerik-840d", {CLPOST_SOURCE_DIR}, sets, shipped_controls(), m, errors))
+      << errors;
   return m;
 }
 
