@@ -47,13 +47,19 @@ TEST(Registry, DocsTablesAreTheSchemas) {
       << "docs/machines.md is stale: run build/clpost schema --markdown";
 }
 
-// threading.cycle chooses among "none" and the shipped cycles, in the registry's order.
-TEST(Registry, TheSchemaListsEveryShippedCycle) {
+// threading.cycle chooses among "none" and the shipped cycles, threading.loop among "g33" and
+// the shipped loop blocks, each once: no two controls take one name.
+TEST(Registry, TheSchemaListsEveryShippedCycleAndLoopOnce) {
   const Schema s = schema(shipped_controls());
-  std::vector<std::string_view> cycles;
-  for (const Choice& c : find_key(s, "threading.cycle")->choices) cycles.push_back(c.name);
-  EXPECT_EQ(cycles, (std::vector<std::string_view>{"none", "cycle99", "fanuc_g76", "haas_g76",
-                                                   "heidenhain_g31", "linuxcnc_g76"}));
+  for (const char* key : {"threading.cycle", "threading.loop"}) {
+    std::set<std::string_view> names;
+    for (const Choice& c : find_key(s, key)->choices)
+      EXPECT_TRUE(names.insert(c.name).second) << key << ": " << c.name << " twice";
+  }
+  for (const Control* c : shipped_controls()) {
+    EXPECT_EQ(find_control(shipped_controls(), c->cycle), c) << c->name;
+    for (const LoopBlock& l : c->loops) EXPECT_EQ(find_loop(shipped_controls(), l.name), &l);
+  }
 }
 
 TEST(Registry, EveryControlWritesAndReadsBackItsCycle) {
